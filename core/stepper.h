@@ -1,0 +1,69 @@
+// One-step integrators with step-size control and dense output (Hairer's codes are the model).
+// A Stepper takes accepted steps one at a time; the simulation driver searches each step's
+// dense output for events and restarts the stepper after each event.
+#pragma once
+
+#include <limits>
+#include <memory>
+#include <string_view>
+
+#include "core/ode.h"
+
+namespace vibro {
+
+enum class Method { dopri5, dop853, radau5, automatic };
+
+std::string_view method_name(Method m);  // "dopri5", "dop853", "radau5", "auto"
+
+struct StepperOptions {
+  double rtol = 1e-9;  // relative tolerance per component
+  double atol = 1e-12; // absolute tolerance per component
+  double h_max = std::numeric_limits<double>::infinity();
+};
+
+struct StepperStats {
+  long steps = 0;       // accepted steps
+  long rejected = 0;    // rejected step attempts
+  long rhs_evals = 0;   // evaluations of f
+  long jac_evals = 0;   // Jacobian evaluations (implicit method only)
+  long lu_decomps = 0;  // LU factorisations (implicit method only)
+  long stiff_switches = 0;  // method switches made by "auto"
+};
+
+enum class StepStatus {
+  ok,
+  step_underflow,  // the step size fell below round-off of t
+  non_finite,      // f returned NaN/Inf, or the state became non-finite
+  solver_failure,  // the implicit method's Newton iteration or factorisation failed repeatedly
+};
+
+class Stepper {
+ public:
+  virtual ~Stepper() = default;
+
+  // Name of the method that took the last step ("dopri5", "dop853", "radau5").
+  virtual std::string_view name() const = 0;
+
+  // Starts, or restarts after a discontinuity, at (t0, y0). The system must outlive the stepper's
+  // use of it. The step size of the previous segment, if any, is kept as a hint for the first step.
+  virtual void start(const OdeSystem& sys, double t0, const Vec& y0) = 0;
+
+  // Takes one accepted step, never beyond t_limit (> t()). Rejected attempts are retried inside.
+  // On anything but ok, t() and y() are left at the last accepted point.
+  virtual StepStatus step(double t_limit) = 0;
+
+  // The last accepted step spans [t_prev(), t()]; y() is the state at t().
+  virtual double t_prev() const = 0;
+  virtual double t() const = 0;
+  virtual const Vec& y() const = 0;
+
+  // Dense output inside the last accepted step: out = y(t) for t in [t_prev(), t()].
+  virtual void dense(double t, Vec& out) const = 0;
+
+  virtual const StepperStats& stats() const = 0;
+};
+
+// A stepper for the method, with tolerances and the maximum step size.
+std::unique_ptr<Stepper> make_stepper(Method method, const StepperOptions& options);
+
+}  // namespace vibro
