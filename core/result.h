@@ -1,0 +1,107 @@
+// What a run answers (MODEL.md, "What a run must answer"): events, branches, summary, stats.
+// Plain value types: the JSON writer, the renderer and the tests all read these.
+#pragma once
+
+#include <string>
+#include <string_view>
+#include <vector>
+
+namespace vibro {
+
+enum class EventKind { limiter, collision, reversal, stick, release, chatter };
+std::string_view event_kind_name(EventKind kind);  // "limiter", "collision", ...
+
+struct Event {
+  double t = 0.0;
+  EventKind kind = EventKind::reversal;
+  std::vector<int> pellets;         // pellets the event touches, in one order
+  int limiter = -1;                 // limiter index for limiter and chatter events, else -1
+  double phi = 0.0;                 // unwrapped angle of pellets[0] at the event
+  std::vector<double> dphi_before;  // per pellet in `pellets`
+  std::vector<double> dphi_after;
+  int impacts_resolved = 0;         // chatter: impacts summed in closed form after the listed ones
+  double t_accumulation = 0.0;      // chatter: the accumulation time t* (= t)
+};
+
+// One point of a phase trajectory.
+struct Sample {
+  double t = 0.0;
+  double phi = 0.0;
+  double dphi = 0.0;
+};
+
+// A branch of one pellet's phase trajectory: the motion between two events that touch it
+// (the paper's "motion interval"). Numbered from 1 in the order they occur.
+struct Branch {
+  int index = 1;
+  std::vector<Sample> samples;  // increasing t; the first and last are the interval's ends
+};
+
+struct PelletTrack {
+  int pellet = 0;
+  std::vector<Branch> branches;
+};
+
+enum class PelletState { sliding, stuck, resting_at_limiter };
+std::string_view pellet_state_name(PelletState state);  // "sliding", "stuck", "resting_at_limiter"
+
+struct FinalState {
+  double phi = 0.0;   // unwrapped, rad
+  double dphi = 0.0;  // rad/s
+  PelletState state = PelletState::sliding;
+  int limiter = -1;   // the limiter it rests against, if resting_at_limiter
+};
+
+struct LastImpact {
+  int index = 0;     // 1-based count of impacts (limiter impacts, chatter and collisions); 0: none
+  double t = 0.0;
+};
+
+struct Summary {
+  int limiter_impacts = 0;  // listed impacts plus those summed by chatter events
+  int collisions = 0;
+  std::vector<std::vector<int>> impacts_by_limiter;  // [limiter][pellet]
+  LastImpact last_impact;
+  std::vector<FinalState> final;
+};
+
+enum class Termination {
+  completed,        // reached t_end
+  event_limit,      // more events than allowed
+  step_limit,       // more steps than allowed
+  deadline,         // the wall-clock deadline passed
+  numerical_failure // step-size underflow, non-finite state, implicit solver failure
+};
+std::string_view termination_name(Termination t);
+
+struct Stats {
+  std::string method;      // the method asked for ("auto" reports what it used, e.g. "auto(dop853)")
+  double rtol = 0.0, atol = 0.0;
+  long steps = 0, rejected = 0, rhs_evals = 0, jac_evals = 0, lu_decomps = 0, stiff_switches = 0;
+  double wall_ms = 0.0;
+  // Relative error estimate: the larger of the energy-balance defect (E − E0 − work of the
+  // force and friction − impact losses, over the energy scale) and the first-integral residual.
+  double error_estimate = 0.0;
+  double energy_defect = 0.0;            // relative
+  double first_integral_residual = 0.0;  // relative, unforced paper-law intervals; 0 if none
+  Termination termination = Termination::completed;
+  std::string message;  // why the run stopped early, naming time and cause
+  double t_reached = 0.0;
+};
+
+struct Warning {
+  std::string code;  // "negative_normal_force", ...
+  std::string message;
+  int pellet = -1;
+  double t_begin = 0.0, t_end = 0.0;
+};
+
+struct RunResult {
+  std::vector<Event> events;
+  std::vector<PelletTrack> tracks;  // only the pellets whose branches were asked for
+  Summary summary;
+  Stats stats;
+  std::vector<Warning> warnings;
+};
+
+}  // namespace vibro
