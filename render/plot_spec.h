@@ -1,0 +1,48 @@
+// What a scene asks to be drawn: the `plots` list of API.md, as plain values.
+// The scene reader (io/) fills these; render/ draws them. Indices count from 0.
+#pragma once
+
+#include <limits>
+#include <optional>
+#include <string>
+#include <vector>
+
+namespace vibro {
+
+enum class PlotKind {
+  phase,     // (φ, φ̇) of one pellet, branches told apart
+  time,      // φ(t) (optionally φ̇(t)) of the listed pellets
+  cylinder,  // 3-D (OSMesa): the trajectory on the phase cylinder (cos φ, sin φ, φ̇)
+};
+
+struct PhasePoint {
+  double phi = 0.0;
+  double dphi = 0.0;
+};
+
+struct Camera {
+  double azimuth_deg = 35.0;
+  double elevation_deg = 25.0;
+  double distance = 3.2;  // in units of the cylinder's radius-normalised scene box
+};
+
+struct PlotSpec {
+  PlotKind kind = PlotKind::phase;
+  int pellet = 0;                 // phase, cylinder
+  std::vector<int> pellets;       // time
+  bool show_dphi = false;         // time: also draw φ̇(t) on a second axis
+  double t_from = 0.0;            // window drawn, s
+  double t_to = std::numeric_limits<double>::infinity();  // clipped to t_end
+  std::optional<PhasePoint> first_integral_through;  // phase: exact unforced curve through it
+  bool friction_zone = false;     // phase: shade |φ| ≤ α0 (mod 2π) where a pellet can rest
+  std::string title;              // empty: a default title
+  Camera camera;                  // cylinder
+};
+
+struct FigureSpec {
+  std::vector<PlotSpec> plots;
+  int width = 1200;
+  int height = 800;
+};
+
+}  // namespace vibro
