@@ -4,6 +4,7 @@
 #pragma once
 
 #include <cmath>
+#include <optional>
 #include <string>
 #include <vector>
 
@@ -46,14 +47,14 @@ struct Model {
   double g = 9.81;
   double R = 0.5;
   double alpha0 = 0.0;
-  double mu_s = -1.0;  // static coefficient for the stick test; < 0 means "equal to mu"
+  std::optional<double> mu_s;  // static coefficient for the stick test; default: mu
   FrictionLaw friction = FrictionLaw::paper;
   std::vector<Pellet> pellets;
   std::vector<Limiter> limiters;
   double k_c = 1.0;  // restitution of pellet-pellet collisions
 
   double mu() const { return std::tan(alpha0); }
-  double mu_static() const { return mu_s < 0.0 ? mu() : mu_s; }
+  double mu_static() const { return mu_s.value_or(mu()); }
   int size() const { return static_cast<int>(pellets.size()); }
 };
 

@@ -1,0 +1,35 @@
+// How to run a simulation: time span, solver, limits, and what to record.
+#pragma once
+
+#include <limits>
+#include <vector>
+
+#include "core/stepper.h"
+
+namespace vibro {
+
+struct SimOptions {
+  double t_end = 10.0;  // s, > 0
+  Method method = Method::automatic;
+  double rtol = 1e-9;
+  double atol = 1e-12;
+
+  // Every run ends: these bound its work.
+  long max_events = 200000;
+  long max_steps = 20000000;
+  double deadline_ms = std::numeric_limits<double>::infinity();  // wall clock
+
+  // Branches are kept only for the pellets flagged here (index = pellet), up to record_until.
+  std::vector<bool> record;
+  double record_until = std::numeric_limits<double>::infinity();
+  int samples_per_step = 4;  // dense-output points kept inside each step, for smooth curves
+};
+
+// Limits on what validate() accepts; a server tightens them.
+struct SimLimits {
+  int max_pellets = 8;
+  int max_limiters = 16;
+  double max_t_end = 1e6;
+};
+
+}  // namespace vibro
