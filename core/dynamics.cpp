@@ -1,0 +1,123 @@
+#include "core/dynamics.h"
+
+#include <cmath>
+
+namespace vibro {
+
+double normal_per_mass(const Model& model, double phi, double dphi) {
+  return model.g * std::cos(phi) + model.R * dphi * dphi;
+}
+
+double sliding_acceleration(const Model& model, double F, double M, int s, double phi,
+                            double dphi) {
+  const double mu = model.mu();
+  const double gR = model.g / model.R;
+  if (model.friction == FrictionLaw::paper) {
+    return F / (M * model.R) - s * mu * dphi * dphi - gR * (std::sin(phi) + s * mu * std::cos(phi));
+  }
+  return F / (M * model.R) - gR * std::sin(phi) -
+         s * mu * std::abs(dphi * dphi + gR * std::cos(phi));
+}
+
+double body_force(const Model& model, const Body& body, double t) {
+  double F = 0.0;
+  for (int i : body.members) F += model.pellets[i].force.at(t);
+  return F;
+}
+
+double body_mass(const Model& model, const Body& body) {
+  double M = 0.0;
+  for (int i : body.members) M += model.pellets[i].m;
+  return M;
+}
+
+double body_free_acceleration(const Model& model, const Body& body, double t, double phi) {
+  return body_force(model, body, t) / (body_mass(model, body) * model.R) -
+         model.g / model.R * std::sin(phi);
+}
+
+SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bodies)
+    : model_(model), bodies_(bodies) {
+  mass_.reserve(bodies.size());
+  for (const Body& b : bodies) mass_.push_back(body_mass(model, b));
+}
+
+void SegmentDynamics::rhs(double t, const Vec& y, Vec& dydt) const {
+  const double R = model_.R;
+  const double mu = model_.mu();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const Body& body = bodies_[b];
+    if (body.mode != Mode::sliding) {
+      for (int i : body.members) {
+        dydt[phi_index(i)] = 0.0;
+        dydt[dphi_index(i)] = 0.0;
+        dydt[work_index(i)] = 0.0;
+      }
+      continue;
+    }
+    const int L = body.leader();
+    const double phi = y[phi_index(L)], dphi = y[dphi_index(L)];
+    double F = 0.0;
+    for (int i : body.members) F += model_.pellets[i].force.at(t);
+    const double acc = sliding_acceleration(model_, F, mass_[b], body.s, phi, dphi);
+    double n = normal_per_mass(model_, phi, dphi);
+    if (model_.friction == FrictionLaw::bilateral) n = std::abs(n);
+    for (int i : body.members) {
+      const double m = model_.pellets[i].m;
+      dydt[phi_index(i)] = y[dphi_index(i)];
+      dydt[dphi_index(i)] = acc;
+      dydt[work_index(i)] = R * dphi * (model_.pellets[i].force.at(t) - m * body.s * mu * n);
+    }
+  }
+}
+
+void SegmentDynamics::jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) const {
+  dfdy.setZero();
+  dfdt.setZero();
+  const double R = model_.R, g = model_.g;
+  const double gR = g / R;
+  const double mu = model_.mu();
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    const Body& body = bodies_[b];
+    if (body.mode != Mode::sliding) continue;
+    const int L = body.leader();
+    const int s = body.s;
+    const double phi = y[phi_index(L)], dphi = y[dphi_index(L)];
+    const double c = std::cos(phi), sn = std::sin(phi);
+    double F = 0.0, dF = 0.0;
+    for (int i : body.members) {
+      F += model_.pellets[i].force.at(t);
+      dF += model_.pellets[i].force.rate(t);
+    }
+    // acc and the normal force per mass n, with their partial derivatives.
+    double dacc_dphi, dacc_ddphi;
+    const double n_raw = g * c + R * dphi * dphi;
+    double n = n_raw, dn_dphi = -g * sn, dn_ddphi = 2.0 * R * dphi;
+    if (model_.friction == FrictionLaw::paper) {
+      dacc_dphi = -gR * (c - s * mu * sn);
+      dacc_ddphi = -2.0 * s * mu * dphi;
+    } else {
+      const double sq = n_raw >= 0.0 ? 1.0 : -1.0;
+      n = std::abs(n_raw);
+      dn_dphi *= sq;
+      dn_ddphi *= sq;
+      dacc_dphi = -gR * c + s * mu * sq * gR * sn;
+      dacc_ddphi = -s * mu * sq * 2.0 * dphi;
+    }
+    const double dacc_dt = dF / (mass_[b] * R);
+    for (int i : body.members) {
+      const double m = model_.pellets[i].m;
+      const double Fi = model_.pellets[i].force.at(t);
+      dfdy(phi_index(i), dphi_index(i)) = 1.0;
+      dfdy(dphi_index(i), phi_index(L)) = dacc_dphi;
+      dfdy(dphi_index(i), dphi_index(L)) = dacc_ddphi;
+      dfdt[dphi_index(i)] = dacc_dt;
+      const int w = work_index(i);
+      dfdy(w, phi_index(L)) += R * dphi * (-m * s * mu * dn_dphi);
+      dfdy(w, dphi_index(L)) += R * (Fi - m * s * mu * n) + R * dphi * (-m * s * mu * dn_ddphi);
+      dfdt[w] = R * dphi * model_.pellets[i].force.rate(t);
+    }
+  }
+}
+
+}  // namespace vibro

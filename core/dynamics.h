@@ -1,0 +1,41 @@
+// The equations of motion of one segment (MODEL.md, "Sliding motion"), as an OdeSystem.
+// Every member of a body gets the body's acceleration, so members stay together exactly.
+#pragma once
+
+#include <vector>
+
+#include "core/model.h"
+#include "core/motion.h"
+#include "core/ode.h"
+
+namespace vibro {
+
+// Tangential acceleration (rad/s²) of a body of total mass M under total force F, sliding in
+// direction s at (phi, dphi), under the model's friction law.
+double sliding_acceleration(const Model& model, double F, double M, int s, double phi, double dphi);
+
+// Normal force per unit mass, g cos phi + R dphi² (m/s²); negative means the paper law's
+// friction pushes the pellet along.
+double normal_per_mass(const Model& model, double phi, double dphi);
+
+// Total force and mass of a body at time t.
+double body_force(const Model& model, const Body& body, double t);
+double body_mass(const Model& model, const Body& body);
+
+// Free acceleration of a body at rest at phi: forcing and gravity, no friction.
+double body_free_acceleration(const Model& model, const Body& body, double t, double phi);
+
+class SegmentDynamics final : public OdeSystem {
+ public:
+  SegmentDynamics(const Model& model, const std::vector<Body>& bodies);
+  int dimension() const override { return 3 * model_.size(); }
+  void rhs(double t, const Vec& y, Vec& dydt) const override;
+  void jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) const override;
+
+ private:
+  const Model& model_;
+  const std::vector<Body>& bodies_;
+  std::vector<double> mass_;  // per body
+};
+
+}  // namespace vibro

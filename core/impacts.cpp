@@ -1,0 +1,157 @@
+#include "core/impacts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace vibro {
+
+void collide(double m_i, double m_j, double k_c, double& v_i, double& v_j) {
+  const double M = m_i + m_j;
+  const double vi = v_i, vj = v_j;
+  v_i = ((m_i - k_c * m_j) * vi + m_j * (1.0 + k_c) * vj) / M;
+  v_j = ((m_j - k_c * m_i) * vj + m_i * (1.0 + k_c) * vi) / M;
+}
+
+namespace {
+
+void strike_limiter(const Model& model, std::vector<bool>& armed, int limiter) {
+  if (model.limiters[limiter].mobile) armed[limiter] = false;
+  for (std::size_t j = 0; j < model.limiters.size(); ++j) {
+    if (model.limiters[j].mobile && model.limiters[j].rearm_by == limiter) armed[j] = true;
+  }
+}
+
+// Two pellets on the two sides of an armed limiter that acts on both do not touch each other.
+bool separated_by_limiter(const std::vector<LimiterContact>& lc, const std::vector<bool>& armed,
+                          const PairContact& p) {
+  for (const LimiterContact& a : lc) {
+    if (a.pellet != p.behind || a.side != -1 || !armed[a.limiter]) continue;
+    for (const LimiterContact& b : lc) {
+      if (b.pellet == p.ahead && b.limiter == a.limiter && b.side == +1) return true;
+    }
+  }
+  return false;
+}
+
+// The limit of an endless cascade: each group of touching pellets moves with its momentum's
+// velocity, and stops if that drives it into an armed limiter it touches.
+std::vector<Event> plastic_limit(const Model& model, std::vector<double>& v,
+                                 const std::vector<double>& v0, std::vector<bool>& armed,
+                                 const std::vector<bool>& armed0,
+                                 const std::vector<LimiterContact>& lc,
+                                 const std::vector<PairContact>& pc, int impacts) {
+  const int n = model.size();
+  v = v0;
+  armed = armed0;
+  std::vector<int> group(n);
+  std::iota(group.begin(), group.end(), 0);
+  auto find = [&](int i) {
+    while (group[i] != i) i = group[i] = group[group[i]];
+    return i;
+  };
+  for (const PairContact& p : pc) group[find(p.behind)] = find(p.ahead);
+
+  std::vector<Event> events;
+  std::vector<bool> done(n, false);
+  for (int root_pellet = 0; root_pellet < n; ++root_pellet) {
+    const int root = find(root_pellet);
+    if (done[root]) continue;
+    done[root] = true;
+    std::vector<int> members;
+    double P = 0.0, M = 0.0;
+    for (int i = 0; i < n; ++i) {
+      if (find(i) != root) continue;
+      members.push_back(i);
+      P += model.pellets[i].m * v0[i];
+      M += model.pellets[i].m;
+    }
+    double V = P / M;
+    int limiter = -1;
+    for (const LimiterContact& c : lc) {
+      if (find(c.pellet) != root || !armed[c.limiter]) continue;
+      if (limiter < 0) limiter = c.limiter;
+      if (V * c.side < 0.0) {
+        V = 0.0;
+        limiter = c.limiter;
+      }
+    }
+    bool touched = members.size() > 1 || limiter >= 0;
+    if (!touched) continue;
+    Event e;
+    e.kind = members.size() > 1 ? EventKind::collision : EventKind::limiter;
+    e.pellets = members;
+    e.limiter = limiter;
+    e.impacts_resolved = impacts;
+    for (int i : members) {
+      e.dphi_before.push_back(v0[i]);
+      v[i] = V;
+      e.dphi_after.push_back(V);
+    }
+    if (limiter >= 0) strike_limiter(model, armed, limiter);
+    events.push_back(std::move(e));
+  }
+  return events;
+}
+
+}  // namespace
+
+std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
+                                   std::vector<bool>& armed,
+                                   const std::vector<LimiterContact>& limiter_contacts,
+                                   const std::vector<PairContact>& pair_contacts,
+                                   const std::vector<double>& positions,
+                                   const ImpactOptions& options) {
+  std::vector<LimiterContact> lc = limiter_contacts;
+  std::sort(lc.begin(), lc.end(), [](const LimiterContact& a, const LimiterContact& b) {
+    return a.pellet != b.pellet ? a.pellet < b.pellet : a.limiter < b.limiter;
+  });
+  std::vector<PairContact> pc = pair_contacts;
+  auto place = [&](int i) {
+    const double w = std::fmod(positions[i], kTwoPi);
+    return w < 0.0 ? w + kTwoPi : w;
+  };
+  std::stable_sort(pc.begin(), pc.end(), [&](const PairContact& a, const PairContact& b) {
+    return place(a.behind) < place(b.behind);
+  });
+
+  const std::vector<double> v0 = v;
+  const std::vector<bool> armed0 = armed;
+  std::vector<Event> events;
+  int impacts = 0;
+  for (int sweep = 0; sweep < options.max_sweeps; ++sweep) {
+    bool changed = false;
+    for (const LimiterContact& c : lc) {
+      const Limiter& lim = model.limiters[c.limiter];
+      if (!armed[c.limiter] || !lim.acts_on(c.pellet) || v[c.pellet] * c.side >= 0.0) continue;
+      Event e;
+      e.kind = EventKind::limiter;
+      e.pellets = {c.pellet};
+      e.limiter = c.limiter;
+      e.dphi_before = {v[c.pellet]};
+      v[c.pellet] = -lim.k * v[c.pellet];
+      e.dphi_after = {v[c.pellet]};
+      strike_limiter(model, armed, c.limiter);
+      events.push_back(std::move(e));
+      changed = true;
+      ++impacts;
+    }
+    for (const PairContact& p : pc) {
+      if (v[p.behind] <= v[p.ahead] || separated_by_limiter(lc, armed, p)) continue;
+      Event e;
+      e.kind = EventKind::collision;
+      e.pellets = {p.behind, p.ahead};
+      e.dphi_before = {v[p.behind], v[p.ahead]};
+      collide(model.pellets[p.behind].m, model.pellets[p.ahead].m, model.k_c, v[p.behind],
+              v[p.ahead]);
+      e.dphi_after = {v[p.behind], v[p.ahead]};
+      events.push_back(std::move(e));
+      changed = true;
+      ++impacts;
+    }
+    if (!changed) return events;
+  }
+  return plastic_limit(model, v, v0, armed, armed0, lc, pc, impacts);
+}
+
+}  // namespace vibro

@@ -1,0 +1,46 @@
+// Impacts at one instant (MODEL.md, events 2, 3 and 5): limiter impacts and pellet collisions,
+// processed pairwise in a deterministic order until nothing approaches. A cascade that does not
+// settle in a few sweeps (a light pellet squeezed between a heavy one and a limiter) is resolved
+// as its limit, one plastic impact of the touching group, in bounded work.
+#pragma once
+
+#include <vector>
+
+#include "core/model.h"
+#include "core/result.h"
+
+namespace vibro {
+
+// Pellet `pellet` touches limiter `limiter` from `side` (+1: it lies on the phi > angle side).
+struct LimiterContact {
+  int pellet;
+  int limiter;
+  int side;
+};
+
+// Pellets `behind` and `ahead` (next in +phi order) are at the same place.
+struct PairContact {
+  int behind;
+  int ahead;
+};
+
+// Newton's law with momentum conserved, velocities signed along phi (MODEL.md, event 3).
+void collide(double m_i, double m_j, double k_c, double& v_i, double& v_j);
+
+struct ImpactOptions {
+  int max_sweeps = 16;  // beyond this a cascade is taken to its plastic limit
+};
+
+// Resolves the impacts among the contacts. `v` holds every pellet's dphi and is updated in place;
+// `armed` holds every limiter's state and is updated (a mobile limiter is disarmed by the impact
+// it takes; an impact re-arms the limiters whose rearm_by names the struck one). Returns the
+// impacts as events without time or angle (the caller fills those in). `positions` orders the
+// pair contacts: by increasing phi (mod 2π).
+std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
+                                   std::vector<bool>& armed,
+                                   const std::vector<LimiterContact>& limiter_contacts,
+                                   const std::vector<PairContact>& pair_contacts,
+                                   const std::vector<double>& positions,
+                                   const ImpactOptions& options = {});
+
+}  // namespace vibro

@@ -1,0 +1,38 @@
+// Keeps what a run reports along the way: the branches of the recorded pellets' phase
+// trajectories, and the intervals where the paper law's normal force is negative.
+#pragma once
+
+#include <vector>
+
+#include "core/model.h"
+#include "core/motion.h"
+#include "core/ode.h"
+#include "core/result.h"
+
+namespace vibro {
+
+class Recorder {
+ public:
+  Recorder(const Model& model, const std::vector<bool>& record, double record_until);
+
+  // A state of the whole system at time t; `bodies` says who slides.
+  void sample(double t, const Vec& y, const std::vector<Body>& bodies);
+  // Pellet i's motion interval ends at t (an event touched it); the next sample opens a new one.
+  void end_branch(int pellet);
+  // Closes open warning intervals at the end of the run and hands everything over.
+  void finish(double t, RunResult& result);
+
+ private:
+  void close_warning(int pellet, double t);
+
+  const Model& model_;
+  std::vector<int> track_of_;  // pellet -> index in tracks_, or -1
+  std::vector<PelletTrack> tracks_;
+  std::vector<bool> open_;     // pellet's current branch is open
+  double record_until_;
+
+  std::vector<double> negative_since_;  // per pellet: start of a negative-normal interval, or NaN
+  std::vector<Warning> warnings_;
+};
+
+}  // namespace vibro

@@ -1,0 +1,75 @@
+#include "core/watch.h"
+
+#include <cmath>
+
+#include "core/dynamics.h"
+
+namespace vibro {
+
+double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+                const Vec& y) {
+  switch (w.kind) {
+    case WatchKind::reversal:
+      return bodies[w.body].s * y[dphi_index(w.pellet)];
+    case WatchKind::limiter:
+      return bodies[w.body].s * (w.target - y[phi_index(w.pellet)]);
+    case WatchKind::gap:
+      return y[phi_index(w.other)] - y[phi_index(w.pellet)] + w.target;
+    case WatchKind::release: {
+      const Body& b = bodies[w.body];
+      const double phi = y[phi_index(w.pellet)];
+      const double a = body_free_acceleration(model, b, t, phi);
+      const double pull = b.mode == Mode::resting ? b.side * a : std::abs(a);
+      return stick_capacity(model, phi) - pull;
+    }
+    case WatchKind::separation: {
+      const Body& b = bodies[w.body];
+      double F_behind = 0.0, m_behind = 0.0, F_ahead = 0.0, m_ahead = 0.0;
+      for (int k = 0; k < static_cast<int>(b.members.size()); ++k) {
+        const Pellet& p = model.pellets[b.members[k]];
+        (k < w.split ? F_behind : F_ahead) += p.force.at(t);
+        (k < w.split ? m_behind : m_ahead) += p.m;
+      }
+      // The part behind pushes the part ahead while it would accelerate faster on its own.
+      return F_behind / m_behind - F_ahead / m_ahead;
+    }
+  }
+  return 1.0;
+}
+
+bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,
+                  double phi, int s, int& limiter, double& target) {
+  bool found = false;
+  for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
+    if (!armed[l]) continue;
+    bool acts = false;
+    for (int i : body.members) acts = acts || model.limiters[l].acts_on(i);
+    if (!acts) continue;
+    const double theta = model.limiters[l].angle;
+    double n = std::floor((phi - theta) / kTwoPi);
+    double x = theta + kTwoPi * (s > 0 ? n + 1.0 : n);
+    // Strictly ahead: after round-off, step one more turn if needed.
+    if (s > 0 && x <= phi) x += kTwoPi;
+    if (s < 0 && x >= phi) x -= kTwoPi;
+    if (s > 0 && x - kTwoPi > phi) x -= kTwoPi;
+    if (s < 0 && x + kTwoPi < phi) x += kTwoPi;
+    if (!found || (s > 0 ? x < target : x > target)) {
+      found = true;
+      limiter = l;
+      target = x;
+    }
+  }
+  return found;
+}
+
+void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model,
+                           const std::vector<Body>& bodies, double t0, const Vec& y0) {
+  last_.resize(watches.size());
+  armed_.assign(watches.size(), false);
+  for (std::size_t w = 0; w < watches.size(); ++w) {
+    last_[w] = evaluate(watches[w], model, bodies, t0, y0);
+    armed_[w] = last_[w] > 0.0;
+  }
+}
+
+}  // namespace vibro

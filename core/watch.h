@@ -1,0 +1,76 @@
+// The event functions of one segment and their root finding on the dense output (MODEL.md,
+// "Events"). Each watch is a scalar g(t) that is positive while nothing happens; its event is
+// the first time g falls to zero or below after having been positive.
+#pragma once
+
+#include <vector>
+
+#include "core/model.h"
+#include "core/motion.h"
+#include "core/ode.h"
+
+namespace vibro {
+
+enum class WatchKind {
+  reversal,    // s·dphi of a sliding body
+  limiter,     // s·(target − phi): the next armed limiter angle ahead of a sliding body
+  gap,         // distance from one body's leading pellet to the next body's trailing pellet
+  release,     // static capacity − |free acceleration| of a stuck body (or, resting: pull away)
+  separation,  // compression between two parts of a body
+};
+
+struct Watch {
+  WatchKind kind;
+  int body = -1;       // reversal, limiter, release, separation: the body
+  int pellet = -1;     // the pellet whose state is read (a body's leader; gap: the one behind)
+  int other = -1;      // gap: the pellet ahead
+  int limiter = -1;    // limiter: the limiter hit
+  double target = 0.0; // limiter: angle to reach; gap: the constant winding offset
+  int split = 0;       // separation: members [0, split) behind, [split, n) ahead
+};
+
+double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+                const Vec& y);
+
+// The next armed limiter angle strictly ahead of phi in direction s that acts on any of the
+// body's members; returns false if there is none.
+bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,
+                  double phi, int s, int& limiter, double& target);
+
+// A root of one watch inside a step.
+struct Crossing {
+  int watch;
+  double t;
+};
+
+// Finds the first crossing of every watch over samples of each step's dense output (never only
+// at step ends), refines the earliest ones with Brent's method to round-off, and returns those
+// within `simultaneous` of the earliest, sorted by time.
+class CrossingFinder {
+ public:
+  // At the start of a segment: a watch arms once it is positive, so a segment that starts on
+  // an event (g = 0, e.g. right after a reversal) does not find it again.
+  void start(const std::vector<Watch>& watches, const Model& model,
+             const std::vector<Body>& bodies, double t0, const Vec& y0);
+
+  // The step (t_prev, times.back()] with the states at the sample times (increasing, the last
+  // one the step's end); `dense(t, y)` evaluates the step's dense output.
+  template <class Dense>
+  std::vector<Crossing> find(const std::vector<Watch>& watches, const Model& model,
+                             const std::vector<Body>& bodies, double t_prev,
+                             const std::vector<double>& times, const std::vector<Vec>& states,
+                             double simultaneous, Dense&& dense);
+
+ private:
+  std::vector<double> last_;
+  std::vector<bool> armed_;
+};
+
+// Brent's root finder on [a, b] with f(a) > 0 >= f(b); returns the smallest bracketing point
+// found with f <= 0, to round-off of t.
+template <class F>
+double brent_root(F&& f, double a, double b, double fa, double fb);
+
+}  // namespace vibro
+
+#include "core/watch_inl.h"

@@ -1,0 +1,106 @@
+// Template definitions for watch.h.
+#pragma once
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vibro {
+
+template <class F>
+double brent_root(F&& f, double a, double b, double fa, double fb) {
+  // Keeps [lo, hi] with f(lo) > 0 >= f(hi) and returns hi: the event is then certainly
+  // reached, never reported a hair before it.
+  double lo = a, hi = b, flo = fa, fhi = fb;
+  double c = lo, fc = flo, d = hi - lo, e = d;
+  for (int iter = 0; iter < 200; ++iter) {
+    const double tol = 4.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(hi));
+    if (hi - lo <= tol || fhi == 0.0) break;
+    // Brent's step from the current best point hi, with the other end lo.
+    double m = 0.5 * (lo - hi);
+    double p, q;
+    double x;
+    if (std::abs(e) >= tol && std::abs(fc) > std::abs(fhi)) {
+      double s = fhi / fc;
+      if (c == lo) {
+        p = 2.0 * m * s;
+        q = 1.0 - s;
+      } else {
+        const double qq = fc / flo, r = fhi / flo;
+        p = s * (2.0 * m * qq * (qq - r) - (hi - c) * (r - 1.0));
+        q = (qq - 1.0) * (r - 1.0) * (s - 1.0);
+      }
+      if (p > 0.0) q = -q; else p = -p;
+      if (2.0 * p < std::min(3.0 * m * q - std::abs(tol * q), std::abs(e * q))) {
+        e = d;
+        d = p / q;
+      } else {
+        d = m;
+        e = m;
+      }
+    } else {
+      d = m;
+      e = m;
+    }
+    x = hi + (std::abs(d) > tol ? d : (m > 0 ? tol : -tol) * 0.5);
+    if (!(x > lo && x < hi)) x = 0.5 * (lo + hi);
+    const double fx = f(x);
+    c = hi;
+    fc = fhi;
+    if (fx > 0.0) {
+      lo = x;
+      flo = fx;
+    } else {
+      hi = x;
+      fhi = fx;
+    }
+  }
+  return hi;
+}
+
+template <class Dense>
+std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, const Model& model,
+                                           const std::vector<Body>& bodies, double t_prev,
+                                           const std::vector<double>& times,
+                                           const std::vector<Vec>& states, double simultaneous,
+                                           Dense&& dense) {
+  struct Bracket {
+    int watch;
+    double a, b, fa, fb;
+  };
+  std::vector<Bracket> brackets;
+  for (std::size_t w = 0; w < watches.size(); ++w) {
+    for (std::size_t k = 0; k < times.size(); ++k) {
+      const double g = evaluate(watches[w], model, bodies, times[k], states[k]);
+      if (armed_[w] && g <= 0.0) {
+        brackets.push_back({static_cast<int>(w), k == 0 ? t_prev : times[k - 1], times[k],
+                            last_[w], g});
+        break;
+      }
+      if (g > 0.0) armed_[w] = true;
+      last_[w] = g;
+    }
+  }
+  std::sort(brackets.begin(), brackets.end(),
+            [](const Bracket& x, const Bracket& y) { return x.b < y.b; });
+  std::vector<Crossing> found;
+  double earliest = std::numeric_limits<double>::infinity();
+  Vec y(states.front().size());
+  for (const Bracket& br : brackets) {
+    if (br.a > earliest + simultaneous) break;
+    const Watch& w = watches[br.watch];
+    auto g = [&](double t) {
+      dense(t, y);
+      return evaluate(w, model, bodies, t, y);
+    };
+    const double t = brent_root(g, br.a, br.b, br.fa, br.fb);
+    found.push_back({br.watch, t});
+    earliest = std::min(earliest, t);
+  }
+  std::erase_if(found, [&](const Crossing& c) { return c.t > earliest + simultaneous; });
+  std::sort(found.begin(), found.end(),
+            [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
+  return found;
+}
+
+}  // namespace vibro
