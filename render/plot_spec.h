@@ -33,6 +33,7 @@ struct PlotSpec {
   bool show_dphi = false;         // time: also draw φ̇(t) on a second axis
   double t_from = 0.0;            // window drawn, s
   double t_to = std::numeric_limits<double>::infinity();  // clipped to t_end
+  std::vector<int> branches;      // phase: only these motion intervals (numbered from 1); empty: all
   std::optional<PhasePoint> first_integral_through;  // phase: exact unforced curve through it
   bool friction_zone = false;     // phase: shade |φ| ≤ α0 (mod 2π) where a pellet can rest
   std::string title;              // empty: a default title
