@@ -1,0 +1,143 @@
+#include "app/commands.h"
+
+#include <fstream>
+#include <iostream>
+#include <iterator>
+#include <nlohmann/json.hpp>
+#include <sstream>
+
+#include "core/simulate.h"
+#include "io/presets.h"
+#include "io/result_json.h"
+#include "io/scene_json.h"
+
+namespace vibro {
+namespace {
+
+using nlohmann::json;
+
+void print_error(const std::string& field, const std::string& message) {
+  std::cerr << json{{"error", message}, {"field", field}}.dump() << "\n";
+}
+
+std::optional<std::string> read_source(const std::string& source) {
+  if (source == "-") {
+    return std::string(std::istreambuf_iterator<char>(std::cin), {});
+  }
+  std::ifstream in(source, std::ios::binary);
+  if (!in) return std::nullopt;
+  return std::string(std::istreambuf_iterator<char>(in), {});
+}
+
+}  // namespace
+
+std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
+  std::optional<std::string> text;
+  std::string origin;
+  json overrides = json::object();
+  for (next = 0; next < args.size(); ++next) {
+    const std::string& a = args[next];
+    auto value = [&]() -> std::optional<std::string> {
+      if (next + 1 >= args.size()) {
+        print_error(a, "needs a value");
+        return std::nullopt;
+      }
+      return args[++next];
+    };
+    if (a == "--preset") {
+      auto name = value();
+      if (!name) return std::nullopt;
+      auto preset = preset_json(*name);
+      if (!preset) {
+        print_error("preset", "no preset named \"" + *name + "\" (see `vibro presets`)");
+        return std::nullopt;
+      }
+      text = std::string(*preset);
+      origin = *name;
+    } else if (a == "--t-end" || a == "--method" || a == "--rtol" || a == "--atol") {
+      auto v = value();
+      if (!v) return std::nullopt;
+      try {
+        if (a == "--method") overrides["solver"]["method"] = *v;
+        else if (a == "--t-end") overrides["t_end"] = std::stod(*v);
+        else overrides["solver"][a.substr(2)] = std::stod(*v);
+      } catch (const std::exception&) {
+        print_error(a, "must be a number");
+        return std::nullopt;
+      }
+    } else if (a == "--trajectories") {
+      overrides["trajectories"] = true;
+    } else if (!a.starts_with("--") || a == "-") {
+      if (text) break;  // a later positional argument belongs to the command
+      text = read_source(a);
+      if (!text) {
+        print_error("scene", "cannot read the file \"" + a + "\"");
+        return std::nullopt;
+      }
+      origin = a;
+    } else {
+      break;  // an option of the command itself
+    }
+  }
+  if (!text) {
+    print_error("scene", "name a scene file, - for stdin, or --preset NAME");
+    return std::nullopt;
+  }
+  json j = json::parse(*text, nullptr, false);
+  if (j.is_discarded()) {
+    print_error("scene", origin + " is not valid JSON");
+    return std::nullopt;
+  }
+  if (j.is_object()) j.merge_patch(overrides);
+  SceneOrError parsed = scene_from_json(j);
+  if (auto* e = std::get_if<FieldError>(&parsed)) {
+    print_error(e->field, e->message);
+    return std::nullopt;
+  }
+  return std::get<Scene>(std::move(parsed));
+}
+
+int simulate_command(const Args& args) {
+  std::size_t next = 0;
+  auto scene = load_scene(args, next);
+  if (!scene) return 2;
+  if (next < args.size()) {
+    print_error(args[next], "is not an option of `vibro simulate`");
+    return 2;
+  }
+  SimOptions options = scene->sim;
+  options.record.assign(scene->model.size(), scene->trajectories);
+  const RunResult run = simulate(scene->model, options);
+  std::cout << result_to_json(run, scene->model).dump(2) << "\n";
+  return run.stats.termination == Termination::completed ? 0 : 1;
+}
+
+int presets_command(const Args& args) {
+  if (!args.empty()) {
+    print_error(args[0], "`vibro presets` takes no arguments");
+    return 2;
+  }
+  json list = json::array();
+  for (const PresetText& p : presets()) {
+    const json j = json::parse(p.json);
+    list.push_back({{"name", p.name}, {"description", j.value("description", "")}});
+  }
+  std::cout << list.dump(2) << "\n";
+  return 0;
+}
+
+int preset_command(const Args& args) {
+  if (args.size() != 1) {
+    print_error("preset", "usage: vibro preset NAME");
+    return 2;
+  }
+  auto text = preset_json(args[0]);
+  if (!text) {
+    print_error("preset", "no preset named \"" + args[0] + "\" (see `vibro presets`)");
+    return 2;
+  }
+  std::cout << *text;
+  return 0;
+}
+
+}  // namespace vibro

@@ -1,0 +1,33 @@
+// vibro: phase portraits of vibro-impact dynamics. `vibro help` lists the subcommands.
+#include <iostream>
+
+#include "app/commands.h"
+
+namespace vibro {
+
+const std::vector<Command>& commands() {
+  static const std::vector<Command> list = {
+      {"simulate", "vibro simulate SCENE.json | - | --preset NAME [--t-end S] [--method M] "
+                   "[--rtol X] [--atol X] [--trajectories]",
+       simulate_command},
+      {"presets", "vibro presets", presets_command},
+      {"preset", "vibro preset NAME", preset_command},
+  };
+  return list;
+}
+
+}  // namespace vibro
+
+int main(int argc, char** argv) {
+  const vibro::Args all(argv + 1, argv + argc);
+  if (all.empty() || all[0] == "help" || all[0] == "--help" || all[0] == "-h") {
+    std::cout << "vibro: phase portraits of vibro-impact dynamics\n\nusage:\n";
+    for (const auto& c : vibro::commands()) std::cout << "  " << c.usage << "\n";
+    return all.empty() ? 2 : 0;
+  }
+  for (const auto& c : vibro::commands()) {
+    if (c.name == all[0]) return c.run(vibro::Args(all.begin() + 1, all.end()));
+  }
+  std::cerr << "vibro: unknown command \"" << all[0] << "\" (try `vibro help`)\n";
+  return 2;
+}

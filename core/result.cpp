@@ -1,0 +1,37 @@
+#include "core/result.h"
+
+namespace vibro {
+
+std::string_view event_kind_name(EventKind kind) {
+  switch (kind) {
+    case EventKind::limiter: return "limiter";
+    case EventKind::collision: return "collision";
+    case EventKind::reversal: return "reversal";
+    case EventKind::stick: return "stick";
+    case EventKind::release: return "release";
+    case EventKind::chatter: return "chatter";
+  }
+  return "?";
+}
+
+std::string_view pellet_state_name(PelletState state) {
+  switch (state) {
+    case PelletState::sliding: return "sliding";
+    case PelletState::stuck: return "stuck";
+    case PelletState::resting_at_limiter: return "resting_at_limiter";
+  }
+  return "?";
+}
+
+std::string_view termination_name(Termination t) {
+  switch (t) {
+    case Termination::completed: return "completed";
+    case Termination::event_limit: return "event_limit";
+    case Termination::step_limit: return "step_limit";
+    case Termination::deadline: return "deadline";
+    case Termination::numerical_failure: return "numerical_failure";
+  }
+  return "?";
+}
+
+}  // namespace vibro

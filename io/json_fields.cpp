@@ -1,0 +1,103 @@
+#include "io/json_fields.h"
+
+#include <cmath>
+
+namespace vibro {
+
+Fields::Fields(const nlohmann::json& json, std::string path) : json_(json), path_(std::move(path)) {
+  if (!json_.is_object()) {
+    throw FieldException(path_.empty() ? "scene" : path_, "must be a JSON object");
+  }
+}
+
+std::string Fields::path(const std::string& key) const {
+  return path_.empty() ? key : path_ + "." + key;
+}
+
+const nlohmann::json* Fields::value(const std::string& key) {
+  read_.insert(key);
+  auto it = json_.find(key);
+  if (it == json_.end() || it->is_null()) return nullptr;
+  return &*it;
+}
+
+double as_number(const nlohmann::json& v, const std::string& field) {
+  if (!v.is_number()) throw FieldException(field, "must be a number");
+  const double x = v.get<double>();
+  if (!std::isfinite(x)) throw FieldException(field, "must be a finite number");
+  return x;
+}
+
+long as_integer(const nlohmann::json& v, const std::string& field) {
+  if (v.is_number_integer() || v.is_number_unsigned()) {
+    if (v.is_number_unsigned() && v.get<unsigned long long>() > 1000000000ULL) {
+      throw FieldException(field, "is out of range");
+    }
+    return v.get<long>();
+  }
+  if (v.is_number_float()) {
+    const double x = v.get<double>();
+    if (std::isfinite(x) && x == std::floor(x) && std::abs(x) <= 1e9) return static_cast<long>(x);
+  }
+  throw FieldException(field, "must be an integer");
+}
+
+std::optional<double> Fields::number(const std::string& key) {
+  const nlohmann::json* v = value(key);
+  if (!v) return std::nullopt;
+  return as_number(*v, path(key));
+}
+
+double Fields::number(const std::string& key, double fallback) {
+  return number(key).value_or(fallback);
+}
+
+double Fields::required_number(const std::string& key) {
+  auto x = number(key);
+  if (!x) throw FieldException(path(key), "is required (a number)");
+  return *x;
+}
+
+std::optional<long> Fields::integer(const std::string& key) {
+  const nlohmann::json* v = value(key);
+  if (!v) return std::nullopt;
+  return as_integer(*v, path(key));
+}
+
+bool Fields::boolean(const std::string& key, bool fallback) {
+  const nlohmann::json* v = value(key);
+  if (!v) return fallback;
+  if (!v->is_boolean()) throw FieldException(path(key), "must be true or false");
+  return v->get<bool>();
+}
+
+std::optional<std::string> Fields::string(const std::string& key, std::size_t max_length) {
+  const nlohmann::json* v = value(key);
+  if (!v) return std::nullopt;
+  if (!v->is_string()) throw FieldException(path(key), "must be a string");
+  std::string s = v->get<std::string>();
+  if (s.size() > max_length) {
+    throw FieldException(path(key), "must be at most " + std::to_string(max_length) + " bytes");
+  }
+  return s;
+}
+
+const nlohmann::json* Fields::array(const std::string& key, std::size_t max_items) {
+  const nlohmann::json* v = value(key);
+  if (!v) return nullptr;
+  if (!v->is_array()) throw FieldException(path(key), "must be an array");
+  if (v->size() > max_items) {
+    throw FieldException(path(key), "must have at most " + std::to_string(max_items) + " items");
+  }
+  return v;
+}
+
+void Fields::done() const {
+  for (auto it = json_.begin(); it != json_.end(); ++it) {
+    if (!read_.count(it.key())) {
+      throw FieldException(path(it.key()), "is not a known field here");
+    }
+  }
+}
+
+}  // namespace vibro

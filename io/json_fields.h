@@ -1,0 +1,52 @@
+// Strict reading of JSON objects: every value is checked for type, and keys that nobody read
+// are reported, so a typo ("alpah0") is an error, not a silent default. Errors carry the
+// field's path as the scene spells it ("model.pellets[1].m").
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <set>
+#include <stdexcept>
+#include <string>
+#include <vector>
+
+namespace vibro {
+
+// Thrown inside io/ only; the public functions turn it into a FieldError value.
+struct FieldException : std::runtime_error {
+  FieldException(std::string field, const std::string& message)
+      : std::runtime_error(message), field(std::move(field)) {}
+  std::string field;
+};
+
+class Fields {
+ public:
+  // `json` must be an object, else FieldException naming `path`.
+  Fields(const nlohmann::json& json, std::string path);
+
+  std::optional<double> number(const std::string& key);
+  double number(const std::string& key, double fallback);
+  double required_number(const std::string& key);
+  std::optional<long> integer(const std::string& key);
+  bool boolean(const std::string& key, bool fallback);
+  std::optional<std::string> string(const std::string& key, std::size_t max_length = 200);
+  // The value under key if present (any type), marked as read.
+  const nlohmann::json* value(const std::string& key);
+  // An array under key, with at most max_items items.
+  const nlohmann::json* array(const std::string& key, std::size_t max_items);
+
+  std::string path(const std::string& key) const;
+  // Throws for the first key that was never read.
+  void done() const;
+
+ private:
+  const nlohmann::json& json_;
+  std::string path_;
+  std::set<std::string> read_;
+};
+
+// A number from a JSON value, naming `field` if it is not one.
+double as_number(const nlohmann::json& v, const std::string& field);
+long as_integer(const nlohmann::json& v, const std::string& field);
+
+}  // namespace vibro

@@ -1,0 +1,159 @@
+#include "io/result_json.h"
+
+#include <cmath>
+#include <sstream>
+
+namespace vibro {
+namespace {
+
+using nlohmann::json;
+
+json num(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+json numbers(const std::vector<double>& xs) {
+  json a = json::array();
+  for (double x : xs) a.push_back(num(x));
+  return a;
+}
+
+json event_json(const Event& e) {
+  json j = {{"t", num(e.t)},
+            {"kind", event_kind_name(e.kind)},
+            {"pellets", e.pellets},
+            {"phi", num(e.phi)},
+            {"dphi_before", numbers(e.dphi_before)},
+            {"dphi_after", numbers(e.dphi_after)}};
+  if (e.limiter >= 0) j["limiter"] = e.limiter;
+  if (e.kind == EventKind::chatter) {
+    j["impacts_resolved"] = e.impacts_resolved;
+    j["t_accumulation"] = num(e.t_accumulation);
+  } else if (e.impacts_resolved > 0) {
+    j["cascade_impacts"] = e.impacts_resolved;  // a cascade taken to its plastic limit
+  }
+  return j;
+}
+
+json track_json(const PelletTrack& track) {
+  json branches = json::array();
+  for (const Branch& b : track.branches) {
+    json t = json::array(), phi = json::array(), dphi = json::array();
+    for (const Sample& s : b.samples) {
+      t.push_back(num(s.t));
+      phi.push_back(num(s.phi));
+      dphi.push_back(num(s.dphi));
+    }
+    branches.push_back({{"index", b.index}, {"t", t}, {"phi", phi}, {"dphi", dphi}});
+  }
+  return {{"pellet", track.pellet}, {"branches", branches}};
+}
+
+// An angle as a multiple of π/4 when it is one ("3π/2"), else in decimals.
+std::string angle_text(double phi) {
+  const double q = phi / (M_PI / 4.0);
+  std::ostringstream s;
+  if (std::abs(q - std::round(q)) < 1e-9 && std::round(q) != 0.0) {
+    const long n = std::lround(q);
+    long num = n, den = 4;
+    while (num % 2 == 0 && den > 1) { num /= 2; den /= 2; }
+    if (num == 1) s << "π"; else if (num == -1) s << "-π"; else s << num << "π";
+    if (den > 1) s << "/" << den;
+    return s.str();
+  }
+  s.precision(4);
+  s << phi;
+  return s.str();
+}
+
+}  // namespace
+
+std::string answer_sentence(const RunResult& run, const Model& model) {
+  std::ostringstream s;
+  s.precision(4);
+  const LastImpact& last = run.summary.last_impact;
+  if (last.index == 0) {
+    s << "No impact happens before t = " << run.stats.t_reached << " s.";
+  } else {
+    s << "The system stops being vibro-impact after impact " << last.index << " at t = " << last.t
+      << " s (" << run.summary.limiter_impacts << " limiter impacts, " << run.summary.collisions
+      << " collisions).";
+  }
+  for (std::size_t i = 0; i < run.summary.final.size(); ++i) {
+    const FinalState& f = run.summary.final[i];
+    s << " Pellet " << i + 1;
+    switch (f.state) {
+      case PelletState::resting_at_limiter:
+        s << " rests against limiter " << f.limiter + 1 << " at φ = " << angle_text(f.phi) << ".";
+        break;
+      case PelletState::stuck: {
+        const bool in_zone = std::abs(wrap_angle(f.phi)) <= std::atan(model.mu_static()) + 1e-12;
+        s << " is at rest at φ = " << angle_text(f.phi)
+          << (in_zone ? ", inside its friction zone." : ".");
+        break;
+      }
+      case PelletState::sliding:
+        s << " still moves (φ = " << angle_text(f.phi) << ", φ̇ = " << f.dphi << " rad/s).";
+        break;
+    }
+  }
+  if (run.stats.termination != Termination::completed) s << " The run stopped early: " << run.stats.message << ".";
+  return s.str();
+}
+
+json result_to_json(const RunResult& run, const Model& model) {
+  json events = json::array();
+  for (const Event& e : run.events) events.push_back(event_json(e));
+
+  json finals = json::array();
+  for (const FinalState& f : run.summary.final) {
+    json fj = {{"phi", num(f.phi)},
+               {"phi_wrapped", num(wrap_angle(f.phi))},
+               {"dphi", num(f.dphi)},
+               {"state", pellet_state_name(f.state)}};
+    if (f.limiter >= 0) fj["limiter"] = f.limiter;
+    finals.push_back(fj);
+  }
+  const Summary& sm = run.summary;
+  json summary = {{"limiter_impacts", sm.limiter_impacts},
+                  {"collisions", sm.collisions},
+                  {"impacts_by_limiter", sm.impacts_by_limiter},
+                  {"final", finals},
+                  {"answer", answer_sentence(run, model)}};
+  summary["last_impact"] = sm.last_impact.index > 0
+                               ? json{{"index", sm.last_impact.index}, {"t", num(sm.last_impact.t)}}
+                               : json(nullptr);
+  const Stats& st = run.stats;
+  json stats = {{"method", st.method},
+                {"rtol", st.rtol},
+                {"atol", st.atol},
+                {"steps", st.steps},
+                {"rejected", st.rejected},
+                {"rhs_evals", st.rhs_evals},
+                {"jac_evals", st.jac_evals},
+                {"lu_decomps", st.lu_decomps},
+                {"stiff_switches", st.stiff_switches},
+                {"wall_ms", num(st.wall_ms)},
+                {"error_estimate", num(st.error_estimate)},
+                {"energy_defect", num(st.energy_defect)},
+                {"first_integral_residual", num(st.first_integral_residual)},
+                {"termination", termination_name(st.termination)},
+                {"t_reached", num(st.t_reached)},
+                {"events", run.events.size()}};
+  if (!st.message.empty()) stats["message"] = st.message;
+  json warnings = json::array();
+  for (const Warning& w : run.warnings) {
+    warnings.push_back({{"code", w.code},
+                        {"message", w.message},
+                        {"pellet", w.pellet},
+                        {"t_begin", num(w.t_begin)},
+                        {"t_end", num(w.t_end)}});
+  }
+  json j = {{"events", events}, {"summary", summary}, {"stats", stats}, {"warnings", warnings}};
+  if (!run.tracks.empty()) {
+    json tracks = json::array();
+    for (const PelletTrack& t : run.tracks) tracks.push_back(track_json(t));
+    j["trajectories"] = tracks;
+  }
+  return j;
+}
+
+}  // namespace vibro

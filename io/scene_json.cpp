@@ -1,0 +1,284 @@
+#include "io/scene_json.h"
+
+#include <cmath>
+
+#include "io/json_fields.h"
+
+namespace vibro {
+namespace {
+
+using nlohmann::json;
+
+std::string item(const std::string& path, std::size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
+
+int index_in(const json& v, const std::string& field, int count, const char* what) {
+  const long i = as_integer(v, field);
+  if (i < 0 || i >= count) {
+    throw FieldException(field, std::string("must be a ") + what + " index in 0.." +
+                                    std::to_string(count - 1) + ", got " + std::to_string(i));
+  }
+  return static_cast<int>(i);
+}
+
+Pellet read_pellet(const json& j, const std::string& path) {
+  Fields f(j, path);
+  Pellet p;
+  p.m = f.required_number("m");
+  p.phi0 = f.required_number("phi0");
+  p.dphi0 = f.number("dphi0", 0.0);
+  p.force.F0 = f.number("F0", 0.0);
+  p.force.Omega = f.number("Omega", 0.0);
+  p.force.psi = f.number("psi", 0.0);
+  f.done();
+  return p;
+}
+
+Limiter read_limiter(const json& j, const std::string& path, int pellets) {
+  Fields f(j, path);
+  Limiter l;
+  l.angle = f.required_number("angle");
+  l.k = f.required_number("k");
+  l.mobile = f.boolean("mobile", false);
+  if (auto r = f.integer("rearm_by")) l.rearm_by = static_cast<int>(*r);
+  if (const json* list = f.array("pellets", 64)) {
+    for (std::size_t i = 0; i < list->size(); ++i) {
+      l.pellets.push_back(index_in((*list)[i], item(f.path("pellets"), i), pellets, "pellet"));
+    }
+  }
+  f.done();
+  return l;
+}
+
+Model read_model(const json& j, const SceneLimits& limits) {
+  Fields f(j, "model");
+  Model m;
+  m.g = f.number("g", 9.81);
+  m.R = f.required_number("R");
+  m.alpha0 = f.number("alpha0", 0.0);
+  m.mu_s = f.number("mu_s");
+  m.k_c = f.number("k_c", 1.0);
+  if (auto law = f.string("friction", 32)) {
+    if (*law == "paper") m.friction = FrictionLaw::paper;
+    else if (*law == "bilateral") m.friction = FrictionLaw::bilateral;
+    else throw FieldException("model.friction", "must be \"paper\" or \"bilateral\", got \"" + *law + "\"");
+  }
+  const json* pellets = f.array("pellets", limits.sim.max_pellets);
+  if (!pellets || pellets->empty()) {
+    throw FieldException("model.pellets", "must list 1 to " +
+                                              std::to_string(limits.sim.max_pellets) + " pellets");
+  }
+  for (std::size_t i = 0; i < pellets->size(); ++i) {
+    m.pellets.push_back(read_pellet((*pellets)[i], item("model.pellets", i)));
+  }
+  if (const json* limiters = f.array("limiters", limits.sim.max_limiters)) {
+    for (std::size_t i = 0; i < limiters->size(); ++i) {
+      m.limiters.push_back(read_limiter((*limiters)[i], item("model.limiters", i), m.size()));
+    }
+  }
+  f.done();
+  return m;
+}
+
+Method read_method(const std::string& name) {
+  if (name == "dopri5") return Method::dopri5;
+  if (name == "dop853") return Method::dop853;
+  if (name == "radau5") return Method::radau5;
+  if (name == "auto") return Method::automatic;
+  throw FieldException("solver.method",
+                       "must be one of \"auto\", \"dopri5\", \"dop853\", \"radau5\", got \"" +
+                           name + "\"");
+}
+
+void read_solver(const json& j, SimOptions& o) {
+  Fields f(j, "solver");
+  if (auto name = f.string("method", 32)) o.method = read_method(*name);
+  o.rtol = f.number("rtol", o.rtol);
+  o.atol = f.number("atol", o.atol);
+  f.done();
+}
+
+PlotSpec read_plot(const json& j, const std::string& path, int pellets) {
+  Fields f(j, path);
+  PlotSpec p;
+  const auto kind = f.string("kind", 32);
+  if (!kind) throw FieldException(f.path("kind"), "is required: \"phase\", \"time\" or \"cylinder\"");
+  if (*kind == "phase") p.kind = PlotKind::phase;
+  else if (*kind == "time") p.kind = PlotKind::time;
+  else if (*kind == "cylinder") p.kind = PlotKind::cylinder;
+  else throw FieldException(f.path("kind"), "must be \"phase\", \"time\" or \"cylinder\", got \"" + *kind + "\"");
+
+  if (p.kind == PlotKind::time) {
+    if (const json* list = f.array("pellets", 64)) {
+      if (list->empty()) throw FieldException(f.path("pellets"), "must name at least one pellet");
+      for (std::size_t i = 0; i < list->size(); ++i)
+        p.pellets.push_back(index_in((*list)[i], item(f.path("pellets"), i), pellets, "pellet"));
+    } else {
+      for (int i = 0; i < pellets; ++i) p.pellets.push_back(i);
+    }
+    p.show_dphi = f.boolean("dphi", false);
+  } else {
+    if (const json* v = f.value("pellet")) p.pellet = index_in(*v, f.path("pellet"), pellets, "pellet");
+  }
+  p.t_from = f.number("t_from", 0.0);
+  if (auto to = f.number("t_to")) p.t_to = *to;
+  if (p.t_from < 0.0) throw FieldException(f.path("t_from"), "must be ≥ 0");
+  if (!(p.t_to > p.t_from)) throw FieldException(f.path("t_to"), "must be greater than t_from");
+  if (p.kind == PlotKind::phase) {
+    if (const json* list = f.array("branches", 10000)) {
+      for (std::size_t i = 0; i < list->size(); ++i) {
+        const long b = as_integer((*list)[i], item(f.path("branches"), i));
+        if (b < 1) throw FieldException(item(f.path("branches"), i), "branches are numbered from 1");
+        p.branches.push_back(static_cast<int>(b));
+      }
+    }
+    if (const json* fi = f.value("first_integral")) {
+      Fields g(*fi, f.path("first_integral"));
+      p.first_integral_through = PhasePoint{g.required_number("phi"), g.required_number("dphi")};
+      g.done();
+    }
+    p.friction_zone = f.boolean("friction_zone", false);
+  }
+  if (auto title = f.string("title", 200)) p.title = *title;
+  if (p.kind == PlotKind::cylinder) {
+    if (const json* cam = f.value("camera")) {
+      Fields c(*cam, f.path("camera"));
+      p.camera.azimuth_deg = c.number("azimuth", p.camera.azimuth_deg);
+      p.camera.elevation_deg = c.number("elevation", p.camera.elevation_deg);
+      p.camera.distance = c.number("distance", p.camera.distance);
+      c.done();
+      if (std::abs(p.camera.elevation_deg) > 89.0)
+        throw FieldException(c.path("elevation"), "must be in [-89, 89] degrees");
+      if (!(p.camera.distance >= 1.5 && p.camera.distance <= 50.0))
+        throw FieldException(c.path("distance"), "must be in [1.5, 50]");
+    }
+  }
+  f.done();
+  return p;
+}
+
+int json_depth(const json& j) {
+  int d = 0;
+  if (j.is_object() || j.is_array())
+    for (const auto& v : j) d = std::max(d, json_depth(v));
+  return (j.is_object() || j.is_array()) ? d + 1 : 0;
+}
+
+}  // namespace
+
+SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
+  try {
+    Fields f(j, "");
+    Scene s;
+    if (auto name = f.string("name", 64)) s.name = *name;
+    if (auto d = f.string("description", 2000)) s.description = *d;
+    if (const json* list = f.array("assumptions", 16)) {
+      for (std::size_t i = 0; i < list->size(); ++i) {
+        if (!(*list)[i].is_string() || (*list)[i].get<std::string>().size() > 2000)
+          throw FieldException(item("assumptions", i), "must be a string of at most 2000 bytes");
+        s.assumptions.push_back((*list)[i].get<std::string>());
+      }
+    }
+    const json* model = f.value("model");
+    if (!model) throw FieldException("model", "is required");
+    s.model = read_model(*model, limits);
+    const auto t_end = f.number("t_end");
+    if (!t_end) throw FieldException("t_end", "is required (s)");
+    s.sim.t_end = *t_end;
+    if (const json* solver = f.value("solver")) read_solver(*solver, s.sim);
+    s.trajectories = f.boolean("trajectories", false);
+    if (const json* plots = f.array("plots", limits.max_plots)) {
+      for (std::size_t i = 0; i < plots->size(); ++i)
+        s.figure.plots.push_back(read_plot((*plots)[i], item("plots", i), s.model.size()));
+    }
+    if (auto w = f.integer("width")) s.figure.width = static_cast<int>(*w);
+    if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
+    f.done();
+    if (s.figure.width < 16 || s.figure.width > limits.max_width)
+      throw FieldException("width", "must be in [16, " + std::to_string(limits.max_width) + "] px");
+    if (s.figure.height < 16 || s.figure.height > limits.max_height)
+      throw FieldException("height", "must be in [16, " + std::to_string(limits.max_height) + "] px");
+    if (auto e = validate_model(s.model, limits.sim)) return *e;
+    if (auto e = validate_options(s.sim, s.model.size(), limits.sim)) return *e;
+    return s;
+  } catch (const FieldException& e) {
+    return FieldError{e.field, e.what()};
+  }
+}
+
+SceneOrError scene_from_text(std::string_view text, const SceneLimits& limits) {
+  json j = json::parse(text, nullptr, false);
+  if (j.is_discarded()) return FieldError{"scene", "is not valid JSON"};
+  if (json_depth(j) > limits.max_depth) {
+    return FieldError{"scene", "nests deeper than " + std::to_string(limits.max_depth) + " levels"};
+  }
+  return scene_from_json(j, limits);
+}
+
+
+json scene_to_json(const Scene& s) {
+  json model = {{"g", s.model.g},
+                {"R", s.model.R},
+                {"alpha0", s.model.alpha0},
+                {"friction", s.model.friction == FrictionLaw::paper ? "paper" : "bilateral"},
+                {"k_c", s.model.k_c}};
+  if (s.model.mu_s) model["mu_s"] = *s.model.mu_s;
+  json pellets = json::array();
+  for (const Pellet& p : s.model.pellets) {
+    pellets.push_back({{"m", p.m}, {"phi0", p.phi0}, {"dphi0", p.dphi0}, {"F0", p.force.F0},
+                       {"Omega", p.force.Omega}, {"psi", p.force.psi}});
+  }
+  model["pellets"] = pellets;
+  json limiters = json::array();
+  for (const Limiter& l : s.model.limiters) {
+    json lj = {{"angle", l.angle}, {"k", l.k}, {"mobile", l.mobile}};
+    if (l.mobile) lj["rearm_by"] = l.rearm_by;
+    if (!l.pellets.empty()) lj["pellets"] = l.pellets;
+    limiters.push_back(lj);
+  }
+  model["limiters"] = limiters;
+
+  json plots = json::array();
+  for (const PlotSpec& p : s.figure.plots) {
+    json pj;
+    switch (p.kind) {
+      case PlotKind::phase: pj["kind"] = "phase"; break;
+      case PlotKind::time: pj["kind"] = "time"; break;
+      case PlotKind::cylinder: pj["kind"] = "cylinder"; break;
+    }
+    if (p.kind == PlotKind::time) {
+      pj["pellets"] = p.pellets;
+      if (p.show_dphi) pj["dphi"] = true;
+    } else {
+      pj["pellet"] = p.pellet;
+    }
+    if (p.t_from != 0.0) pj["t_from"] = p.t_from;
+    if (std::isfinite(p.t_to)) pj["t_to"] = p.t_to;
+    if (!p.branches.empty()) pj["branches"] = p.branches;
+    if (p.first_integral_through)
+      pj["first_integral"] = {{"phi", p.first_integral_through->phi},
+                              {"dphi", p.first_integral_through->dphi}};
+    if (p.friction_zone) pj["friction_zone"] = true;
+    if (!p.title.empty()) pj["title"] = p.title;
+    if (p.kind == PlotKind::cylinder)
+      pj["camera"] = {{"azimuth", p.camera.azimuth_deg},
+                      {"elevation", p.camera.elevation_deg},
+                      {"distance", p.camera.distance}};
+    plots.push_back(pj);
+  }
+  json j;
+  if (!s.name.empty()) j["name"] = s.name;
+  if (!s.description.empty()) j["description"] = s.description;
+  if (!s.assumptions.empty()) j["assumptions"] = s.assumptions;
+  j["model"] = model;
+  j["t_end"] = s.sim.t_end;
+  j["solver"] = {{"method", method_name(s.sim.method)}, {"rtol", s.sim.rtol}, {"atol", s.sim.atol}};
+  if (s.trajectories) j["trajectories"] = true;
+  j["plots"] = plots;
+  j["width"] = s.figure.width;
+  j["height"] = s.figure.height;
+  return j;
+}
+
+}  // namespace vibro

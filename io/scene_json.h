@@ -1,0 +1,21 @@
+// Scene <-> JSON. Reading is strict: types, ranges, finiteness and unknown keys are checked,
+// and a failure names the field. Writing gives the canonical form (every field, fixed order),
+// which is also the cache key of a scene.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string_view>
+#include <variant>
+
+#include "core/validate.h"
+#include "io/scene.h"
+
+namespace vibro {
+
+using SceneOrError = std::variant<Scene, FieldError>;
+
+SceneOrError scene_from_json(const nlohmann::json& json, const SceneLimits& limits = {});
+SceneOrError scene_from_text(std::string_view text, const SceneLimits& limits = {});
+nlohmann::json scene_to_json(const Scene& scene);
+
+}  // namespace vibro
