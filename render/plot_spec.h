@@ -23,7 +23,7 @@ struct PhasePoint {
 struct Camera {
   double azimuth_deg = 35.0;
   double elevation_deg = 25.0;
-  double distance = 3.2;  // in units of the cylinder's radius-normalised scene box
+  double distance = 5.0;  // in cylinder radii; sets the strength of the perspective
 };
 
 struct PlotSpec {
