@@ -1,0 +1,84 @@
+// Chatter: finitely many events, the accumulation time of the geometric series, rest against
+// the limiter, release when pulled away; plastic limiter.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+
+#include "core/simulate.h"
+#include "scenes.h"
+
+namespace vibro {
+namespace {
+
+TEST(Chatter, EndsInFinitelyManyEventsAtThePredictedAccumulationTime) {
+  // No friction: the pellet drops a height d onto a limiter below it; for a small drop the
+  // flights are parabolas under a = (g/R) sin(theta), so with the first impact at t1 with
+  // speed v1 the impacts accumulate at t* = t1 + 2 k v1 / (a (1 − k)).
+  const double theta = 0.3, d = 1e-4, k = 0.5;
+  Model m = testing::one_pellet(0.0, theta + d, 0.0);
+  m.limiters = {{theta, k, false, -1, {}}};
+  const RunResult run = simulate(m, testing::recorded(m, 1.0));
+  ASSERT_EQ(run.stats.termination, Termination::completed);
+  EXPECT_LT(run.events.size(), 200u);
+  auto impacts = testing::events_of(run, EventKind::limiter);
+  auto chatter = testing::events_of(run, EventKind::chatter);
+  ASSERT_GE(impacts.size(), 2u);
+  ASSERT_EQ(chatter.size(), 1u);
+  const double a = m.g / m.R * std::sin(theta);
+  const double t1 = impacts[0]->t, v1 = std::abs(impacts[0]->dphi_before[0]);
+  const double predicted = t1 + 2 * k * v1 / (a * (1 - k));
+  EXPECT_NEAR(chatter[0]->t_accumulation, predicted, 1e-3 * (predicted - t1));
+  EXPECT_GT(chatter[0]->impacts_resolved, 10);
+  EXPECT_EQ(run.summary.final[0].state, PelletState::resting_at_limiter);
+  EXPECT_EQ(run.summary.final[0].limiter, 0);
+  EXPECT_DOUBLE_EQ(run.summary.final[0].phi, theta);
+}
+
+TEST(Chatter, WithFrictionTheRatioIsKTimesSqrtOfTheAccelerations) {
+  const Scene scene = testing::preset("chatter");
+  const RunResult run = simulate(scene.model, testing::recorded(scene.model, scene.sim.t_end));
+  auto impacts = testing::events_of(run, EventKind::limiter);
+  ASSERT_GE(impacts.size(), 6u);
+  const Model& m = scene.model;
+  const double theta = m.limiters[0].angle, k = m.limiters[0].k;
+  const double press = m.g / m.R * std::sin(theta), f = m.mu() * m.g / m.R * std::cos(theta);
+  const double r = k * std::sqrt((press - f) / (press + f));
+  // Late impacts, where the flights are short enough for constant accelerations.
+  const std::size_t n = impacts.size();
+  const double ratio = std::abs(impacts[n - 1]->dphi_before[0] / impacts[n - 2]->dphi_before[0]);
+  EXPECT_NEAR(ratio, r, 1e-3);
+  EXPECT_EQ(testing::events_of(run, EventKind::chatter).size(), 1u);
+  EXPECT_EQ(run.summary.final[0].state, PelletState::resting_at_limiter);
+}
+
+TEST(Chatter, RestingPelletIsReleasedWhenTheForcePullsItAway) {
+  const double theta = 0.3;
+  Model m = testing::one_pellet(0.02, theta + 1e-3, 0.0);
+  m.limiters = {{theta, 0.5, false, -1, {}}};
+  // Gravity presses it down onto the limiter with (g/R) sin 0.3 ≈ 5.8 rad/s²; a force of
+  // 1 N on 0.2 kg at R = 0.5 gives 10 rad/s² away from it at its peak.
+  m.pellets[0].force = {1.0, 2.0, M_PI};  // starts pressing, pulls away after a quarter period
+  const RunResult run = simulate(m, testing::recorded(m, 2.0));
+  ASSERT_FALSE(testing::events_of(run, EventKind::chatter).empty());
+  const auto releases = testing::events_of(run, EventKind::release);
+  ASSERT_FALSE(releases.empty());
+  EXPECT_GT(releases[0]->t, testing::events_of(run, EventKind::chatter)[0]->t);
+  // Released, it leaves the limiter upward: the next event is above it.
+  const auto next = std::find_if(run.events.begin(), run.events.end(),
+                                 [&](const Event& e) { return e.t > releases[0]->t; });
+  ASSERT_NE(next, run.events.end());
+  EXPECT_GT(next->phi, theta);
+}
+
+TEST(Chatter, PlasticLimiterStopsThePelletAtTheFirstImpact) {
+  const Scene scene = testing::preset("plastic-limiter");
+  const RunResult run = simulate(scene.model, testing::recorded(scene.model, scene.sim.t_end));
+  auto impacts = testing::events_of(run, EventKind::limiter);
+  ASSERT_GE(impacts.size(), 1u);
+  EXPECT_EQ(impacts[0]->dphi_after[0], 0.0);
+  EXPECT_LT(run.events.size(), 50u);
+}
+
+}  // namespace
+}  // namespace vibro

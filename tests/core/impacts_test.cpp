@@ -1,0 +1,107 @@
+// Impacts at one instant: momentum and Newton's restitution law at every collision, limiter
+// restitution, mobile limiters, and cascades resolved in bounded work.
+#include <gtest/gtest.h>
+
+#include <random>
+
+#include "core/impacts.h"
+#include "scenes.h"
+
+namespace vibro {
+namespace {
+
+TEST(Collide, ConservesMomentumAndObeysRestitution) {
+  std::mt19937 rng(7);
+  std::uniform_real_distribution<double> mass(1e-4, 10.0), speed(-50.0, 50.0), k(0.0, 1.0);
+  for (int trial = 0; trial < 1000; ++trial) {
+    const double mi = mass(rng), mj = mass(rng), kc = k(rng);
+    double vi = speed(rng), vj = speed(rng);
+    const double vi0 = vi, vj0 = vj;
+    collide(mi, mj, kc, vi, vj);
+    const double scale = (mi + mj) * (std::abs(vi0) + std::abs(vj0));
+    EXPECT_NEAR(mi * vi + mj * vj, mi * vi0 + mj * vj0, 1e-13 * scale);
+    EXPECT_NEAR(vj - vi, -kc * (vj0 - vi0), 1e-12 * (std::abs(vi0) + std::abs(vj0)));
+  }
+}
+
+TEST(Collide, EqualMassesElasticSwapSpeeds) {
+  double a = 3.0, b = -1.0;
+  collide(0.2, 0.2, 1.0, a, b);
+  EXPECT_DOUBLE_EQ(a, -1.0);
+  EXPECT_DOUBLE_EQ(b, 3.0);
+}
+
+Model two_pellets_and_limiters() {
+  Model m = testing::one_pellet(0.0, 0.0, 0.0);
+  m.pellets.push_back(m.pellets[0]);
+  m.limiters = {{0.5, 0.5, true, 1, {}}, {-0.5, 0.8, false, -1, {}}};
+  return m;
+}
+
+TEST(ResolveImpacts, LimiterReversesWithRestitution) {
+  Model m = two_pellets_and_limiters();
+  std::vector<double> v = {4.0, 0.0};
+  std::vector<bool> armed = {true, true};
+  auto events = resolve_impacts(m, v, armed, {{0, 1, +1}}, {}, {-0.5, 0.2});
+  // Pellet 0 lies on the phi > angle side of limiter 1 and moves away from it: no impact.
+  EXPECT_TRUE(events.empty());
+  v = {-4.0, 0.0};
+  events = resolve_impacts(m, v, armed, {{0, 1, +1}}, {}, {-0.5, 0.2});
+  ASSERT_EQ(events.size(), 1u);
+  EXPECT_EQ(events[0].kind, EventKind::limiter);
+  EXPECT_DOUBLE_EQ(v[0], 0.8 * 4.0);
+}
+
+TEST(ResolveImpacts, MobileLimiterDisarmsAndIsRearmedByItsPartner) {
+  Model m = two_pellets_and_limiters();
+  std::vector<double> v = {4.0, 0.0};
+  std::vector<bool> armed = {true, true};
+  resolve_impacts(m, v, armed, {{0, 0, -1}}, {}, {0.5, 0.0});
+  EXPECT_DOUBLE_EQ(v[0], -2.0);
+  EXPECT_FALSE(armed[0]);
+  // While disarmed, a pellet passes it.
+  v = {4.0, 0.0};
+  auto none = resolve_impacts(m, v, armed, {{0, 0, -1}}, {}, {0.5, 0.0});
+  EXPECT_TRUE(none.empty());
+  EXPECT_DOUBLE_EQ(v[0], 4.0);
+  // An impact on limiter 1 (its rearm_by) arms it again.
+  v = {-1.0, 0.0};
+  resolve_impacts(m, v, armed, {{0, 1, +1}}, {}, {-0.5, 0.0});
+  EXPECT_TRUE(armed[0]);
+}
+
+TEST(ResolveImpacts, PelletsOnTwoSidesOfALimiterDoNotCollide) {
+  Model m = two_pellets_and_limiters();
+  m.limiters[0].mobile = false;
+  m.limiters[0].rearm_by = -1;
+  std::vector<double> v = {3.0, -2.0};  // both run into limiter 0 from its two sides
+  std::vector<bool> armed = {true, true};
+  auto events =
+      resolve_impacts(m, v, armed, {{0, 0, -1}, {1, 0, +1}}, {{0, 1}}, {0.5, 0.5});
+  ASSERT_EQ(events.size(), 2u);
+  EXPECT_EQ(events[0].kind, EventKind::limiter);
+  EXPECT_EQ(events[1].kind, EventKind::limiter);
+  EXPECT_DOUBLE_EQ(v[0], -1.5);
+  EXPECT_DOUBLE_EQ(v[1], 1.0);
+}
+
+TEST(ResolveImpacts, SqueezedLightPelletEndsInBoundedWorkAsAPlasticGroup) {
+  Model m = testing::one_pellet(0.0, 0.0, 0.0);
+  m.pellets.push_back(m.pellets[0]);
+  m.pellets[0].m = 1.0;
+  m.pellets[1].m = 1e-4;
+  m.limiters = {{0.5, 1.0, false, -1, {}}};
+  m.k_c = 1.0;
+  std::vector<double> v = {2.0, 2.0};  // heavy pellet behind, light one against the limiter
+  std::vector<bool> armed = {true};
+  auto events = resolve_impacts(m, v, armed, {{1, 0, -1}}, {{0, 1}}, {0.5, 0.5});
+  ASSERT_FALSE(events.empty());
+  EXPECT_LE(events.size(), 4u);
+  // The limit of the cascade: the group stops against the limiter.
+  EXPECT_DOUBLE_EQ(v[0], 0.0);
+  EXPECT_DOUBLE_EQ(v[1], 0.0);
+  EXPECT_GT(events.back().impacts_resolved, 0);
+}
+
+}  // namespace
+}  // namespace vibro

@@ -1,0 +1,78 @@
+// Limiters in whole runs: restitution, the mobile limiter's disarm and re-arm, angles matched
+// modulo 2π, a pellet starting on a limiter.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/simulate.h"
+#include "scenes.h"
+
+namespace vibro {
+namespace {
+
+TEST(Limiter, ImpactReversesSpeedWithRestitutionAtTheLimiterAngle) {
+  Model m = testing::one_pellet(0.05, 0.0, 6.0);
+  m.limiters = {{0.6, 0.7, false, -1, {}}};
+  const RunResult run = simulate(m, testing::recorded(m, 0.5));
+  auto impacts = testing::events_of(run, EventKind::limiter);
+  ASSERT_FALSE(impacts.empty());
+  EXPECT_DOUBLE_EQ(impacts[0]->phi, 0.6);
+  EXPECT_GT(impacts[0]->dphi_before[0], 0.0);
+  EXPECT_NEAR(impacts[0]->dphi_after[0], -0.7 * impacts[0]->dphi_before[0], 1e-14);
+}
+
+TEST(Limiter, MobileLimiterLetsThePelletPassUntilItsPartnerRearmsIt) {
+  // No friction, k = 1: after the first impact on the mobile limiter at 0.5 the pellet swings
+  // between ±0.937 rad, passing 0.5 freely, because nothing strikes limiter 1 at −2.
+  Model m = testing::one_pellet(0.0, 0.0, 4.0);
+  m.limiters = {{0.5, 1.0, true, 1, {}}, {-2.0, 1.0, false, -1, {}}};
+  RunResult run = simulate(m, testing::recorded(m, 3.0));
+  EXPECT_EQ(testing::events_of(run, EventKind::limiter).size(), 1u);
+  bool passed = false;
+  for (const Event* e : testing::events_of(run, EventKind::reversal)) passed |= e->phi > 0.9;
+  EXPECT_TRUE(passed);
+
+  // With limiter 1 at −0.7 in reach, every impact on it re-arms limiter 0: impacts alternate.
+  m.limiters[1].angle = -0.7;
+  run = simulate(m, testing::recorded(m, 3.0));
+  auto impacts = testing::events_of(run, EventKind::limiter);
+  ASSERT_GE(impacts.size(), 6u);
+  for (std::size_t k = 0; k < impacts.size(); ++k) EXPECT_EQ(impacts[k]->limiter, static_cast<int>(k % 2));
+}
+
+TEST(Limiter, AnglesMatchModuloTwoPi) {
+  // A limiter given at 0.6 − 2π acts at 0.6; the pellet's angle stays unwrapped.
+  Model m = testing::one_pellet(0.05, 0.0, 6.0);
+  m.limiters = {{0.6 - kTwoPi, 0.7, false, -1, {}}};
+  const RunResult run = simulate(m, testing::recorded(m, 0.5));
+  auto impacts = testing::events_of(run, EventKind::limiter);
+  ASSERT_FALSE(impacts.empty());
+  EXPECT_DOUBLE_EQ(impacts[0]->phi, 0.6);
+}
+
+TEST(Limiter, APelletStartingOnALimiterStrikesItAtTimeZero) {
+  Model m = testing::one_pellet(0.05, 0.6, 2.0);
+  m.limiters = {{0.6, 0.5, false, -1, {}}};
+  const RunResult run = simulate(m, testing::recorded(m, 0.5));
+  ASSERT_FALSE(run.events.empty());
+  EXPECT_EQ(run.events[0].kind, EventKind::limiter);
+  EXPECT_EQ(run.events[0].t, 0.0);
+  EXPECT_DOUBLE_EQ(run.events[0].dphi_after[0], -1.0);
+}
+
+TEST(Limiter, LimiterActingOnOnePelletLetsTheOtherPass) {
+  Model m = testing::one_pellet(0.0, 0.0, 5.0);
+  m.pellets.push_back(m.pellets[0]);
+  m.pellets[1].phi0 = -0.2;
+  m.pellets[1].dphi0 = 0.0;
+  m.limiters = {{0.5, 1.0, false, -1, {1}}};  // acts on pellet 1 only
+  const RunResult run = simulate(m, testing::recorded(m, 0.3));
+  for (const Event* e : testing::events_of(run, EventKind::limiter)) EXPECT_EQ(e->pellets[0], 1);
+  bool passed = false;
+  for (const Event* e : testing::events_of(run, EventKind::reversal))
+    passed |= e->pellets[0] == 0 && e->phi > 0.5;
+  EXPECT_TRUE(passed);
+}
+
+}  // namespace
+}  // namespace vibro

@@ -1,0 +1,72 @@
+// The stick test at reversals and at t = 0, on both sides of its threshold, and release under
+// forcing at the predicted time.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/simulate.h"
+#include "scenes.h"
+
+namespace vibro {
+namespace {
+
+// At rest without forcing, a pellet holds where tan|phi| <= mu_s, i.e. |phi| <= alpha0.
+TEST(Stick, AtRestInsideTheFrictionConeStaysAndOutsideSlides) {
+  const double alpha0 = 0.05;
+  for (double side : {1.0, -1.0}) {
+    Model inside = testing::one_pellet(alpha0, side * (alpha0 - 1e-6), 0.0);
+    RunResult run = simulate(inside, testing::recorded(inside, 2.0));
+    EXPECT_EQ(run.summary.final[0].state, PelletState::stuck);
+    EXPECT_DOUBLE_EQ(run.summary.final[0].phi, inside.pellets[0].phi0);
+    EXPECT_TRUE(run.events.empty());
+
+    Model outside = testing::one_pellet(alpha0, side * (alpha0 + 1e-6), 0.0);
+    run = simulate(outside, testing::recorded(outside, 2.0));
+    EXPECT_NE(run.summary.final[0].phi, outside.pellets[0].phi0);
+    // It slides toward the bottom and comes to rest inside the cone.
+    EXPECT_EQ(run.summary.final[0].state, PelletState::stuck);
+    EXPECT_LE(std::abs(run.summary.final[0].phi), alpha0 + 1e-12);
+  }
+}
+
+TEST(Stick, AReversalInsideTheConeSticksAndOutsideReverses) {
+  // Slow start at the bottom: it rises to about 0.0226 rad < alpha0 and sticks there.
+  Model slow = testing::one_pellet(0.05, 0.0, 0.1);
+  RunResult run = simulate(slow, testing::recorded(slow, 2.0));
+  ASSERT_FALSE(run.events.empty());
+  EXPECT_EQ(run.events[0].kind, EventKind::stick);
+  EXPECT_EQ(run.summary.final[0].state, PelletState::stuck);
+  EXPECT_EQ(run.summary.final[0].phi, run.events[0].phi);
+  // Faster: the reversal is outside the cone, so it slides back and oscillates.
+  Model fast = testing::one_pellet(0.05, 0.0, 1.0);
+  run = simulate(fast, testing::recorded(fast, 2.0));
+  ASSERT_FALSE(run.events.empty());
+  EXPECT_EQ(run.events[0].kind, EventKind::reversal);
+  EXPECT_GT(std::abs(run.events[0].phi), 0.05);
+}
+
+TEST(Stick, ForcingReleasesAStuckPelletWhenItBeatsStaticFriction) {
+  // At phi = 0, F = −F0 sin(Omega t): |a_free| = F0 |sin Omega t| / (m R) exceeds mu g / R at
+  // t = asin(mu m g / F0) / Omega.
+  Model m = testing::one_pellet(0.05, 0.0, 0.0);
+  m.pellets[0].force = {0.5, 3.0, M_PI / 2};
+  const RunResult run = simulate(m, testing::recorded(m, 1.0));
+  ASSERT_FALSE(run.events.empty());
+  EXPECT_EQ(run.events[0].kind, EventKind::release);
+  const double expected = std::asin(m.mu() * m.pellets[0].m * m.g / 0.5) / 3.0;
+  EXPECT_NEAR(run.events[0].t, expected, 1e-10);
+  // The force first pulls toward negative angles: the pellet leaves that way.
+  ASSERT_GE(run.events.size(), 2u);
+  EXPECT_LT(run.events[1].phi, 0.0);
+}
+
+TEST(Stick, AStaticCoefficientAboveMuHoldsWhereMuAloneWouldNot) {
+  Model m = testing::one_pellet(0.05, 0.07, 0.0);  // outside the kinetic cone
+  m.mu_s = 0.08;                                   // tan(0.07) ≈ 0.0701 < 0.08
+  const RunResult run = simulate(m, testing::recorded(m, 1.0));
+  EXPECT_EQ(run.summary.final[0].state, PelletState::stuck);
+  EXPECT_DOUBLE_EQ(run.summary.final[0].phi, 0.07);
+}
+
+}  // namespace
+}  // namespace vibro
