@@ -1,0 +1,27 @@
+#!/usr/bin/env bash
+# Installs what vibro needs from Debian's packages (apt-get, as root or through sudo) and
+# builds it into build/. Usage: scripts/setup.sh [--test]  (--test adds what the tests need).
+set -euo pipefail
+cd "$(dirname "$0")/.."
+
+packages=(cmake g++ make pkg-config libeigen3-dev libosmesa6-dev libcairo2-dev libpng-dev
+          nlohmann-json3-dev libcpp-httplib-dev libgtest-dev fonts-dejavu-core)
+if [[ "${1:-}" == "--test" ]]; then
+  packages+=(libbenchmark-dev chromium nodejs npm curl jq)
+fi
+
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  [[ $(id -u) -ne 0 ]] && sudo="sudo"
+  echo "setup: installing ${missing[*]}"
+  $sudo apt-get update -q
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
+cmake --build build -j"$(nproc)" >> build.log 2>&1 || { tail -50 build.log; exit 1; }
+echo "setup: built build/vibro"
