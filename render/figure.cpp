@@ -1,0 +1,121 @@
+#include "render/figure.h"
+
+#include <cairo-svg.h>
+#include <cairo.h>
+
+#include <exception>
+
+#include "render/axes.h"
+#include "render/cairo_ptr.h"
+#include "render/cylinder_panel.h"
+#include "render/layout.h"
+#include "render/panel.h"
+#include "render/png.h"
+#include "render/track_window.h"
+
+namespace vibro {
+namespace {
+
+using render::CairoPtr;
+using render::SurfacePtr;
+
+// The run must hold the track of every pellet a panel draws.
+std::optional<FieldError> check_tracks(const FigureSpec& figure, const Model& model,
+                                       const RunResult& run) {
+  for (std::size_t i = 0; i < figure.plots.size(); ++i) {
+    const PlotSpec& plot = figure.plots[i];
+    for (int pellet : render::panel_pellets(plot, model.size())) {
+      if (render::find_track(run, pellet)) continue;
+      return FieldError{"plots[" + std::to_string(i) + "]." +
+                            (plot.kind == PlotKind::time ? "pellets" : "pellet"),
+                        "the run recorded no trajectory for pellet " + std::to_string(pellet) +
+                            "; ask for its branches"};
+    }
+  }
+  return std::nullopt;
+}
+
+std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, const Model& model,
+                                      const RunResult& run) {
+  cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+  cairo_paint(cr);
+  const render::Style style = render::style_for(figure.width, figure.height);
+  const auto layouts = render::figure_layout(figure);
+  for (std::size_t i = 0; i < layouts.size(); ++i) {
+    const render::PanelInput in{figure.plots[i], model, run, layouts[i], style};
+    switch (figure.plots[i].kind) {
+      case PlotKind::phase:
+        render::draw_phase_panel(cr, in);
+        break;
+      case PlotKind::time:
+        render::draw_time_panel(cr, in);
+        break;
+      case PlotKind::cylinder:
+        if (auto message = render::draw_cylinder_panel(cr, in))
+          return FieldError{"plots[" + std::to_string(i) + "].kind", *message};
+        break;
+    }
+  }
+  if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
+    return FieldError{"",
+                      std::string("drawing failed: ") + cairo_status_to_string(cairo_status(cr))};
+  return std::nullopt;
+}
+
+RenderResult failure(FieldError error) { return {{}, {}, std::move(error)}; }
+
+RenderResult render_png(const FigureSpec& figure, const Model& model, const RunResult& run) {
+  SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, figure.width, figure.height));
+  CairoPtr cr(cairo_create(surface.get()));
+  if (auto e = draw_figure(cr.get(), figure, model, run)) return failure(*e);
+  cairo_surface_flush(surface.get());
+  auto bytes =
+      render::encode_png_argb32(cairo_image_surface_get_data(surface.get()), figure.width,
+                                figure.height, cairo_image_surface_get_stride(surface.get()), true);
+  if (bytes.empty()) return failure({"", "PNG encoding failed"});
+  return {std::move(bytes), std::string(content_type(ImageFormat::png)), std::nullopt};
+}
+
+cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
+  auto* out = static_cast<std::vector<std::uint8_t>*>(closure);
+  out->insert(out->end(), data, data + length);
+  return CAIRO_STATUS_SUCCESS;
+}
+
+RenderResult render_svg(const FigureSpec& figure, const Model& model, const RunResult& run) {
+  std::vector<std::uint8_t> bytes;
+  SurfacePtr surface(
+      cairo_svg_surface_create_for_stream(append_bytes, &bytes, figure.width, figure.height));
+  // Pixels, not cairo's default points, so that the SVG shows at the size asked for.
+  cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
+  {
+    CairoPtr cr(cairo_create(surface.get()));
+    if (auto e = draw_figure(cr.get(), figure, model, run)) return failure(*e);
+  }
+  cairo_surface_finish(surface.get());
+  if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
+    return failure({"", std::string("SVG output failed: ") +
+                            cairo_status_to_string(cairo_surface_status(surface.get()))});
+  return {std::move(bytes), std::string(content_type(ImageFormat::svg)), std::nullopt};
+}
+
+}  // namespace
+
+std::string_view content_type(ImageFormat format) {
+  return format == ImageFormat::png ? "image/png" : "image/svg+xml";
+}
+
+RenderResult render_figure(const FigureSpec& figure, const Model& model, const RunResult& run,
+                           ImageFormat format) {
+  try {
+    if (auto e = validate_figure(figure, model, format)) return failure(*e);
+    if (auto e = check_tracks(figure, model, run)) return failure(*e);
+    return format == ImageFormat::png ? render_png(figure, model, run)
+                                      : render_svg(figure, model, run);
+  } catch (const std::exception& e) {
+    // Out of memory, mostly: an error value, never an exception across the module boundary.
+    return failure({"", std::string("rendering failed: ") + e.what()});
+  }
+}
+
+}  // namespace vibro

@@ -1,0 +1,56 @@
+// The public entry point of render/: a figure (one or more panels in a grid) drawn from a run,
+// as PNG or SVG bytes from the same drawing code.
+//
+// What the caller must provide:
+//  - a RunResult whose `tracks` hold every pellet a panel draws (phase and cylinder panels:
+//    `pellet`; time panels: `pellets`, or all of the model's pellets when that list is empty);
+//  - events in time order (impacts are marked from them).
+// Each panel draws the part of the run inside its [t_from, t_to] (s). Errors are values: nothing
+// throws out of these functions.
+#pragma once
+
+#include <cstdint>
+#include <optional>
+#include <string>
+#include <string_view>
+#include <vector>
+
+#include "core/model.h"
+#include "core/result.h"
+#include "core/validate.h"
+#include "render/plot_spec.h"
+
+namespace vibro {
+
+enum class ImageFormat { png, svg };
+
+inline constexpr int kMaxFigureSide = 8192;           // pixels, width and height each
+inline constexpr long kMaxFigurePixels = 40'000'000;  // width × height
+inline constexpr int kMinFigureSide = 64;             // smaller leaves no room for axes
+inline constexpr int kMaxPanels = 16;
+
+struct RenderResult {
+  std::vector<std::uint8_t> bytes;
+  std::string content_type;  // "image/png" or "image/svg+xml"
+  // The offending field as the scene JSON spells it ("width", "plots[1].pellet") and what was
+  // expected; FieldError is core's error type, so the server reports both kinds alike.
+  std::optional<FieldError> error;
+
+  bool ok() const { return !error; }
+};
+
+// Checks a figure against the model before any simulation: sizes, panel count, pellet indices,
+// time windows, overlay points, and 3-D panels (PNG only, and only in builds with 3-D).
+std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model& model,
+                                          ImageFormat format);
+
+// Validates, then draws every panel. Also an error: a pellet whose track the run did not record.
+RenderResult render_figure(const FigureSpec& figure, const Model& model, const RunResult& run,
+                           ImageFormat format);
+
+// Whether this build can draw 3-D (cylinder) panels.
+bool cylinder_panels_available();
+
+std::string_view content_type(ImageFormat format);
+
+}  // namespace vibro

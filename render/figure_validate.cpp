@@ -1,0 +1,81 @@
+// Checks of a figure request that can be made before any simulation.
+#include <cmath>
+
+#include "render/figure.h"
+
+namespace vibro {
+namespace {
+
+std::string plot_field(std::size_t i, const char* name) {
+  return "plots[" + std::to_string(i) + "]." + name;
+}
+
+std::optional<FieldError> check_pellet(const std::string& field, int pellet, int count) {
+  if (pellet >= 0 && pellet < count) return std::nullopt;
+  if (count == 0) return FieldError{field, "the model has no pellets"};
+  return FieldError{field, "must be a pellet index in 0.." + std::to_string(count - 1) + " (got " +
+                               std::to_string(pellet) + ")"};
+}
+
+std::optional<FieldError> check_plot(std::size_t i, const PlotSpec& plot, const Model& model,
+                                     ImageFormat format) {
+  if (plot.kind == PlotKind::time) {
+    if (plot.pellets.empty() && model.size() == 0)
+      return FieldError{plot_field(i, "pellets"), "the model has no pellets"};
+    for (std::size_t j = 0; j < plot.pellets.size(); ++j) {
+      const std::string field = plot_field(i, "pellets") + "[" + std::to_string(j) + "]";
+      if (auto e = check_pellet(field, plot.pellets[j], model.size())) return e;
+    }
+  } else if (auto e = check_pellet(plot_field(i, "pellet"), plot.pellet, model.size())) {
+    return e;
+  }
+  for (std::size_t j = 0; j < plot.branches.size(); ++j)
+    if (plot.branches[j] < 1)
+      return FieldError{plot_field(i, "branches") + "[" + std::to_string(j) + "]",
+                        "must be a branch number ≥ 1 (branches count from 1)"};
+  if (!std::isfinite(plot.t_from) || plot.t_from < 0.0)
+    return FieldError{plot_field(i, "t_from"), "must be a finite time ≥ 0 s"};
+  if (std::isnan(plot.t_to) || plot.t_to <= plot.t_from)
+    return FieldError{plot_field(i, "t_to"), "must be later than t_from"};
+  if (plot.first_integral_through && (!std::isfinite(plot.first_integral_through->phi) ||
+                                      !std::isfinite(plot.first_integral_through->dphi)))
+    return FieldError{plot_field(i, "first_integral_through"), "must be a finite (phi, dphi)"};
+  if (plot.kind == PlotKind::cylinder) {
+    if (format != ImageFormat::png)
+      return FieldError{plot_field(i, "kind"), "3-D panels render only to PNG"};
+    if (!cylinder_panels_available())
+      return FieldError{plot_field(i, "kind"), "3-D panels are not available in this build"};
+    const Camera& c = plot.camera;
+    if (!std::isfinite(c.azimuth_deg) || !std::isfinite(c.elevation_deg) ||
+        !std::isfinite(c.distance) || c.distance <= 0.0)
+      return FieldError{plot_field(i, "camera"),
+                        "needs finite angles (degrees) and a distance > 0"};
+  }
+  return std::nullopt;
+}
+
+std::optional<FieldError> check_side(const char* field, int side) {
+  if (side >= kMinFigureSide && side <= kMaxFigureSide) return std::nullopt;
+  return FieldError{field, "must be from " + std::to_string(kMinFigureSide) + " to " +
+                               std::to_string(kMaxFigureSide) + " pixels (got " +
+                               std::to_string(side) + ")"};
+}
+
+}  // namespace
+
+std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model& model,
+                                          ImageFormat format) {
+  if (auto e = check_side("width", figure.width)) return e;
+  if (auto e = check_side("height", figure.height)) return e;
+  if (static_cast<long>(figure.width) * figure.height > kMaxFigurePixels)
+    return FieldError{
+        "height", "width × height must be at most " + std::to_string(kMaxFigurePixels) + " pixels"};
+  if (figure.plots.empty()) return FieldError{"plots", "must list at least one plot"};
+  if (static_cast<int>(figure.plots.size()) > kMaxPanels)
+    return FieldError{"plots", "must list at most " + std::to_string(kMaxPanels) + " plots"};
+  for (std::size_t i = 0; i < figure.plots.size(); ++i)
+    if (auto e = check_plot(i, figure.plots[i], model, format)) return e;
+  return std::nullopt;
+}
+
+}  // namespace vibro

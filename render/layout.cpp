@@ -1,0 +1,72 @@
+#include "render/layout.h"
+
+#include <algorithm>
+#include <cmath>
+
+namespace vibro::render {
+namespace {
+
+// Margins in units of the style's scale: room for tick labels and the axis label on the left
+// and below, the title above, and the last x tick label's overhang on the right.
+constexpr double kLeft = 86.0, kRight = 24.0, kTop = 40.0, kBottom = 60.0, kStackGap = 14.0;
+constexpr double kTitleTop = 9.0;
+
+}  // namespace
+
+std::vector<Rect> grid_cells(int count, int width, int height) {
+  if (count <= 0) return {};
+  const bool wide = width >= height;
+  int columns = 1;
+  if (count == 2) {
+    columns = wide ? 2 : 1;
+  } else if (count <= 4 && count > 2) {
+    columns = 2;
+  } else if (count > 4) {
+    const int side = static_cast<int>(std::ceil(std::sqrt(static_cast<double>(count))));
+    columns = wide ? side : (count + side - 1) / side;
+  }
+  const int rows = (count + columns - 1) / columns;
+  const double w = static_cast<double>(width) / columns, h = static_cast<double>(height) / rows;
+  std::vector<Rect> cells;
+  for (int i = 0; i < count; ++i)
+    cells.push_back({std::floor((i % columns) * w), std::floor((i / columns) * h), std::floor(w),
+                     std::floor(h)});
+  return cells;
+}
+
+PanelLayout panel_layout(Rect cell, const Style& style, int stacked) {
+  PanelLayout layout{cell, {cell.x + 0.5 * cell.w, cell.y + style.px(kTitleTop)}, {}};
+  const double left = cell.x + style.px(kLeft), top = cell.y + style.px(kTop);
+  const double width = std::max(1.0, cell.w - style.px(kLeft + kRight));
+  const double height = std::max(1.0, cell.h - style.px(kTop + kBottom));
+  const int n = std::max(1, stacked);
+  const double gap = style.px(kStackGap);
+  const double each = std::max(1.0, (height - gap * (n - 1)) / n);
+  for (int i = 0; i < n; ++i)
+    layout.plots.push_back({std::round(left), std::round(top + i * (each + gap)), std::round(width),
+                            std::round(each)});
+  layout.title_anchor.x = layout.plots.front().x + 0.5 * layout.plots.front().w;
+  return layout;
+}
+
+std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
+  const Style style = style_for(figure.width, figure.height);
+  const auto cells = grid_cells(static_cast<int>(figure.plots.size()), figure.width, figure.height);
+  std::vector<PanelLayout> layouts;
+  for (std::size_t i = 0; i < cells.size(); ++i) {
+    const PlotSpec& plot = figure.plots[i];
+    if (plot.kind == PlotKind::cylinder) {
+      const Rect& c = cells[i];
+      const double top = style.px(kTop);
+      layouts.push_back({c,
+                         {c.x + 0.5 * c.w, c.y + style.px(kTitleTop)},
+                         {{c.x, c.y + top, c.w, std::max(1.0, c.h - top)}}});
+    } else {
+      const int stacked = plot.kind == PlotKind::time && plot.show_dphi ? 2 : 1;
+      layouts.push_back(panel_layout(cells[i], style, stacked));
+    }
+  }
+  return layouts;
+}
+
+}  // namespace vibro::render

@@ -1,0 +1,44 @@
+// A legend box in the corner of a plot area that hides the least of the data.
+#pragma once
+
+#include <cairo.h>
+
+#include <span>
+#include <string>
+#include <vector>
+
+#include "render/geometry.h"
+#include "render/markers.h"
+#include "render/style.h"
+
+namespace vibro::render {
+
+enum class Swatch { line, dashed_line, marker, area };
+
+struct LegendEntry {
+  std::string label;
+  Colour colour;
+  Swatch swatch = Swatch::line;
+  MarkerShape marker = MarkerShape::circle;
+  Colour edge{0.0, 0.0, 0.0, 0.0};  // marker outline; transparent: none
+};
+
+// What a legend should not hide: drawn curves (pixel polylines) and labels.
+struct Obstacles {
+  std::vector<std::vector<Point>> lines;
+  std::vector<Rect> boxes;
+};
+
+// Length of the polyline inside the rectangle, in pixels.
+double length_inside(const Rect& box, std::span<const Point> line);
+
+// The place in `area` where a box of `size` hides the least: no label if it can, then the
+// shortest length of curve. Corners are preferred (top right, top left, bottom right, bottom
+// left), then the middles of the edges, then the centre. Returns the box.
+Rect legend_box(Point size, const Rect& area, const Obstacles& avoid, double inset);
+
+// Draws the entries in the best corner of `area`; nothing when there are none.
+void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rect& area,
+                 const Obstacles& avoid, const Style& style);
+
+}  // namespace vibro::render

@@ -1,0 +1,40 @@
+// Limiter angles as guide lines: a limiter at θ acts at every θ + 2πn, so each copy inside the
+// visible range gets a line (vertical in a phase portrait, horizontal over time).
+#pragma once
+
+#include <cairo.h>
+
+#include <string>
+#include <vector>
+
+#include "core/model.h"
+#include "render/style.h"
+#include "render/transform.h"
+
+namespace vibro::render {
+
+struct LimiterLine {
+  double angle = 0.0;  // θ + 2πn, rad
+  int limiter = 0;     // index in the model
+  bool mobile = false;
+};
+
+std::vector<LimiterLine> limiter_lines(const Model& model, Range angles);
+
+// Labels, longest first, to try where space is short: "limiter 1 (mobile)", "limiter 1", "1".
+std::vector<std::string> limiter_label_choices(const LimiterLine& line);
+
+enum class Orientation { vertical, horizontal };
+
+// Strokes the lines across the plot area: solid for fixed limiters, dashed for mobile ones.
+void draw_limiter_lines(cairo_t* cr, const Transform& tr, const std::vector<LimiterLine>& lines,
+                        Orientation orientation, const Style& style);
+
+// Labels each line (beside the top of a vertical line, above or below the right end of a
+// horizontal one) with the longest choice that fits without crossing another line or label;
+// none when even the shortest does not. Returns the boxes of the labels drawn.
+std::vector<Rect> draw_limiter_labels(cairo_t* cr, const Transform& tr,
+                                      const std::vector<LimiterLine>& lines,
+                                      Orientation orientation, const Style& style);
+
+}  // namespace vibro::render

@@ -1,0 +1,30 @@
+// What every panel drawer gets: its spec, the model and run, where to draw, and the style.
+// The figure checks the spec against the model and the run before any drawer runs, so drawers
+// may assume valid pellet indices and recorded tracks.
+#pragma once
+
+#include <cairo.h>
+
+#include "core/model.h"
+#include "core/result.h"
+#include "render/layout.h"
+#include "render/plot_spec.h"
+#include "render/style.h"
+
+namespace vibro::render {
+
+struct PanelInput {
+  const PlotSpec& spec;
+  const Model& model;
+  const RunResult& run;
+  const PanelLayout& layout;
+  const Style& style;
+};
+
+// The (φ, φ̇) portrait of one pellet: numbered branches, impacts, limiters, optional overlays.
+void draw_phase_panel(cairo_t* cr, const PanelInput& in);
+
+// φ(t) of the listed pellets (and φ̇(t) below it when asked), limiter angles, event marks.
+void draw_time_panel(cairo_t* cr, const PanelInput& in);
+
+}  // namespace vibro::render

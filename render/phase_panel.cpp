@@ -1,0 +1,253 @@
+// The phase portrait (φ, φ̇) of one pellet, drawn in layers: grid, friction zones, guides,
+// first-integral overlay, branches, velocity jumps and impacts, labels, frame, legend.
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+#include <optional>
+
+#include "core/first_integral.h"
+#include "render/axes.h"
+#include "render/event_marks.h"
+#include "render/legend.h"
+#include "render/limiter_lines.h"
+#include "render/panel.h"
+#include "render/polyline.h"
+#include "render/text.h"
+#include "render/track_window.h"
+
+namespace vibro::render {
+namespace {
+
+struct VisibleBranch {
+  int index = 1;
+  std::vector<Point> data;    // (φ, φ̇) inside the window
+  std::vector<Point> pixels;  // thinned
+};
+
+// An impact seen in the portrait: φ̇ jumps from `before` to `after` at one φ.
+struct Jump {
+  Point before, after;
+  const EventMark* mark;
+};
+
+std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const PlotSpec& spec) {
+  std::vector<VisibleBranch> branches;
+  for (const Branch& b : track.branches) {
+    if (!branch_selected(spec, b.index)) continue;
+    const auto samples = clip_to_window(b.samples, spec.t_from, spec.t_to);
+    if (samples.empty()) continue;
+    VisibleBranch v{b.index, {}, {}};
+    v.data.reserve(samples.size());
+    for (const Sample& s : samples) v.data.push_back({s.phi, s.dphi});
+    branches.push_back(std::move(v));
+  }
+  return branches;
+}
+
+// Jumps between consecutive drawn branches that meet at one φ with different φ̇, both ends
+// inside the window. Branches that meet without a jump (reversals, sticks) are not impacts.
+std::vector<Jump> velocity_jumps(const PelletTrack& track, std::span<const Event> events,
+                                 const PlotSpec& spec) {
+  std::vector<Jump> jumps;
+  for (std::size_t i = 1; i < track.branches.size(); ++i) {
+    if (!branch_selected(spec, track.branches[i - 1].index) ||
+        !branch_selected(spec, track.branches[i].index))
+      continue;
+    const auto& prev = track.branches[i - 1].samples;
+    const auto& next = track.branches[i].samples;
+    if (prev.empty() || next.empty()) continue;
+    const Sample& e = prev.back();
+    const Sample& s = next.front();
+    if (!in_window(e.t, spec) || !in_window(s.t, spec)) continue;
+    const bool same_phi = std::abs(e.phi - s.phi) <= 1e-9 * (1.0 + std::abs(e.phi));
+    const bool jumped = std::abs(e.dphi - s.dphi) > 1e-9 * (1.0 + std::abs(e.dphi));
+    if (!same_phi || !jumped) continue;
+    const Event* event = find_impact(events, track.pellet, e.t);
+    const EventMark* mark = event_mark(event ? event->kind : EventKind::limiter);
+    jumps.push_back({{e.phi, e.dphi}, {s.phi, s.dphi}, mark});
+  }
+  return jumps;
+}
+
+// The first-integral curves through the point: the curve of direction s carries φ̇ of sign s
+// only, so a point with φ̇ ≠ 0 gets one curve and a point at rest both.
+std::vector<std::vector<Point>> first_integral_curves(const Model& model, PhasePoint through,
+                                                      Range phi, int samples) {
+  std::vector<std::vector<Point>> curves;
+  for (int s : {1, -1}) {
+    if (through.dphi * s < 0.0) continue;
+    const FirstIntegral fi(model, s, through.phi, through.dphi);
+    std::vector<Point> curve;
+    for (int i = 0; i <= samples; ++i) {
+      const double x = phi.lo + phi.span() * i / samples;
+      const double d2 = fi.dphi_squared(x);
+      if (d2 >= 0.0 && std::isfinite(d2)) {
+        curve.push_back({x, s * std::sqrt(d2)});
+      } else if (!curve.empty()) {
+        curves.push_back(std::move(curve));
+        curve.clear();
+      }
+    }
+    if (!curve.empty()) curves.push_back(std::move(curve));
+  }
+  return curves;
+}
+
+void draw_friction_zones(cairo_t* cr, const Transform& tr, double alpha0) {
+  const Range& x = tr.x_range();
+  const Rect& a = tr.area();
+  const long first = static_cast<long>(std::ceil((x.lo - alpha0) / kTwoPi));
+  const long last = static_cast<long>(std::floor((x.hi + alpha0) / kTwoPi));
+  for (long n = first; n <= last && n - first < 64; ++n) {
+    const double left = tr.px(n * kTwoPi - alpha0), right = tr.px(n * kTwoPi + alpha0);
+    cairo_rectangle(cr, left, a.y, std::max(right - left, 1.0), a.h);
+  }
+  set_colour(cr, kFrictionZone);
+  cairo_fill(cr);
+}
+
+Colour branch_colour(int index) {
+  return series_colour(static_cast<std::size_t>(std::max(0, index - 1)));
+}
+
+Colour darker(Colour c, double factor) { return {c.r * factor, c.g * factor, c.b * factor, c.a}; }
+
+// Numbers each branch long enough to carry a label, beside its middle (or a third of the way
+// along either end when the middle is taken), skipping labels that would collide. Returns the
+// boxes of the numbers drawn.
+std::vector<Rect> draw_branch_numbers(cairo_t* cr, const std::vector<VisibleBranch>& branches,
+                                      const Rect& area, const Style& style) {
+  set_font(cr, style.note_font());
+  std::vector<Rect> taken;
+  const double offset = style.px(9.0);
+  for (const VisibleBranch& b : branches) {
+    if (polyline_length(b.pixels) < style.px(40.0)) continue;
+    const std::string label = std::to_string(b.index);
+    for (double fraction : {0.5, 0.3, 0.7}) {
+      Point dir;
+      const Point p = point_along(b.pixels, fraction, &dir);
+      // Left of the direction of travel, then right.
+      std::optional<Rect> placed;
+      for (double side : {1.0, -1.0}) {
+        const Point at{p.x + side * dir.y * offset, p.y - side * dir.x * offset};
+        Rect box = text_box(cr, label, at, {HAlign::center, VAlign::middle});
+        const bool inside = box.x >= area.x && box.right() <= area.right() && box.y >= area.y &&
+                            box.bottom() <= area.bottom();
+        const bool free = std::none_of(taken.begin(), taken.end(),
+                                       [&](const Rect& r) { return r.overlaps(box); });
+        if (inside && free) {
+          draw_text_with_halo(cr, label, at, {HAlign::center, VAlign::middle},
+                              darker(branch_colour(b.index), 0.8), style.px(1.5));
+          placed = box;
+          break;
+        }
+      }
+      if (placed) {
+        taken.push_back(*placed);
+        break;
+      }
+    }
+  }
+  return taken;
+}
+
+std::string default_title(const PlotSpec& spec, double t_end) {
+  return "Phase portrait, pellet " + std::to_string(spec.pellet + 1) + window_suffix(spec, t_end);
+}
+
+}  // namespace
+
+void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
+  const PlotSpec& spec = in.spec;
+  const Style& style = in.style;
+  const Rect area = in.layout.plots.front();
+  const PelletTrack& track = *find_track(in.run, spec.pellet);
+  auto branches = visible_branches(track, spec);
+  const auto jumps = velocity_jumps(track, in.run.events, spec);
+
+  Range phi, dphi;
+  for (const VisibleBranch& b : branches)
+    for (const Point& p : b.data) phi.include(p.x), dphi.include(p.y);
+  dphi.include(0.0);
+  if (spec.first_integral_through)
+    phi.include(spec.first_integral_through->phi), dphi.include(spec.first_integral_through->dphi);
+  const Axis x = make_axis(padded(phi, 0.03), area.w, true, kPhiLabel);
+  const Axis y = make_axis(padded(dphi, 0.05), area.h, false, kDphiLabel);
+  const Transform tr(area, x.range, y.range);
+
+  draw_grid(cr, tr, x, y, style);
+  cairo_save(cr);
+  clip_to(cr, area);
+  std::vector<LegendEntry> legend;
+  Obstacles avoid;
+  if (spec.friction_zone && in.model.alpha0 > 0.0) {
+    draw_friction_zones(cr, tr, in.model.alpha0);
+    legend.push_back({"friction zone |\u03c6 \u2212 2\u03c0n| \u2264 \u03b1\u2080", kFrictionZone,
+                      Swatch::area});
+  }
+  draw_zero_line(cr, tr, style);
+  const auto limiters = limiter_lines(in.model, x.range);
+  draw_limiter_lines(cr, tr, limiters, Orientation::vertical, style);
+
+  if (spec.first_integral_through) {
+    const double dash[] = {style.px(5.0), style.px(3.0)};
+    cairo_set_dash(cr, dash, 2, 0.0);
+    set_colour(cr, kOverlay);
+    cairo_set_line_width(cr, style.thin_width());
+    const int samples = std::max(400, static_cast<int>(area.w));
+    for (const auto& curve :
+         first_integral_curves(in.model, *spec.first_integral_through, x.range, samples)) {
+      avoid.lines.push_back(to_thinned_pixels(tr, curve));
+      stroke_polyline(cr, avoid.lines.back());
+    }
+    cairo_set_dash(cr, nullptr, 0, 0.0);
+    legend.push_back({"first integral (unforced)", kOverlay, Swatch::dashed_line});
+  }
+
+  // Velocity jumps under the branches, thin and dashed: they are not motion.
+  const double jump_dash[] = {style.px(3.0), style.px(3.0)};
+  cairo_set_dash(cr, jump_dash, 2, 0.0);
+  for (const Jump& j : jumps) {
+    const Point a = tr.to_pixel(j.before.x, j.before.y), b = tr.to_pixel(j.after.x, j.after.y);
+    cairo_move_to(cr, a.x, a.y);
+    cairo_line_to(cr, b.x, b.y);
+  }
+  set_colour(cr, kGuide);
+  cairo_set_line_width(cr, style.thin_width());
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0.0);
+
+  cairo_set_line_width(cr, style.curve_width());
+  for (VisibleBranch& b : branches) {
+    b.pixels = to_thinned_pixels(tr, b.data);
+    set_colour(cr, branch_colour(b.index));
+    stroke_polyline(cr, b.pixels);
+    avoid.lines.push_back(b.pixels);
+  }
+
+  // Impact markers at the state just before each impact, one fill per kind of mark.
+  std::vector<const EventMark*> marks_shown;
+  for (EventKind kind : {EventKind::limiter, EventKind::collision, EventKind::chatter}) {
+    const EventMark* mark = event_mark(kind);
+    std::vector<Point> centres;
+    for (const Jump& j : jumps)
+      if (j.mark == mark) centres.push_back(tr.to_pixel(j.before.x, j.before.y));
+    if (centres.empty()) continue;
+    draw_event_marks(cr, centres, *mark, style);
+    marks_shown.push_back(mark);
+  }
+
+  avoid.boxes = draw_branch_numbers(cr, branches, area, style);
+  const auto limiter_boxes = draw_limiter_labels(cr, tr, limiters, Orientation::vertical, style);
+  avoid.boxes.insert(avoid.boxes.end(), limiter_boxes.begin(), limiter_boxes.end());
+  cairo_restore(cr);
+
+  draw_frame(cr, tr, x, y, style);
+  draw_title(cr, in.layout.title_anchor,
+             spec.title.empty() ? default_title(spec, in.run.stats.t_reached) : spec.title, style);
+  for (const EventMark* mark : marks_shown) legend.push_back(legend_entry(*mark));
+  // The trajectory is one series; anything else drawn makes the legend worth its space.
+  if (!legend.empty()) draw_legend(cr, legend, area, avoid, style);
+}
+
+}  // namespace vibro::render

@@ -1,0 +1,84 @@
+#include "render/text.h"
+
+namespace vibro::render {
+namespace {
+
+// Offset from the anchor to the start of the baseline.
+Point origin_offset(cairo_t* cr, const std::string& text, TextAlign align) {
+  cairo_text_extents_t te;
+  cairo_text_extents(cr, text.c_str(), &te);
+  cairo_font_extents_t fe;
+  cairo_font_extents(cr, &fe);
+  const double dx = align.h == HAlign::left     ? 0.0
+                    : align.h == HAlign::center ? -0.5 * te.x_advance
+                                                : -te.x_advance;
+  // Vertical placement from the font's ascent and descent, not the ink, so that labels of one
+  // row share a baseline whatever their letters.
+  double dy = 0.0;
+  switch (align.v) {
+    case VAlign::top:
+      dy = fe.ascent;
+      break;
+    case VAlign::middle:
+      dy = 0.5 * (fe.ascent - fe.descent);
+      break;
+    case VAlign::baseline:
+      dy = 0.0;
+      break;
+    case VAlign::bottom:
+      dy = -fe.descent;
+      break;
+  }
+  return {dx, dy};
+}
+
+}  // namespace
+
+void set_font(cairo_t* cr, double size_px) {
+  cairo_select_font_face(cr, kFontFamily, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
+  cairo_set_font_size(cr, size_px);
+}
+
+void set_colour(cairo_t* cr, Colour c) { cairo_set_source_rgba(cr, c.r, c.g, c.b, c.a); }
+
+Rect text_box(cairo_t* cr, const std::string& text, Point at, TextAlign align) {
+  cairo_text_extents_t te;
+  cairo_text_extents(cr, text.c_str(), &te);
+  cairo_font_extents_t fe;
+  cairo_font_extents(cr, &fe);
+  const Point o = origin_offset(cr, text, align);
+  const double baseline = at.y + o.y;
+  return {at.x + o.x, baseline - fe.ascent, te.x_advance, fe.ascent + fe.descent};
+}
+
+void draw_text(cairo_t* cr, const std::string& text, Point at, TextAlign align, Colour colour,
+               double angle) {
+  const Point o = origin_offset(cr, text, align);
+  set_colour(cr, colour);
+  if (angle == 0.0) {
+    cairo_move_to(cr, at.x + o.x, at.y + o.y);
+    cairo_show_text(cr, text.c_str());
+    return;
+  }
+  cairo_save(cr);
+  cairo_translate(cr, at.x, at.y);
+  cairo_rotate(cr, angle);
+  cairo_move_to(cr, o.x, o.y);
+  cairo_show_text(cr, text.c_str());
+  cairo_restore(cr);
+}
+
+void draw_text_with_halo(cairo_t* cr, const std::string& text, Point at, TextAlign align,
+                         Colour colour, double halo_px) {
+  const Point o = origin_offset(cr, text, align);
+  cairo_move_to(cr, at.x + o.x, at.y + o.y);
+  cairo_text_path(cr, text.c_str());
+  set_colour(cr, rgb(0xFFFFFF, 0.9));
+  cairo_set_line_width(cr, 2.0 * halo_px);
+  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
+  cairo_stroke_preserve(cr);
+  set_colour(cr, colour);
+  cairo_fill(cr);
+}
+
+}  // namespace vibro::render

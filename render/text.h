@@ -1,0 +1,39 @@
+// Text with the cairo "toy" API in DejaVu Sans (no pango): anchored placement and measuring.
+// In SVG, cairo writes each distinct glyph once as an outline and reuses it.
+#pragma once
+
+#include <cairo.h>
+
+#include <string>
+
+#include "render/geometry.h"
+#include "render/style.h"
+
+namespace vibro::render {
+
+enum class HAlign { left, center, right };
+enum class VAlign { top, middle, baseline, bottom };
+
+struct TextAlign {
+  HAlign h = HAlign::left;
+  VAlign v = VAlign::baseline;
+};
+
+void set_font(cairo_t* cr, double size_px);
+
+// The box the text occupies (font ascent to descent, advance width) when drawn at `at`.
+// Uses the current font.
+Rect text_box(cairo_t* cr, const std::string& text, Point at, TextAlign align);
+
+// Draws text anchored at `at` in the current font, rotated by `angle` radians about the anchor
+// (−π/2 reads bottom to top).
+void draw_text(cairo_t* cr, const std::string& text, Point at, TextAlign align, Colour colour,
+               double angle = 0.0);
+
+// Draws text over a white halo of `halo_px`, so that it stays readable over curves.
+void draw_text_with_halo(cairo_t* cr, const std::string& text, Point at, TextAlign align,
+                         Colour colour, double halo_px);
+
+void set_colour(cairo_t* cr, Colour c);
+
+}  // namespace vibro::render

@@ -1,0 +1,67 @@
+#include "render/thin.h"
+
+#include <cmath>
+#include <utility>
+
+namespace vibro::render {
+namespace {
+
+// Keeps a point only once it is farther than `radius` from the last kept one (and the last).
+std::vector<Point> radial_filter(std::span<const Point> points, double radius) {
+  std::vector<Point> kept;
+  kept.reserve(points.size());
+  const double r2 = radius * radius;
+  for (std::size_t i = 0; i < points.size(); ++i) {
+    const Point p = points[i];
+    if (!kept.empty() && i + 1 < points.size()) {
+      const double dx = p.x - kept.back().x, dy = p.y - kept.back().y;
+      if (dx * dx + dy * dy <= r2) continue;
+    }
+    kept.push_back(p);
+  }
+  return kept;
+}
+
+// Ramer–Douglas–Peucker with an explicit stack (no recursion depth limit on long branches).
+std::vector<Point> douglas_peucker(const std::vector<Point>& points, double tolerance) {
+  const std::size_t n = points.size();
+  if (n < 3) return points;
+  std::vector<bool> keep(n, false);
+  keep.front() = keep.back() = true;
+  std::vector<std::pair<std::size_t, std::size_t>> stack{{0, n - 1}};
+  while (!stack.empty()) {
+    const auto [first, last] = stack.back();
+    stack.pop_back();
+    double worst = -1.0;
+    std::size_t worst_index = first;
+    for (std::size_t i = first + 1; i < last; ++i) {
+      const double d = distance_to_segment(points[i], points[first], points[last]);
+      if (d > worst) worst = d, worst_index = i;
+    }
+    if (worst > tolerance) {
+      keep[worst_index] = true;
+      stack.push_back({first, worst_index});
+      stack.push_back({worst_index, last});
+    }
+  }
+  std::vector<Point> kept;
+  for (std::size_t i = 0; i < n; ++i)
+    if (keep[i]) kept.push_back(points[i]);
+  return kept;
+}
+
+}  // namespace
+
+double distance_to_segment(Point p, Point a, Point b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double length2 = dx * dx + dy * dy;
+  double t = length2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / length2 : 0.0;
+  t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+}
+
+std::vector<Point> thin_polyline(std::span<const Point> points, double tolerance_px) {
+  return douglas_peucker(radial_filter(points, 0.5 * tolerance_px), 0.5 * tolerance_px);
+}
+
+}  // namespace vibro::render

@@ -1,0 +1,108 @@
+// Bad requests are error values naming the field, never exceptions or images.
+#include <gtest/gtest.h>
+
+#include "render/figure.h"
+#include "synthetic_run.h"
+
+namespace vibro {
+namespace {
+
+class FigureErrors : public ::testing::Test {
+ protected:
+  std::string field_of(const FigureSpec& figure, ImageFormat format = ImageFormat::png) {
+    const RenderResult result = render_figure(figure, model, run, format);
+    EXPECT_FALSE(result.ok());
+    EXPECT_TRUE(result.bytes.empty());
+    if (result.ok()) return "";
+    EXPECT_FALSE(result.error->message.empty());
+    return result.error->field;
+  }
+
+  FigureSpec figure() {
+    FigureSpec f;
+    f.plots = {PlotSpec{}};
+    return f;
+  }
+
+  Model model = testing::synthetic_model();
+  RunResult run = testing::synthetic_run(model, 1.0);
+};
+
+TEST_F(FigureErrors, PelletOutOfRange) {
+  FigureSpec f = figure();
+  f.plots.push_back(PlotSpec{});
+  f.plots[1].pellet = 2;
+  EXPECT_EQ(field_of(f), "plots[1].pellet");
+  f.plots[1].pellet = -1;
+  EXPECT_EQ(field_of(f), "plots[1].pellet");
+  f.plots[1].kind = PlotKind::time;
+  f.plots[1].pellets = {0, 5};
+  EXPECT_EQ(field_of(f), "plots[1].pellets[1]");
+}
+
+TEST_F(FigureErrors, SizeZeroOrOverTheLimit) {
+  FigureSpec f = figure();
+  f.width = 0;
+  EXPECT_EQ(field_of(f), "width");
+  f.width = 1200;
+  f.height = kMaxFigureSide + 1;
+  EXPECT_EQ(field_of(f), "height");
+  f.width = 8000;
+  f.height = 8000;  // each side allowed, the area not
+  EXPECT_EQ(field_of(f), "height");
+}
+
+TEST_F(FigureErrors, SvgWithA3DPanel) {
+  FigureSpec f = figure();
+  f.plots.push_back(PlotSpec{});
+  f.plots[1].kind = PlotKind::cylinder;
+  EXPECT_EQ(field_of(f, ImageFormat::svg), "plots[1].kind");
+  const RenderResult result = render_figure(f, model, run, ImageFormat::svg);
+  EXPECT_NE(result.error->message.find("PNG"), std::string::npos);
+}
+
+TEST_F(FigureErrors, TrackNotRecorded) {
+  RunResult only_first = run;
+  only_first.tracks.resize(1);
+  FigureSpec f = figure();
+  f.plots[0].pellet = 1;
+  const RenderResult result = render_figure(f, model, only_first, ImageFormat::png);
+  ASSERT_FALSE(result.ok());
+  EXPECT_EQ(result.error->field, "plots[0].pellet");
+}
+
+TEST_F(FigureErrors, WindowsBranchesAndOverlays) {
+  FigureSpec f = figure();
+  f.plots[0].t_from = 2.0;
+  f.plots[0].t_to = 1.0;
+  EXPECT_EQ(field_of(f), "plots[0].t_to");
+  f = figure();
+  f.plots[0].t_from = -1.0;
+  EXPECT_EQ(field_of(f), "plots[0].t_from");
+  f = figure();
+  f.plots[0].branches = {1, 0};
+  EXPECT_EQ(field_of(f), "plots[0].branches[1]");
+  f = figure();
+  f.plots[0].first_integral_through = PhasePoint{0.0, std::numeric_limits<double>::quiet_NaN()};
+  EXPECT_EQ(field_of(f), "plots[0].first_integral_through");
+}
+
+TEST_F(FigureErrors, NoPlots) {
+  FigureSpec f = figure();
+  f.plots.clear();
+  EXPECT_EQ(field_of(f), "plots");
+  f.plots.assign(kMaxPanels + 1, PlotSpec{});
+  EXPECT_EQ(field_of(f), "plots");
+}
+
+TEST_F(FigureErrors, ValidateBeforeSimulating) {
+  FigureSpec f = figure();
+  f.plots[0].pellet = 7;
+  const auto error = validate_figure(f, model, ImageFormat::png);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->field, "plots[0].pellet");
+  EXPECT_FALSE(validate_figure(figure(), model, ImageFormat::svg));
+}
+
+}  // namespace
+}  // namespace vibro

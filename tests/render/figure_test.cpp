@@ -1,0 +1,213 @@
+// Whole figures: PNG decodes to the asked size with the curve inside its plot area only; SVG is
+// well formed and grows with the number of branches; time windows restrict what is drawn.
+#include "render/figure.h"
+
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/simulate.h"
+#include "core/validate.h"
+#include "paper_scene.h"
+#include "png_decode.h"
+#include "render/layout.h"
+#include "render/style.h"
+#include "svg_check.h"
+#include "synthetic_run.h"
+
+namespace vibro {
+namespace {
+
+constexpr std::uint32_t kBranch1 = 0x0072B2;  // series colour 0
+constexpr std::uint32_t kBranch2 = 0xD55E00;  // series colour 1
+
+std::uint32_t hex(render::Colour c) {
+  return (static_cast<std::uint32_t>(c.r * 255 + 0.5) << 16) |
+         (static_cast<std::uint32_t>(c.g * 255 + 0.5) << 8) |
+         static_cast<std::uint32_t>(c.b * 255 + 0.5);
+}
+
+FigureSpec one_plot(PlotSpec plot, int width = 1200, int height = 800) {
+  FigureSpec figure;
+  figure.plots = {std::move(plot)};
+  figure.width = width;
+  figure.height = height;
+  return figure;
+}
+
+PlotSpec time_plot(std::vector<int> pellets) {
+  PlotSpec plot;
+  plot.kind = PlotKind::time;
+  plot.pellets = std::move(pellets);
+  return plot;
+}
+
+struct ColourCount {
+  long inside = 0, outside = 0;
+};
+
+ColourCount count_colour(const testing::Decoded& image, std::uint32_t rgb,
+                         const render::Rect& area) {
+  ColourCount count;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = 0; x < image.width; ++x)
+      if (testing::near_colour(image.at(x, y), rgb, 6))
+        (area.contains({x + 0.5, y + 0.5}) ? count.inside : count.outside)++;
+  return count;
+}
+
+class FigureTest : public ::testing::Test {
+ protected:
+  Model model = testing::synthetic_model();
+  RunResult run = testing::synthetic_run(model, 6.0);
+};
+
+TEST(SeriesColours, AreTheOnesTheTestsLookFor) {
+  EXPECT_EQ(hex(render::series_colour(0)), kBranch1);
+  EXPECT_EQ(hex(render::series_colour(1)), kBranch2);
+}
+
+TEST_F(FigureTest, SyntheticRunHasBranchesAndImpacts) {
+  EXPECT_GE(run.tracks[0].branches.size(), 5u);
+  int limiter = 0, collision = 0;
+  for (const Event& e : run.events)
+    limiter += e.kind == EventKind::limiter, collision += e.kind == EventKind::collision;
+  EXPECT_GE(limiter, 2);
+  EXPECT_GE(collision, 1);
+}
+
+TEST_F(FigureTest, PhasePngHasTheAskedSizeAndTheCurveOnlyInsideThePlotArea) {
+  const FigureSpec figure = one_plot(PlotSpec{}, 900, 640);
+  const RenderResult result = render_figure(figure, model, run, ImageFormat::png);
+  ASSERT_TRUE(result.ok()) << result.error->message;
+  EXPECT_EQ(result.content_type, "image/png");
+  const auto image = testing::decode_png(result.bytes);
+  ASSERT_EQ(image.width, 900);
+  ASSERT_EQ(image.height, 640);
+  const render::Rect area = render::figure_layout(figure)[0].plots[0];
+  const ColourCount c = count_colour(image, kBranch1, area);
+  EXPECT_GT(c.inside, 100);
+  EXPECT_EQ(c.outside, 0);
+  // White margins around the plot area: the top-left corner of the figure is background.
+  EXPECT_EQ(image.at(2, 2), 0xFFFFFFFFu);
+}
+
+TEST_F(FigureTest, TimePanelDrawsEachPelletInItsColourInsideItsArea) {
+  const FigureSpec figure = one_plot(time_plot({0, 1}));
+  const RenderResult result = render_figure(figure, model, run, ImageFormat::png);
+  ASSERT_TRUE(result.ok()) << result.error->message;
+  const auto image = testing::decode_png(result.bytes);
+  const render::Rect area = render::figure_layout(figure)[0].plots[0];
+  for (std::uint32_t colour : {kBranch1, kBranch2}) {
+    const ColourCount c = count_colour(image, colour, area);
+    EXPECT_GT(c.inside, 100);
+    EXPECT_EQ(c.outside, 0);
+  }
+}
+
+TEST_F(FigureTest, TwoPanelsShareTheImageSideBySide) {
+  FigureSpec figure = one_plot(PlotSpec{});
+  figure.plots.push_back(time_plot({0}));
+  figure.plots[1].show_dphi = true;
+  const RenderResult result = render_figure(figure, model, run, ImageFormat::png);
+  ASSERT_TRUE(result.ok()) << result.error->message;
+  const auto image = testing::decode_png(result.bytes);
+  const auto layouts = render::figure_layout(figure);
+  EXPECT_GT(count_colour(image, kBranch1, layouts[0].plots[0]).inside, 50);
+  EXPECT_GT(count_colour(image, kBranch1, layouts[1].plots[0]).inside, 50);
+  EXPECT_GT(count_colour(image, kBranch1, layouts[1].plots[1]).inside, 50);
+}
+
+TEST_F(FigureTest, TimeWindowRestrictsWhatIsDrawn) {
+  // The first branch of pellet 1 ends at its first event: a window before it shows branch 1 only.
+  const double first_event = run.tracks[0].branches[0].samples.back().t;
+  PlotSpec early;
+  early.t_to = 0.8 * first_event;
+  const auto image =
+      testing::decode_png(render_figure(one_plot(early), model, run, ImageFormat::png).bytes);
+  const render::Rect area = render::figure_layout(one_plot(early))[0].plots[0];
+  EXPECT_GT(count_colour(image, kBranch1, area).inside, 50);
+  EXPECT_EQ(count_colour(image, kBranch2, area).inside, 0);
+
+  const auto full =
+      testing::decode_png(render_figure(one_plot(PlotSpec{}), model, run, ImageFormat::png).bytes);
+  EXPECT_GT(count_colour(full, kBranch2, area).inside, 50);
+}
+
+TEST_F(FigureTest, BranchSelectionDrawsOnlyTheListedBranches) {
+  PlotSpec plot;
+  plot.branches = {2};
+  const FigureSpec figure = one_plot(plot);
+  const auto image = testing::decode_png(render_figure(figure, model, run, ImageFormat::png).bytes);
+  const render::Rect area = render::figure_layout(figure)[0].plots[0];
+  EXPECT_EQ(count_colour(image, kBranch1, area).inside, 0);
+  EXPECT_GT(count_colour(image, kBranch2, area).inside, 50);
+}
+
+// Stroked paths (curves, guides) as opposed to glyph outlines, which cairo fills.
+int stroked_paths(const std::string& svg) { return testing::count_of(svg, "fill:none;"); }
+
+TEST_F(FigureTest, SvgIsWellFormedAndGrowsWithTheBranches) {
+  const RenderResult result = render_figure(one_plot(PlotSpec{}), model, run, ImageFormat::svg);
+  ASSERT_TRUE(result.ok()) << result.error->message;
+  EXPECT_EQ(result.content_type, "image/svg+xml");
+  const std::string svg(result.bytes.begin(), result.bytes.end());
+  EXPECT_EQ(testing::xml_balance_error(svg), "");
+  EXPECT_NE(svg.find("<svg"), std::string::npos);
+  EXPECT_NE(svg.find("width=\"1200px\""), std::string::npos);
+
+  int previous = 0;
+  for (int count : {1, 3, 6}) {
+    PlotSpec plot;
+    for (int b = 1; b <= count; ++b) plot.branches.push_back(b);
+    const auto bytes = render_figure(one_plot(plot), model, run, ImageFormat::svg).bytes;
+    const std::string text(bytes.begin(), bytes.end());
+    const int paths = stroked_paths(text);
+    EXPECT_GT(paths, previous) << count << " branches";
+    previous = paths;
+  }
+}
+
+TEST(RealRun, PaperSceneRendersToPngAndCompactSvg) {
+  const Model model = testing::paper_model();
+  ASSERT_FALSE(validate_model(model));
+  const RunResult run = simulate(model, testing::paper_options());
+  ASSERT_FALSE(run.tracks.empty());
+  FigureSpec figure = one_plot(PlotSpec{});
+  figure.plots.push_back(time_plot({0, 1}));
+  const RenderResult png = render_figure(figure, model, run, ImageFormat::png);
+  ASSERT_TRUE(png.ok()) << png.error->message;
+  const auto image = testing::decode_png(png.bytes);
+  EXPECT_EQ(image.width, 1200);
+  EXPECT_GT(count_colour(image, kBranch1, render::figure_layout(figure)[0].plots[0]).inside, 20);
+
+  const RenderResult svg = render_figure(one_plot(PlotSpec{}), model, run, ImageFormat::svg);
+  ASSERT_TRUE(svg.ok()) << svg.error->message;
+  EXPECT_LT(svg.bytes.size(), 300u * 1024u);
+  EXPECT_EQ(testing::xml_balance_error(std::string(svg.bytes.begin(), svg.bytes.end())), "");
+}
+
+TEST(RealRun, CylinderPanelCompositesIntoPng) {
+  if (!cylinder_panels_available()) GTEST_SKIP() << "built without render/gl";
+  const Model model = testing::synthetic_model();
+  const RunResult run = testing::synthetic_run(model, 3.0);
+  PlotSpec plot;
+  plot.kind = PlotKind::cylinder;
+  const FigureSpec figure = one_plot(plot, 600, 500);
+  const RenderResult result = render_figure(figure, model, run, ImageFormat::png);
+  if (!result.ok()) {
+    // Only OSMesa missing at run time may fail, and it must name the panel.
+    EXPECT_EQ(result.error->field, "plots[0].kind");
+    GTEST_SKIP() << result.error->message;
+  }
+  const auto image = testing::decode_png(result.bytes);
+  ASSERT_EQ(image.width, 600);
+  const render::Rect area = render::figure_layout(figure)[0].plots[0];
+  long coloured = 0;
+  for (int y = static_cast<int>(area.y); y < area.bottom(); ++y)
+    for (int x = 0; x < image.width; ++x) coloured += (image.at(x, y) & 0xFFFFFFu) != 0xFFFFFFu;
+  EXPECT_GT(coloured, 1000);
+}
+
+}  // namespace
+}  // namespace vibro
