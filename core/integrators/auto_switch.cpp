@@ -1,0 +1,64 @@
+#include "core/integrators/auto_switch.h"
+
+namespace vibro::integrators {
+
+AutoSwitch::AutoSwitch(const StepperOptions& options) : explicit_(options), implicit_(options) {}
+
+const Stepper& AutoSwitch::active() const {
+  return stiff_ ? static_cast<const Stepper&>(implicit_) : explicit_;
+}
+
+Stepper& AutoSwitch::active() { return stiff_ ? static_cast<Stepper&>(implicit_) : explicit_; }
+
+void AutoSwitch::start(const OdeSystem& sys, double t0, const Vec& y0) {
+  sys_ = &sys;
+  // Both methods get their work arrays now, so that a switch does not allocate.
+  explicit_.reserve(static_cast<int>(y0.size()));
+  implicit_.reserve(static_cast<int>(y0.size()));
+  if (switch_pending_) {
+    stiff_ = !stiff_;
+    switch_pending_ = false;
+    non_stiff_steps_ = 0;
+    ++switches_;
+  }
+  active().start(sys, t0, y0);
+}
+
+void AutoSwitch::switch_method() {
+  if (stiff_) {
+    explicit_.resume(*sys_, implicit_.t(), implicit_.y(), implicit_.step_size());
+  } else {
+    implicit_.resume(*sys_, explicit_.t(), explicit_.y(), explicit_.step_size());
+  }
+  stiff_ = !stiff_;
+  switch_pending_ = false;
+  non_stiff_steps_ = 0;
+  ++switches_;
+}
+
+StepStatus AutoSwitch::step(double t_limit) {
+  if (switch_pending_) switch_method();
+  const StepStatus status = active().step(t_limit);
+  if (status != StepStatus::ok) return status;
+  if (!stiff_) {
+    switch_pending_ = explicit_.stiffness_detected();
+  } else {
+    non_stiff_steps_ = implicit_.stiffness_ratio() <= kNonStiffBound ? non_stiff_steps_ + 1 : 0;
+    switch_pending_ = non_stiff_steps_ >= kNonStiffSteps;
+  }
+  return status;
+}
+
+const StepperStats& AutoSwitch::stats() const {
+  const StepperStats& a = explicit_.stats();
+  const StepperStats& b = implicit_.stats();
+  stats_.steps = a.steps + b.steps;
+  stats_.rejected = a.rejected + b.rejected;
+  stats_.rhs_evals = a.rhs_evals + b.rhs_evals;
+  stats_.jac_evals = a.jac_evals + b.jac_evals;
+  stats_.lu_decomps = a.lu_decomps + b.lu_decomps;
+  stats_.stiff_switches = switches_;
+  return stats_;
+}
+
+}  // namespace vibro::integrators

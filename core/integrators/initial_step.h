@@ -1,0 +1,16 @@
+// Hairer's initial step-size guess HINIT (DOPRI5, DOP853).
+#pragma once
+
+#include "core/integrators/error_norm.h"
+#include "core/ode.h"
+
+namespace vibro::integrators {
+
+// A first step h with h^order · max(‖f0‖, ‖y''‖) ≈ 0.01 in the tolerance-weighted norm, y'' being
+// estimated from one explicit Euler step. Evaluates f once (the caller counts it); y1 and f1 are
+// work space of the system's dimension. The result is at most h_max, and positive and finite
+// whenever f0 is finite.
+double initial_step(const OdeSystem& sys, double t0, const Vec& y0, const Vec& f0, int order,
+                    double h_max, const Tolerance& tol, Vec& y1, Vec& f1);
+
+}  // namespace vibro::integrators

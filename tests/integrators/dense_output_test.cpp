@@ -1,0 +1,106 @@
+// Dense output: accuracy inside the steps, agreement with the step ends, and its order.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <string>
+
+#include "core/stepper.h"
+#include "tests/integrators/test_problems.h"
+
+namespace vibro::testing {
+namespace {
+
+// Largest error of dense output at 9 interior points of every step of a run to t_end.
+template <class Problem>
+double max_dense_error(Stepper& s, double t_end) {
+  const Problem sys;
+  s.start(sys, 0.0, Problem::initial());
+  double worst = 0.0;
+  Vec out(sys.dimension());
+  const RunResult run = run_to(s, t_end, 1'000'000, [&](const Stepper& st) {
+    for (int j = 1; j <= 9; ++j) {
+      const double t = st.t_prev() + (st.t() - st.t_prev()) * j / 10.0;
+      st.dense(t, out);
+      worst = std::max(worst, (out - Problem::exact(t)).cwiseAbs().maxCoeff());
+    }
+  });
+  EXPECT_EQ(run.status, StepStatus::ok);
+  return worst;
+}
+
+class IntegratorsDense : public ::testing::TestWithParam<Method> {};
+
+TEST_P(IntegratorsDense, InterpolantIsAsAccurateAsTheTolerance) {
+  for (double rtol : {1e-6, 1e-9}) {
+    StepperOptions o;
+    o.rtol = rtol;
+    o.atol = rtol;
+    auto s = make_stepper(GetParam(), o);
+    const double e_osc = max_dense_error<Oscillator>(*s, 10.0);
+    const double e_gauss = max_dense_error<Gaussian>(*s, 3.0);
+    SCOPED_TRACE("rtol " + std::to_string(rtol));
+    // Within two orders of magnitude of rtol, like the solution at the step points (DOP853 at
+    // loose tolerances and RADAU5's stage-order-3 interpolant are the worst).
+    EXPECT_LT(e_osc, 100.0 * rtol);
+    EXPECT_LT(e_gauss, 100.0 * rtol);
+    EXPECT_GT(s->stats().steps, 20);  // the interpolant was really used inside steps
+  }
+}
+
+TEST_P(IntegratorsDense, InterpolantMeetsTheStepEnds) {
+  const Oscillator sys;
+  StepperOptions o;
+  o.rtol = 1e-7;
+  auto s = make_stepper(GetParam(), o);
+  s->start(sys, 0.0, Oscillator::initial());
+  Vec prev = Oscillator::initial();
+  Vec out(2);
+  run_to(*s, 5.0, 1'000'000, [&](const Stepper& st) {
+    st.dense(st.t_prev(), out);
+    EXPECT_LT((out - prev).norm(), 1e-13);
+    st.dense(st.t(), out);
+    EXPECT_LT((out - st.y()).norm(), 1e-13);
+    prev = st.y();
+  });
+}
+
+INSTANTIATE_TEST_SUITE_P(AllMethods, IntegratorsDense, ::testing::ValuesIn(all_methods()),
+                         [](const auto& info) {
+                           const std::string_view n = method_name(info.param);
+                           return std::string(n);
+                         });
+
+// With fixed steps the midpoint error of the interpolant falls like h^q: q = 5 for DOPRI5's
+// 4th-order dense output, 8 for DOP853's 7th-order one, and 4 for RADAU5's collocation
+// polynomial (stage order 3).
+double midpoint_error(Method method, double h) {
+  const Oscillator sys;
+  auto s = make_stepper(method, fixed_step(h));
+  s->start(sys, 0.0, Oscillator::initial());
+  double worst = 0.0;
+  Vec out(2);
+  run_to(*s, 4.0, 1'000'000, [&](const Stepper& st) {
+    const double t = 0.5 * (st.t_prev() + st.t());
+    st.dense(t, out);
+    worst = std::max(worst, (out - Oscillator::exact(t)).norm());
+  });
+  return worst;
+}
+
+TEST(IntegratorsDenseOrder, InterpolantsHaveTheirDesignOrder) {
+  const struct {
+    Method method;
+    double h;
+    double order;
+  } cases[] = {{Method::dopri5, 0.2, 5.0}, {Method::dop853, 0.8, 8.0}, {Method::radau5, 0.2, 4.0}};
+  for (const auto& c : cases) {
+    const double e1 = midpoint_error(c.method, c.h);
+    const double e2 = midpoint_error(c.method, c.h / 2);
+    SCOPED_TRACE(std::string(method_name(c.method)));
+    EXPECT_NEAR(std::log2(e1 / e2), c.order, 0.6);
+  }
+}
+
+}  // namespace
+}  // namespace vibro::testing
