@@ -53,14 +53,15 @@ struct FinalState {
 };
 
 struct LastImpact {
-  int index = 0;     // 1-based count of impacts (limiter impacts, chatter and collisions); 0: none
+  int index = 0;  // 1-based count of impacts (limiter, collision, chatter as one); 0: none
   double t = 0.0;
 };
 
 struct Summary {
-  int limiter_impacts = 0;  // listed impacts plus those summed by chatter events
+  int limiter_impacts = 0;    // listed limiter impacts
   int collisions = 0;
-  std::vector<std::vector<int>> impacts_by_limiter;  // [limiter][pellet]
+  int chatter_sequences = 0;  // chatter events, each summing infinitely many impacts
+  std::vector<std::vector<int>> impacts_by_limiter;  // [limiter][pellet], listed impacts
   LastImpact last_impact;
   std::vector<FinalState> final;
 };

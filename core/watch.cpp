@@ -1,13 +1,16 @@
 #include "core/watch.h"
 
 #include <cmath>
+#include <limits>
 
 #include "core/dynamics.h"
 
 namespace vibro {
 
-double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
-                const Vec& y) {
+namespace {
+
+double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+                 const Vec& y) {
   switch (w.kind) {
     case WatchKind::reversal:
       return bodies[w.body].s * y[dphi_index(w.pellet)];
@@ -37,6 +40,24 @@ double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bod
   return 1.0;
 }
 
+}  // namespace
+
+double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+                const Vec& y) {
+  const double g = raw_value(w, model, bodies, t, y);
+  if (!w.deflated) return g;
+  return t > w.t0 ? (g - w.g0) / (t - w.t0) : w.rate0;
+}
+
+void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, double t0,
+             const Vec& y0, double rate) {
+  w.deflated = false;
+  w.g0 = raw_value(w, model, bodies, t0, y0);
+  w.t0 = t0;
+  w.rate0 = rate;
+  w.deflated = true;
+}
+
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,
                   double phi, int s, int& limiter, double& target) {
   bool found = false;
@@ -46,13 +67,15 @@ bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body
     for (int i : body.members) acts = acts || model.limiters[l].acts_on(i);
     if (!acts) continue;
     const double theta = model.limiters[l].angle;
-    double n = std::floor((phi - theta) / kTwoPi);
-    double x = theta + kTwoPi * (s > 0 ? n + 1.0 : n);
-    // Strictly ahead: after round-off, step one more turn if needed.
-    if (s > 0 && x <= phi) x += kTwoPi;
-    if (s < 0 && x >= phi) x -= kTwoPi;
-    if (s > 0 && x - kTwoPi > phi) x -= kTwoPi;
-    if (s < 0 && x + kTwoPi < phi) x += kTwoPi;
+    // Candidates theta + 2πk near phi, each computed the same way as the angle an impact snaps
+    // to, so a pellet that sits on the limiter never finds it again a hair ahead.
+    const double n = std::floor((phi - theta) / kTwoPi);
+    double x = s > 0 ? std::numeric_limits<double>::infinity()
+                     : -std::numeric_limits<double>::infinity();
+    for (double k = n - 1.0; k <= n + 2.0; k += 1.0) {
+      const double c = theta + kTwoPi * k;
+      if (s > 0 ? (c > phi && c < x) : (c < phi && c > x)) x = c;
+    }
     if (!found || (s > 0 ? x < target : x > target)) {
       found = true;
       limiter = l;

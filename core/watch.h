@@ -27,10 +27,18 @@ struct Watch {
   int limiter = -1;    // limiter: the limiter hit
   double target = 0.0; // limiter: angle to reach; gap: the constant winding offset
   int split = 0;       // separation: members [0, split) behind, [split, n) ahead
+  // A watch that starts on its own root (two pellets that just collided touch): it is watched
+  // as (g(t) − g(t0)) / (t − t0), which starts at g'(t0) > 0 when they separate, so a quick
+  // return within one step is still found.
+  bool deflated = false;
+  double t0 = 0.0, g0 = 0.0, rate0 = 0.0;
 };
 
 double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                 const Vec& y);
+// Makes w watch its deflated form from (t0, y0); `rate` is dg/dt there.
+void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, double t0,
+             const Vec& y0, double rate);
 
 // The next armed limiter angle strictly ahead of phi in direction s that acts on any of the
 // body's members; returns false if there is none.

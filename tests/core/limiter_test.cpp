@@ -66,7 +66,7 @@ TEST(Limiter, LimiterActingOnOnePelletLetsTheOtherPass) {
   m.pellets[1].phi0 = -0.2;
   m.pellets[1].dphi0 = 0.0;
   m.limiters = {{0.5, 1.0, false, -1, {1}}};  // acts on pellet 1 only
-  const RunResult run = simulate(m, testing::recorded(m, 0.3));
+  const RunResult run = simulate(m, testing::recorded(m, 1.0));
   for (const Event* e : testing::events_of(run, EventKind::limiter)) EXPECT_EQ(e->pellets[0], 1);
   bool passed = false;
   for (const Event* e : testing::events_of(run, EventKind::reversal))
