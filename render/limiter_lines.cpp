@@ -94,7 +94,7 @@ std::vector<Rect> draw_limiter_labels(cairo_t* cr, const Transform& tr,
       for (const auto& [at, align] : spots) {
         const Rect box = text_box(cr, label, at, align);
         if (!free(box, line)) continue;
-        draw_text_with_halo(cr, label, at, align, kMutedInk, style.px(2.0));
+        draw_text_on_backdrop(cr, label, at, align, kMutedInk, style.px(2.0));
         placed.push_back(box);
         done = true;
         break;

@@ -136,8 +136,8 @@ std::vector<Rect> draw_branch_numbers(cairo_t* cr, const std::vector<VisibleBran
         const bool free = std::none_of(taken.begin(), taken.end(),
                                        [&](const Rect& r) { return r.overlaps(box); });
         if (inside && free) {
-          draw_text_with_halo(cr, label, at, {HAlign::center, VAlign::middle},
-                              darker(branch_colour(b.index), 0.8), style.px(1.5));
+          draw_text_on_backdrop(cr, label, at, {HAlign::center, VAlign::middle},
+                                darker(branch_colour(b.index), 0.8), style.px(1.5));
           placed = box;
           break;
         }

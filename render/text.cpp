@@ -68,17 +68,13 @@ void draw_text(cairo_t* cr, const std::string& text, Point at, TextAlign align, 
   cairo_restore(cr);
 }
 
-void draw_text_with_halo(cairo_t* cr, const std::string& text, Point at, TextAlign align,
-                         Colour colour, double halo_px) {
-  const Point o = origin_offset(cr, text, align);
-  cairo_move_to(cr, at.x + o.x, at.y + o.y);
-  cairo_text_path(cr, text.c_str());
-  set_colour(cr, rgb(0xFFFFFF, 0.9));
-  cairo_set_line_width(cr, 2.0 * halo_px);
-  cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
-  cairo_stroke_preserve(cr);
-  set_colour(cr, colour);
+void draw_text_on_backdrop(cairo_t* cr, const std::string& text, Point at, TextAlign align,
+                           Colour colour, double pad_px) {
+  const Rect box = text_box(cr, text, at, align);
+  cairo_rectangle(cr, box.x - pad_px, box.y, box.w + 2.0 * pad_px, box.h);
+  set_colour(cr, rgb(0xFFFFFF, 0.8));
   cairo_fill(cr);
+  draw_text(cr, text, at, align, colour);
 }
 
 }  // namespace vibro::render

@@ -30,9 +30,11 @@ Rect text_box(cairo_t* cr, const std::string& text, Point at, TextAlign align);
 void draw_text(cairo_t* cr, const std::string& text, Point at, TextAlign align, Colour colour,
                double angle = 0.0);
 
-// Draws text over a white halo of `halo_px`, so that it stays readable over curves.
-void draw_text_with_halo(cairo_t* cr, const std::string& text, Point at, TextAlign align,
-                         Colour colour, double halo_px);
+// Draws text over a translucent white box `pad_px` larger than it, so that it stays readable
+// over grid and guide lines. A box, not an outline halo: in SVG the text then stays a reference
+// to a shared glyph, where an outlined halo would write every glyph's outline twice.
+void draw_text_on_backdrop(cairo_t* cr, const std::string& text, Point at, TextAlign align,
+                           Colour colour, double pad_px);
 
 void set_colour(cairo_t* cr, Colour c);
 
