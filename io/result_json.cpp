@@ -75,7 +75,12 @@ std::string answer_sentence(const RunResult& run, const Model& model) {
   } else {
     s << "The system stops being vibro-impact after impact " << last.index << " at t = " << last.t
       << " s (" << run.summary.limiter_impacts << " limiter impacts, " << run.summary.collisions
-      << " collisions).";
+      << " collisions";
+    if (run.summary.chatter_sequences > 0) {
+      s << ", " << run.summary.chatter_sequences << " chatter sequence"
+        << (run.summary.chatter_sequences > 1 ? "s" : "") << " summed to rest";
+    }
+    s << ").";
   }
   for (std::size_t i = 0; i < run.summary.final.size(); ++i) {
     const FinalState& f = run.summary.final[i];
@@ -115,6 +120,7 @@ json result_to_json(const RunResult& run, const Model& model) {
   const Summary& sm = run.summary;
   json summary = {{"limiter_impacts", sm.limiter_impacts},
                   {"collisions", sm.collisions},
+                  {"chatter_sequences", sm.chatter_sequences},
                   {"impacts_by_limiter", sm.impacts_by_limiter},
                   {"final", finals},
                   {"answer", answer_sentence(run, model)}};
