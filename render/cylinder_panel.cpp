@@ -4,7 +4,6 @@
 
 #ifdef VIBRO_HAVE_RENDER3D
 #include <algorithm>
-#include <cmath>
 
 #include "render/axes.h"
 #include "render/gl/cylinder_view.h"

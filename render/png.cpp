@@ -51,14 +51,19 @@ struct SurfacePixels {
   const std::uint8_t* data;
   int width;
   int stride;
+
+  // The native-endian 0xAARRGGBB word at (x, y).
+  std::uint32_t at(int x, int y) const {
+    std::uint32_t word;
+    std::memcpy(&word, data + static_cast<std::size_t>(y) * stride + 4 * x, 4);
+    return word;
+  }
 };
 
 void fill_rgb(const void* source, int y, std::uint8_t* row) {
   const auto& s = *static_cast<const SurfacePixels*>(source);
-  const std::uint8_t* line = s.data + static_cast<std::size_t>(y) * s.stride;
   for (int x = 0; x < s.width; ++x) {
-    std::uint32_t word;
-    std::memcpy(&word, line + 4 * x, 4);
+    const std::uint32_t word = s.at(x, y);
     row[3 * x + 0] = static_cast<std::uint8_t>(word >> 16);
     row[3 * x + 1] = static_cast<std::uint8_t>(word >> 8);
     row[3 * x + 2] = static_cast<std::uint8_t>(word);
@@ -67,10 +72,8 @@ void fill_rgb(const void* source, int y, std::uint8_t* row) {
 
 void fill_unpremultiplied(const void* source, int y, std::uint8_t* row) {
   const auto& s = *static_cast<const SurfacePixels*>(source);
-  const std::uint8_t* line = s.data + static_cast<std::size_t>(y) * s.stride;
   for (int x = 0; x < s.width; ++x) {
-    std::uint32_t word;
-    std::memcpy(&word, line + 4 * x, 4);
+    const std::uint32_t word = s.at(x, y);
     const unsigned a = word >> 24;
     const auto channel = [a](unsigned c) {
       return static_cast<std::uint8_t>(a == 0 ? 0 : (c * 255 + a / 2) / a);

@@ -1,7 +1,6 @@
 // φ(t) of the listed pellets, one colour per pellet, with φ̇(t) in a second plot below sharing
 // the time axis when asked (a jump in φ̇ at every impact would tangle a shared y axis).
 #include <algorithm>
-#include <cmath>
 
 #include "render/axes.h"
 #include "render/event_marks.h"
@@ -86,7 +85,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   dphi.include(0.0);
   const std::vector<Rect>& plots = in.layout.plots;
   const bool stacked = plots.size() > 1;
-  Axis x = make_axis(t.empty() ? Range{0.0, 1.0} : t, plots.front().w, false, kTimeLabel);
+  const Axis x = make_axis(t.empty() ? Range{0.0, 1.0} : t, plots.front().w, false, kTimeLabel);
 
   // Upper (or only) plot: φ(t). A bottom strip is left free for the event marks.
   const Rect& top = plots.front();
