@@ -37,9 +37,7 @@ class ExplicitRk final : public Stepper {
     const double guess =
         initial_step(sys, t0, y_, f_, Scheme::kOrder, options_.h_max, tol_, ytry_, ftry_);
     ++stats_.rhs_evals;
-    // The previous segment's step is a good hint after an event, but the new right-hand side
-    // may be much faster: HINIT's guess bounds it.
-    h_ = h_ > 0.0 ? std::min(h_, guess) : guess;
+    h_ = first_step(h_, guess);
   }
 
   // Continues at (t0, y0) with the first step h0, without HINIT: the hand-over from another
@@ -58,7 +56,11 @@ class ExplicitRk final : public Stepper {
     scheme_.resize(n);
   }
 
-  StepStatus step(double t_limit) override;
+  StepStatus step(double t_limit) override {
+    const StepStatus status = advance(t_limit);
+    if (status != StepStatus::ok) h_ = 0.0;  // a failure's step size is no hint for a restart
+    return status;
+  }
 
   double t_prev() const override { return t_prev_; }
   double t() const override { return t_; }
@@ -89,6 +91,8 @@ class ExplicitRk final : public Stepper {
   double step_size() const { return h_; }
 
  private:
+  StepStatus advance(double t_limit);
+
   void begin(const OdeSystem& sys, double t0, const Vec& y0) {
     reserve(static_cast<int>(y0.size()));
     sys_ = &sys;
@@ -114,7 +118,7 @@ class ExplicitRk final : public Stepper {
   int n_ = -1;
   double t_ = 0.0;
   double t_prev_ = 0.0;
-  double h_ = 0.0;  // next step to try; 0 before the first start()
+  double h_ = 0.0;  // next step to try; 0 before the first start() and after a failure
   bool reject_ = false;
   bool f_finite_ = true;
   Vec y_, f_;        // accepted point and f there
@@ -123,7 +127,7 @@ class ExplicitRk final : public Stepper {
 };
 
 template <class Scheme>
-StepStatus ExplicitRk<Scheme>::step(double t_limit) {
+StepStatus ExplicitRk<Scheme>::advance(double t_limit) {
   if (!f_finite_) return StepStatus::non_finite;
   for (;;) {
     if (step_underflows(h_, t_)) return StepStatus::step_underflow;
@@ -144,7 +148,7 @@ StepStatus ExplicitRk<Scheme>::step(double t_limit) {
     double h_new = std::min(control_.accepted(h, err), options_.h_max);
     if (reject_) h_new = std::min(h_new, h);  // Hairer: no growth right after a rejection
     // A step shortened to fit t_limit says little about the step size: keep the proposal.
-    if (h < h_) h_new = std::max(h_new, std::min(h_, options_.h_max));
+    if (fit.shortened) h_new = std::max(h_new, std::min(h_, options_.h_max));
 
     const double t_new = fit.lands ? t_limit : t_ + h;
     scheme_.complete(*sys_, t_new, ytry_, ftry_);

@@ -1,6 +1,8 @@
 // Hairer's initial step-size guess HINIT (DOPRI5, DOP853).
 #pragma once
 
+#include <algorithm>
+
 #include "core/integrators/error_norm.h"
 #include "core/ode.h"
 
@@ -12,5 +14,11 @@ namespace vibro::integrators {
 // whenever f0 is finite.
 double initial_step(const OdeSystem& sys, double t0, const Vec& y0, const Vec& f0, int order,
                     double h_max, const Tolerance& tol, Vec& y1, Vec& f1);
+
+// The first step after start(): the previous segment's proposal (0: none) is a good hint after an
+// event, but the new right-hand side may be much faster, so HINIT's guess bounds it.
+inline double first_step(double previous, double guess) {
+  return previous > 0.0 ? std::min(previous, guess) : guess;
+}
 
 }  // namespace vibro::integrators

@@ -9,7 +9,7 @@ namespace vibro::integrators {
 class PiController {
  public:
   struct Params {
-    double expo;  // exponent of the error: 1/order - beta·(something), as in DOPRI5/DOP853
+    double expo;  // exponent of the error: 0.2 − 0.75·beta (DOPRI5), 1/8 − 0.2·beta (DOP853)
     double beta;  // Lund stabilisation exponent of the previous error
     double fac1;  // smallest ratio h_new/h
     double fac2;  // largest ratio h_new/h

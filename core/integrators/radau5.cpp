@@ -121,7 +121,7 @@ void Radau5::start(const OdeSystem& sys, double t0, const Vec& y0) {
   begin(sys, t0, y0);
   const double guess = initial_step(sys, t0, y_, f_, 5, options_.h_max, tol_, tmp_, ftmp_);
   ++stats_.rhs_evals;
-  h_ = h_ > 0.0 ? std::min(h_, guess) : guess;
+  h_ = first_step(h_, guess);
 }
 
 void Radau5::resume(const OdeSystem& sys, double t0, const Vec& y0, double h0) {
@@ -312,6 +312,12 @@ void Radau5::accept(double h, double t_new) {
 }
 
 StepStatus Radau5::step(double t_limit) {
+  const StepStatus status = advance(t_limit);
+  if (status != StepStatus::ok) h_ = 0.0;  // a failure's step size is no hint for a restart
+  return status;
+}
+
+StepStatus Radau5::advance(double t_limit) {
   if (!f_valid_) {
     sys_->rhs(t_, y_, f_);
     ++stats_.rhs_evals;
@@ -395,7 +401,8 @@ StepStatus Radau5::step(double t_limit) {
 
     h_new = std::min(h_new, options_.h_max);
     if (reject_) h_new = std::min(h_new, h);
-    if (h < h_) h_new = std::max(h_new, std::min(h_, options_.h_max));  // shortened to fit
+    // A step shortened to fit t_limit says little about the step size: keep the proposal.
+    if (fit.shortened) h_new = std::max(h_new, std::min(h_, options_.h_max));
     reject_ = false;
     // A small change of h is not worth a new factorisation while Newton converges well.
     const double qt = h_new / h;

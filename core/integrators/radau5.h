@@ -45,6 +45,7 @@ class Radau5 final : public Stepper {
 
   enum class Newton { converged, slow, diverged, non_finite };
 
+  StepStatus advance(double t_limit);
   void begin(const OdeSystem& sys, double t0, const Vec& y0);
   void update_scale();
   bool decompose(double h);
@@ -59,11 +60,11 @@ class Radau5 final : public Stepper {
 
   const OdeSystem* sys_ = nullptr;
   int n_ = -1;
-  mutable StepperStats stats_;
+  StepperStats stats_;
 
   double t_ = 0.0;
   double t_prev_ = 0.0;
-  double h_ = 0.0;      // next step to try; 0 before the first start()
+  double h_ = 0.0;      // next step to try; 0 before the first start() and after a failure
   double h_old_ = 0.0;  // last accepted step (extrapolation of the starting values)
   double h_lu_ = 0.0;   // step size of the current factorisations; 0: none
   double h_acc_ = 0.0;  // Gustafsson's memory: last accepted step and its error

@@ -9,8 +9,9 @@
 namespace vibro::integrators {
 
 struct StepFit {
-  double h;    // the step to attempt
-  bool lands;  // the step ends exactly at t_limit
+  double h;        // the step to attempt
+  bool lands;      // the step ends exactly at t_limit
+  bool shortened;  // h is below the proposal (and h_max) only to fit t_limit
 };
 
 // Fits the proposed step h into [t, t_limit] and h_max. Like DOPRI5 the step is stretched by up to
@@ -19,9 +20,9 @@ struct StepFit {
 inline StepFit fit_step(double h, double t, double t_limit, double h_max) {
   h = std::min(h, h_max);
   const double rest = t_limit - t;
-  if (rest <= h || (rest <= 1.01 * h && rest <= h_max)) return {rest, true};
-  if (rest < 2.0 * h) return {0.5 * rest, false};
-  return {h, false};
+  if (rest <= h || (rest <= 1.01 * h && rest <= h_max)) return {rest, true, rest < h};
+  if (rest < 2.0 * h) return {0.5 * rest, false, true};
+  return {h, false, false};
 }
 
 // The step h cannot move t by more than round-off (DOPRI5: 0.1·|h| <= |x|·uround).

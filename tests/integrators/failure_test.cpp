@@ -63,6 +63,25 @@ TEST_P(IntegratorsFailure, BlowUpEndsInUnderflowOrNonFinite) {
   EXPECT_TRUE(std::isfinite(s->y()[0]));
 }
 
+TEST_P(IntegratorsFailure, RestartAfterAFailureIsNotStuckWithATinyStep) {
+  const BlowUp blow_up;
+  const Oscillator sys;
+  StepperOptions o;
+  o.rtol = 1e-8;
+  auto s = make_stepper(GetParam(), o);
+  s->start(blow_up, 0.0, Vec::Ones(1));
+  ASSERT_NE(run_to(*s, 2.0, 100'000).status, StepStatus::ok);
+  s->start(sys, 0.0, Oscillator::initial());
+  ASSERT_EQ(s->step(10.0), StepStatus::ok);
+  // The first step is HINIT's guess, as for a fresh stepper, not the blow-up's last step size.
+  auto fresh = make_stepper(GetParam(), o);
+  fresh->start(sys, 0.0, Oscillator::initial());
+  ASSERT_EQ(fresh->step(10.0), StepStatus::ok);
+  EXPECT_EQ(s->t(), fresh->t());
+  ASSERT_EQ(run_to(*s, 10.0).status, StepStatus::ok);
+  EXPECT_LT((s->y() - Oscillator::exact(10.0)).norm(), 1e-6);
+}
+
 TEST_P(IntegratorsFailure, StepsLandExactlyOnTLimitAndRespectHMax) {
   const Oscillator sys;
   StepperOptions o;

@@ -6,6 +6,7 @@
 #include "core/integrators/dop853.h"
 #include "core/integrators/dopri5.h"
 #include "core/integrators/radau5.h"
+#include "core/integrators/stiffness.h"
 #include "core/stepper.h"
 #include "tests/integrators/test_problems.h"
 
@@ -73,6 +74,21 @@ void expect_stiffness_detected() {
 TEST(IntegratorsStiff, ExplicitMethodsDetectStiffness) {
   expect_stiffness_detected<Dopri5>();
   expect_stiffness_detected<Dop853>();
+}
+
+// The query the simulator uses through a plain Stepper&.
+TEST(IntegratorsStiff, StiffnessQueryThroughTheInterface) {
+  const VanDerPol stiff(1e-6);
+  const Oscillator calm;
+  for (Method m : all_methods()) {
+    auto s = make_stepper(m, tolerances(1e-6, 1e-6));
+    s->start(calm, 0.0, Oscillator::initial());
+    ASSERT_EQ(run_to(*s, 10.0).status, StepStatus::ok);
+    EXPECT_FALSE(integrators::stiffness_detected(*s)) << method_name(m);
+    s->start(stiff, 0.0, VanDerPol::initial());
+    ASSERT_EQ(run_to(*s, 0.3, 2000).status, StepStatus::ok);
+    EXPECT_TRUE(integrators::stiffness_detected(*s)) << method_name(m);
+  }
 }
 
 TEST(IntegratorsStiff, ExplicitMethodsDoNotFlagNonStiffProblems) {
