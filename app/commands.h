@@ -29,5 +29,6 @@ std::optional<Scene> load_scene(const Args& args, std::size_t& next);
 int simulate_command(const Args& args);
 int presets_command(const Args& args);
 int preset_command(const Args& args);
+int render_command(const Args& args);
 
 }  // namespace vibro

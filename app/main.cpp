@@ -10,6 +10,8 @@ const std::vector<Command>& commands() {
       {"simulate", "vibro simulate SCENE.json | - | --preset NAME [--t-end S] [--method M] "
                    "[--rtol X] [--atol X] [--trajectories]",
        simulate_command},
+      {"render", "vibro render SCENE.json | - | --preset NAME -o OUT.png|OUT.svg [overrides]",
+       render_command},
       {"presets", "vibro presets", presets_command},
       {"preset", "vibro preset NAME", preset_command},
   };

@@ -195,10 +195,10 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
     if (auto w = f.integer("width")) s.figure.width = static_cast<int>(*w);
     if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
     f.done();
-    if (s.figure.width < 16 || s.figure.width > limits.max_width)
-      throw FieldException("width", "must be in [16, " + std::to_string(limits.max_width) + "] px");
-    if (s.figure.height < 16 || s.figure.height > limits.max_height)
-      throw FieldException("height", "must be in [16, " + std::to_string(limits.max_height) + "] px");
+    if (s.figure.width < 64 || s.figure.width > limits.max_width)
+      throw FieldException("width", "must be in [64, " + std::to_string(limits.max_width) + "] px");
+    if (s.figure.height < 64 || s.figure.height > limits.max_height)
+      throw FieldException("height", "must be in [64, " + std::to_string(limits.max_height) + "] px");
     if (auto e = validate_model(s.model, limits.sim)) return *e;
     if (auto e = validate_options(s.sim, s.model.size(), limits.sim)) return *e;
     return s;

@@ -1,0 +1,60 @@
+// `vibro render SCENE -o OUT.png|OUT.svg`: simulate what the scene's plots need and draw them.
+#include <fstream>
+#include <iostream>
+#include <nlohmann/json.hpp>
+
+#include "app/commands.h"
+#include "core/simulate.h"
+#include "io/result_json.h"
+#include "render/figure.h"
+#include "render/run_plan.h"
+
+namespace vibro {
+
+int render_command(const Args& args) {
+  std::size_t next = 0;
+  auto scene = load_scene(args, next);
+  if (!scene) return 2;
+  std::string out;
+  for (; next < args.size(); ++next) {
+    if ((args[next] == "-o" || args[next] == "--output") && next + 1 < args.size()) {
+      out = args[++next];
+    } else {
+      std::cerr << nlohmann::json{{"error", "is not an option of `vibro render`"}, {"field", args[next]}}.dump() << "\n";
+      return 2;
+    }
+  }
+  const bool svg = out.size() > 4 && out.ends_with(".svg");
+  if (out.empty() || (!svg && !out.ends_with(".png"))) {
+    std::cerr << nlohmann::json{{"error", "name the image with -o OUT.png or -o OUT.svg"}, {"field", "-o"}}.dump() << "\n";
+    return 2;
+  }
+  const ImageFormat format = svg ? ImageFormat::svg : ImageFormat::png;
+  if (auto e = validate_figure(scene->figure, scene->model, format)) {
+    std::cerr << nlohmann::json{{"error", e->message}, {"field", e->field}}.dump() << "\n";
+    return 2;
+  }
+  const RunPlan plan = plan_run(scene->figure, scene->sim, scene->model.size());
+  const RunResult run = simulate(scene->model, plan.options);
+  const RenderResult image = render_figure(scene->figure, scene->model, run, format);
+  if (!image.ok()) {
+    std::cerr << nlohmann::json{{"error", image.error->message}, {"field", image.error->field}}.dump() << "\n";
+    return 1;
+  }
+  std::ofstream file(out, std::ios::binary);
+  file.write(reinterpret_cast<const char*>(image.bytes.data()), static_cast<std::streamsize>(image.bytes.size()));
+  if (!file) {
+    std::cerr << nlohmann::json{{"error", "cannot write the file"}, {"field", out}}.dump() << "\n";
+    return 1;
+  }
+  nlohmann::json j = result_to_json(run, scene->model);
+  std::cout << nlohmann::json{{"image", out},
+                              {"bytes", image.bytes.size()},
+                              {"answer", j["summary"]["answer"]},
+                              {"stats", j["stats"]}}
+                   .dump(2)
+            << "\n";
+  return 0;
+}
+
+}  // namespace vibro

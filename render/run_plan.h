@@ -1,0 +1,19 @@
+// What a figure needs from a run, so a scene computes only what its plots draw: branches kept
+// only for the pellets drawn, and the simulation stopped at the end of the latest window drawn.
+#pragma once
+
+#include <vector>
+
+#include "core/sim_options.h"
+#include "render/plot_spec.h"
+
+namespace vibro {
+
+struct RunPlan {
+  SimOptions options;  // the base options with record flags, record_until and t_end set
+  bool needs_3d = false;
+};
+
+RunPlan plan_run(const FigureSpec& figure, const SimOptions& base, int pellets);
+
+}  // namespace vibro
