@@ -3,6 +3,7 @@
 #include <cmath>
 
 #include "core/integrators/dop853_coefficients.h"
+#include "core/integrators/rk_sum.h"
 
 namespace vibro::integrators {
 
@@ -16,59 +17,43 @@ void Dop853Scheme::resize(int n) {
   }
   yt_.resize(n);
   y12_.resize(n);
-  for (Vec& r : r_) r.resize(n);
+  dense_.resize(n);
 }
 
 double Dop853Scheme::attempt(const OdeSystem& sys, double t, const Vec& y, const Vec& k1, double h,
                              const Tolerance& tol, Vec& y1, Vec&) {
-  const Eigen::Index n = y.size();
   Vec &k2 = k_[2], &k3 = k_[3], &k4 = k_[4], &k5 = k_[5], &k6 = k_[6], &k7 = k_[7], &k8 = k_[8],
       &k9 = k_[9], &k10 = k_[10], &k11 = k_[11], &k12 = k_[12];
-  for (Eigen::Index i = 0; i < n; ++i) yt_[i] = y[i] + h * a21 * k1[i];
+  rk_sum(yt_, y, h, Term{a21, k1});
   sys.rhs(t + c2 * h, yt_, k2);
-  for (Eigen::Index i = 0; i < n; ++i) yt_[i] = y[i] + h * (a31 * k1[i] + a32 * k2[i]);
+  rk_sum(yt_, y, h, Term{a31, k1}, Term{a32, k2});
   sys.rhs(t + c3 * h, yt_, k3);
-  for (Eigen::Index i = 0; i < n; ++i) yt_[i] = y[i] + h * (a41 * k1[i] + a43 * k3[i]);
+  rk_sum(yt_, y, h, Term{a41, k1}, Term{a43, k3});
   sys.rhs(t + c4 * h, yt_, k4);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y[i] + h * (a51 * k1[i] + a53 * k3[i] + a54 * k4[i]);
-  }
+  rk_sum(yt_, y, h, Term{a51, k1}, Term{a53, k3}, Term{a54, k4});
   sys.rhs(t + c5 * h, yt_, k5);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y[i] + h * (a61 * k1[i] + a64 * k4[i] + a65 * k5[i]);
-  }
+  rk_sum(yt_, y, h, Term{a61, k1}, Term{a64, k4}, Term{a65, k5});
   sys.rhs(t + c6 * h, yt_, k6);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y[i] + h * (a71 * k1[i] + a74 * k4[i] + a75 * k5[i] + a76 * k6[i]);
-  }
+  rk_sum(yt_, y, h, Term{a71, k1}, Term{a74, k4}, Term{a75, k5}, Term{a76, k6});
   sys.rhs(t + c7 * h, yt_, k7);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y[i] + h * (a81 * k1[i] + a84 * k4[i] + a85 * k5[i] + a86 * k6[i] + a87 * k7[i]);
-  }
+  rk_sum(yt_, y, h, Term{a81, k1}, Term{a84, k4}, Term{a85, k5}, Term{a86, k6}, Term{a87, k7});
   sys.rhs(t + c8 * h, yt_, k8);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y[i] + h * (a91 * k1[i] + a94 * k4[i] + a95 * k5[i] + a96 * k6[i] + a97 * k7[i] +
-                         a98 * k8[i]);
-  }
+  rk_sum(yt_, y, h, Term{a91, k1}, Term{a94, k4}, Term{a95, k5}, Term{a96, k6}, Term{a97, k7},
+         Term{a98, k8});
   sys.rhs(t + c9 * h, yt_, k9);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y[i] + h * (a101 * k1[i] + a104 * k4[i] + a105 * k5[i] + a106 * k6[i] + a107 * k7[i] +
-                         a108 * k8[i] + a109 * k9[i]);
-  }
+  rk_sum(yt_, y, h, Term{a101, k1}, Term{a104, k4}, Term{a105, k5}, Term{a106, k6}, Term{a107, k7},
+         Term{a108, k8}, Term{a109, k9});
   sys.rhs(t + c10 * h, yt_, k10);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y[i] + h * (a111 * k1[i] + a114 * k4[i] + a115 * k5[i] + a116 * k6[i] + a117 * k7[i] +
-                         a118 * k8[i] + a119 * k9[i] + a1110 * k10[i]);
-  }
+  rk_sum(yt_, y, h, Term{a111, k1}, Term{a114, k4}, Term{a115, k5}, Term{a116, k6}, Term{a117, k7},
+         Term{a118, k8}, Term{a119, k9}, Term{a1110, k10});
   sys.rhs(t + c11 * h, yt_, k11);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    y12_[i] = y[i] + h * (a121 * k1[i] + a124 * k4[i] + a125 * k5[i] + a126 * k6[i] + a127 * k7[i] +
-                          a128 * k8[i] + a129 * k9[i] + a1210 * k10[i] + a1211 * k11[i]);
-  }
+  rk_sum(y12_, y, h, Term{a121, k1}, Term{a124, k4}, Term{a125, k5}, Term{a126, k6}, Term{a127, k7},
+         Term{a128, k8}, Term{a129, k9}, Term{a1210, k10}, Term{a1211, k11});
   sys.rhs(t + h, y12_, k12);
 
   // DOP853's error: the 5th-order estimate err5, damped by the 3rd-order one err3 where that is
   // much larger, err = h·err5² / sqrt(n·(err5² + 0.01·err3²)) in the weighted norm.
+  const Eigen::Index n = y.size();
   double err3 = 0.0;
   double err5 = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
@@ -90,56 +75,33 @@ double Dop853Scheme::attempt(const OdeSystem& sys, double t, const Vec& y, const
 
 void Dop853Scheme::prepare_dense(const OdeSystem& sys, double t0, const Vec& y0, const Vec& k1,
                                  double h, const Vec& y1, const Vec& k13) {
-  const Eigen::Index n = y0.size();
   const Vec &k6 = k_[6], &k7 = k_[7], &k8 = k_[8], &k9 = k_[9], &k10 = k_[10], &k11 = k_[11],
             &k12 = k_[12];
   Vec &k14 = k_[14], &k15 = k_[15], &k16 = k_[16];
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y0[i] + h * (a141 * k1[i] + a147 * k7[i] + a148 * k8[i] + a149 * k9[i] +
-                          a1410 * k10[i] + a1411 * k11[i] + a1412 * k12[i] + a1413 * k13[i]);
-  }
+  // The three extra stages of the 7th-order interpolant.
+  rk_sum(yt_, y0, h, Term{a141, k1}, Term{a147, k7}, Term{a148, k8}, Term{a149, k9},
+         Term{a1410, k10}, Term{a1411, k11}, Term{a1412, k12}, Term{a1413, k13});
   sys.rhs(t0 + c14 * h, yt_, k14);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y0[i] + h * (a151 * k1[i] + a156 * k6[i] + a157 * k7[i] + a158 * k8[i] +
-                          a1511 * k11[i] + a1512 * k12[i] + a1513 * k13[i] + a1514 * k14[i]);
-  }
+  rk_sum(yt_, y0, h, Term{a151, k1}, Term{a156, k6}, Term{a157, k7}, Term{a158, k8},
+         Term{a1511, k11}, Term{a1512, k12}, Term{a1513, k13}, Term{a1514, k14});
   sys.rhs(t0 + c15 * h, yt_, k15);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y0[i] + h * (a161 * k1[i] + a166 * k6[i] + a167 * k7[i] + a168 * k8[i] + a169 * k9[i] +
-                          a1613 * k13[i] + a1614 * k14[i] + a1615 * k15[i]);
-  }
+  rk_sum(yt_, y0, h, Term{a161, k1}, Term{a166, k6}, Term{a167, k7}, Term{a168, k8}, Term{a169, k9},
+         Term{a1613, k13}, Term{a1614, k14}, Term{a1615, k15});
   sys.rhs(t0 + c16 * h, yt_, k16);
 
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double ydiff = y1[i] - y0[i];
-    const double bspl = h * k1[i] - ydiff;
-    r_[0][i] = y0[i];
-    r_[1][i] = ydiff;
-    r_[2][i] = bspl;
-    r_[3][i] = ydiff - h * k13[i] - bspl;
-    r_[4][i] = h * (d41 * k1[i] + d46 * k6[i] + d47 * k7[i] + d48 * k8[i] + d49 * k9[i] +
-                    d410 * k10[i] + d411 * k11[i] + d412 * k12[i] + d413 * k13[i] + d414 * k14[i] +
-                    d415 * k15[i] + d416 * k16[i]);
-    r_[5][i] = h * (d51 * k1[i] + d56 * k6[i] + d57 * k7[i] + d58 * k8[i] + d59 * k9[i] +
-                    d510 * k10[i] + d511 * k11[i] + d512 * k12[i] + d513 * k13[i] + d514 * k14[i] +
-                    d515 * k15[i] + d516 * k16[i]);
-    r_[6][i] = h * (d61 * k1[i] + d66 * k6[i] + d67 * k7[i] + d68 * k8[i] + d69 * k9[i] +
-                    d610 * k10[i] + d611 * k11[i] + d612 * k12[i] + d613 * k13[i] + d614 * k14[i] +
-                    d615 * k15[i] + d616 * k16[i]);
-    r_[7][i] = h * (d71 * k1[i] + d76 * k6[i] + d77 * k7[i] + d78 * k8[i] + d79 * k9[i] +
-                    d710 * k10[i] + d711 * k11[i] + d712 * k12[i] + d713 * k13[i] + d714 * k14[i] +
-                    d715 * k15[i] + d716 * k16[i]);
-  }
-}
-
-void Dop853Scheme::dense(double theta, Vec& out) const {
-  const double s = theta;
-  const double s1 = 1.0 - theta;
-  const Eigen::Index n = r_[0].size();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double conp = r_[4][i] + s * (r_[5][i] + s1 * (r_[6][i] + s * r_[7][i]));
-    out[i] = r_[0][i] + s * (r_[1][i] + s1 * (r_[2][i] + s * (r_[3][i] + s1 * conp)));
-  }
+  dense_.set_ends(y0, y1, k1, k13, h);
+  rk_sum(dense_.correction(0), h, Term{d41, k1}, Term{d46, k6}, Term{d47, k7}, Term{d48, k8},
+         Term{d49, k9}, Term{d410, k10}, Term{d411, k11}, Term{d412, k12}, Term{d413, k13},
+         Term{d414, k14}, Term{d415, k15}, Term{d416, k16});
+  rk_sum(dense_.correction(1), h, Term{d51, k1}, Term{d56, k6}, Term{d57, k7}, Term{d58, k8},
+         Term{d59, k9}, Term{d510, k10}, Term{d511, k11}, Term{d512, k12}, Term{d513, k13},
+         Term{d514, k14}, Term{d515, k15}, Term{d516, k16});
+  rk_sum(dense_.correction(2), h, Term{d61, k1}, Term{d66, k6}, Term{d67, k7}, Term{d68, k8},
+         Term{d69, k9}, Term{d610, k10}, Term{d611, k11}, Term{d612, k12}, Term{d613, k13},
+         Term{d614, k14}, Term{d615, k15}, Term{d616, k16});
+  rk_sum(dense_.correction(3), h, Term{d71, k1}, Term{d76, k6}, Term{d77, k7}, Term{d78, k8},
+         Term{d79, k9}, Term{d710, k10}, Term{d711, k11}, Term{d712, k12}, Term{d713, k13},
+         Term{d714, k14}, Term{d715, k15}, Term{d716, k16});
 }
 
 }  // namespace vibro::integrators

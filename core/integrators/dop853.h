@@ -7,6 +7,7 @@
 
 #include "core/integrators/error_norm.h"
 #include "core/integrators/explicit_rk.h"
+#include "core/integrators/hermite_dense.h"
 #include "core/integrators/pi_controller.h"
 #include "core/ode.h"
 
@@ -32,13 +33,13 @@ class Dop853Scheme {
   const Vec& last_stage_f() const { return k_[12]; }
   void prepare_dense(const OdeSystem& sys, double t0, const Vec& y0, const Vec& k1, double h,
                      const Vec& y1, const Vec& k13);
-  void dense(double theta, Vec& out) const;
+  void dense(double theta, Vec& out) const { dense_.eval(theta, out); }
 
  private:
   std::array<Vec, 17> k_;  // k_[s] is stage s (1-based as in the paper; k1 and k13 live outside)
   Vec yt_;                 // stage argument
   Vec y12_;                // the 12th stage's argument, kept for the stiffness quotient
-  std::array<Vec, 8> r_;   // CONTD8 coefficients
+  HermiteDense<4> dense_;
 };
 
 extern template class ExplicitRk<Dop853Scheme>;

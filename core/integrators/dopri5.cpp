@@ -1,5 +1,7 @@
 #include "core/integrators/dopri5.h"
 
+#include "core/integrators/rk_sum.h"
+
 namespace vibro::integrators {
 
 template class ExplicitRk<Dopri5Scheme>;
@@ -25,60 +27,34 @@ constexpr double d1 = -12715105075.0 / 11282082432.0, d3 = 87487479700.0 / 32700
 }  // namespace
 
 void Dopri5Scheme::resize(int n) {
-  for (Vec* v : {&k2_, &k3_, &k4_, &k5_, &k6_, &yt_, &y6_, &err_, &r1_, &r2_, &r3_, &r4_, &r5_}) {
-    v->resize(n);
-  }
+  for (Vec* v : {&k2_, &k3_, &k4_, &k5_, &k6_, &yt_, &y6_, &err_}) v->resize(n);
+  dense_.resize(n);
 }
 
 double Dopri5Scheme::attempt(const OdeSystem& sys, double t, const Vec& y, const Vec& k1, double h,
                              const Tolerance& tol, Vec& y1, Vec& k7) {
-  const Eigen::Index n = y.size();
-  for (Eigen::Index i = 0; i < n; ++i) yt_[i] = y[i] + h * a21 * k1[i];
+  rk_sum(yt_, y, h, Term{a21, k1});
   sys.rhs(t + c2 * h, yt_, k2_);
-  for (Eigen::Index i = 0; i < n; ++i) yt_[i] = y[i] + h * (a31 * k1[i] + a32 * k2_[i]);
+  rk_sum(yt_, y, h, Term{a31, k1}, Term{a32, k2_});
   sys.rhs(t + c3 * h, yt_, k3_);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y[i] + h * (a41 * k1[i] + a42 * k2_[i] + a43 * k3_[i]);
-  }
+  rk_sum(yt_, y, h, Term{a41, k1}, Term{a42, k2_}, Term{a43, k3_});
   sys.rhs(t + c4 * h, yt_, k4_);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    yt_[i] = y[i] + h * (a51 * k1[i] + a52 * k2_[i] + a53 * k3_[i] + a54 * k4_[i]);
-  }
+  rk_sum(yt_, y, h, Term{a51, k1}, Term{a52, k2_}, Term{a53, k3_}, Term{a54, k4_});
   sys.rhs(t + c5 * h, yt_, k5_);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    y6_[i] = y[i] + h * (a61 * k1[i] + a62 * k2_[i] + a63 * k3_[i] + a64 * k4_[i] + a65 * k5_[i]);
-  }
+  rk_sum(y6_, y, h, Term{a61, k1}, Term{a62, k2_}, Term{a63, k3_}, Term{a64, k4_}, Term{a65, k5_});
   sys.rhs(t + h, y6_, k6_);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    y1[i] = y[i] + h * (a71 * k1[i] + a73 * k3_[i] + a74 * k4_[i] + a75 * k5_[i] + a76 * k6_[i]);
-  }
+  rk_sum(y1, y, h, Term{a71, k1}, Term{a73, k3_}, Term{a74, k4_}, Term{a75, k5_}, Term{a76, k6_});
   sys.rhs(t + h, y1, k7);
-  for (Eigen::Index i = 0; i < n; ++i) {
-    err_[i] = h * (e1 * k1[i] + e3 * k3_[i] + e4 * k4_[i] + e5 * k5_[i] + e6 * k6_[i] + e7 * k7[i]);
-  }
+  rk_sum(err_, h, Term{e1, k1}, Term{e3, k3_}, Term{e4, k4_}, Term{e5, k5_}, Term{e6, k6_},
+         Term{e7, k7});
   return rms_norm(err_, y, y1, tol);
 }
 
 void Dopri5Scheme::prepare_dense(const OdeSystem&, double, const Vec& y0, const Vec& k1, double h,
                                  const Vec& y1, const Vec& k7) {
-  const Eigen::Index n = y0.size();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    const double ydiff = y1[i] - y0[i];
-    const double bspl = h * k1[i] - ydiff;
-    r1_[i] = y0[i];
-    r2_[i] = ydiff;
-    r3_[i] = bspl;
-    r4_[i] = ydiff - h * k7[i] - bspl;
-    r5_[i] = h * (d1 * k1[i] + d3 * k3_[i] + d4 * k4_[i] + d5 * k5_[i] + d6 * k6_[i] + d7 * k7[i]);
-  }
-}
-
-void Dopri5Scheme::dense(double theta, Vec& out) const {
-  const double theta1 = 1.0 - theta;
-  const Eigen::Index n = r1_.size();
-  for (Eigen::Index i = 0; i < n; ++i) {
-    out[i] = r1_[i] + theta * (r2_[i] + theta1 * (r3_[i] + theta * (r4_[i] + theta1 * r5_[i])));
-  }
+  dense_.set_ends(y0, y1, k1, k7, h);
+  rk_sum(dense_.correction(0), h, Term{d1, k1}, Term{d3, k3_}, Term{d4, k4_}, Term{d5, k5_},
+         Term{d6, k6_}, Term{d7, k7});
 }
 
 }  // namespace vibro::integrators

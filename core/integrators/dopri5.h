@@ -5,6 +5,7 @@
 
 #include "core/integrators/error_norm.h"
 #include "core/integrators/explicit_rk.h"
+#include "core/integrators/hermite_dense.h"
 #include "core/integrators/pi_controller.h"
 #include "core/ode.h"
 
@@ -30,14 +31,14 @@ class Dopri5Scheme {
   const Vec& last_stage_f() const { return k6_; }
   void prepare_dense(const OdeSystem& sys, double t0, const Vec& y0, const Vec& k1, double h,
                      const Vec& y1, const Vec& k7);
-  void dense(double theta, Vec& out) const;
+  void dense(double theta, Vec& out) const { dense_.eval(theta, out); }
 
  private:
   Vec k2_, k3_, k4_, k5_, k6_;
-  Vec yt_;                      // stage argument
-  Vec y6_;                      // the 6th stage's argument, kept for the stiffness quotient
-  Vec err_;                     // error estimate
-  Vec r1_, r2_, r3_, r4_, r5_;  // CONTD5 coefficients
+  Vec yt_;   // stage argument
+  Vec y6_;   // the 6th stage's argument, kept for the stiffness quotient
+  Vec err_;  // error estimate
+  HermiteDense<1> dense_;
 };
 
 extern template class ExplicitRk<Dopri5Scheme>;
