@@ -31,16 +31,17 @@ struct Neighbours {
 
 class Simulation {
  public:
-  Simulation(const Model& model, const SimOptions& options)
+  Simulation(const Model& model, const SimOptions& options, std::unique_ptr<Stepper> stepper)
       : model_(model),
         opt_(options),
         n_(model.size()),
         y_(3 * n_),
         armed_(model.limiters.size(), true),
         recorder_(model, options.record, options.record_until),
-        stepper_(make_stepper(options.method,
-                              StepperOptions{options.rtol, options.atol,
-                                             std::numeric_limits<double>::infinity()})) {
+        stepper_(stepper ? std::move(stepper)
+                         : make_stepper(options.method,
+                                        StepperOptions{options.rtol, options.atol,
+                                                       std::numeric_limits<double>::infinity()})) {
     for (int i = 0; i < n_; ++i) {
       y_[phi_index(i)] = model.pellets[i].phi0;
       y_[dphi_index(i)] = model.pellets[i].dphi0;
@@ -730,7 +731,11 @@ RunResult Simulation::run() {
 }  // namespace
 
 RunResult simulate(const Model& model, const SimOptions& options) {
-  return Simulation(model, options).run();
+  return Simulation(model, options, nullptr).run();
+}
+
+RunResult simulate(const Model& model, const SimOptions& options, std::unique_ptr<Stepper> stepper) {
+  return Simulation(model, options, std::move(stepper)).run();
 }
 
 }  // namespace vibro

@@ -2,9 +2,12 @@
 // chosen method, locate events on the dense output, resolve each event instant, restart.
 #pragma once
 
+#include <memory>
+
 #include "core/model.h"
 #include "core/result.h"
 #include "core/sim_options.h"
+#include "core/stepper.h"
 
 namespace vibro {
 
@@ -12,5 +15,9 @@ namespace vibro {
 // validate_options accept the inputs. Never throws for numerical trouble: the result's
 // stats.termination and stats.message say why a run ended early, and no NaN is reported.
 RunResult simulate(const Model& model, const SimOptions& options);
+
+// The same with a stepper of the caller's (benchmarks put peer integrators behind the Stepper
+// interface); options.method then only names the run in its stats.
+RunResult simulate(const Model& model, const SimOptions& options, std::unique_ptr<Stepper> stepper);
 
 }  // namespace vibro
