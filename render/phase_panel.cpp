@@ -151,7 +151,13 @@ std::vector<Rect> draw_branch_numbers(cairo_t* cr, const std::vector<VisibleBran
 }
 
 std::string default_title(const PlotSpec& spec, double t_end) {
-  return "Phase portrait, pellet " + std::to_string(spec.pellet + 1) + window_suffix(spec, t_end);
+  std::string title = "Phase portrait, pellet " + std::to_string(spec.pellet + 1);
+  if (!spec.branches.empty()) {
+    title += spec.branches.size() == 1 ? ", motion interval " : ", motion intervals ";
+    for (std::size_t k = 0; k < spec.branches.size(); ++k)
+      title += (k ? ", " : "") + std::to_string(spec.branches[k]);
+  }
+  return title + window_suffix(spec, t_end);
 }
 
 }  // namespace
