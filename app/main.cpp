@@ -12,6 +12,9 @@ const std::vector<Command>& commands() {
        simulate_command},
       {"render", "vibro render SCENE.json | - | --preset NAME -o OUT.png|OUT.svg [overrides]",
        render_command},
+      {"work-precision",
+       "vibro work-precision SCENE.json | - | --preset NAME [-o OUT.png|OUT.svg] [--repeats N]",
+       work_precision_command},
       {"presets", "vibro presets", presets_command},
       {"preset", "vibro preset NAME", preset_command},
   };

@@ -5,6 +5,7 @@
 
 #include "app/commands.h"
 #include "core/simulate.h"
+#include "core/work_precision.h"
 #include "io/result_json.h"
 #include "render/figure.h"
 #include "render/run_plan.h"
@@ -36,7 +37,10 @@ int render_command(const Args& args) {
   }
   const RunPlan plan = plan_run(scene->figure, scene->sim, scene->model.size());
   const RunResult run = simulate(scene->model, plan.options);
-  const RenderResult image = render_figure(scene->figure, scene->model, run, format);
+  std::optional<WorkPrecisionReport> sweep;
+  if (plan.needs_work_precision) sweep = work_precision(scene->model, scene->sim);
+  const RenderResult image =
+      render_figure(scene->figure, scene->model, run, format, sweep ? &*sweep : nullptr);
   if (!image.ok()) {
     std::cerr << nlohmann::json{{"error", image.error->message}, {"field", image.error->field}}.dump() << "\n";
     return 1;

@@ -103,11 +103,13 @@ PlotSpec read_plot(const json& j, const std::string& path, int pellets) {
   Fields f(j, path);
   PlotSpec p;
   const auto kind = f.string("kind", 32);
-  if (!kind) throw FieldException(f.path("kind"), "is required: \"phase\", \"time\" or \"cylinder\"");
+  const char* kinds = "\"phase\", \"time\", \"cylinder\" or \"work_precision\"";
+  if (!kind) throw FieldException(f.path("kind"), std::string("is required: ") + kinds);
   if (*kind == "phase") p.kind = PlotKind::phase;
   else if (*kind == "time") p.kind = PlotKind::time;
   else if (*kind == "cylinder") p.kind = PlotKind::cylinder;
-  else throw FieldException(f.path("kind"), "must be \"phase\", \"time\" or \"cylinder\", got \"" + *kind + "\"");
+  else if (*kind == "work_precision") p.kind = PlotKind::work_precision;
+  else throw FieldException(f.path("kind"), std::string("must be ") + kinds + ", got \"" + *kind + "\"");
 
   if (p.kind == PlotKind::time) {
     if (const json* list = f.array("pellets", 64)) {
@@ -118,7 +120,7 @@ PlotSpec read_plot(const json& j, const std::string& path, int pellets) {
       for (int i = 0; i < pellets; ++i) p.pellets.push_back(i);
     }
     p.show_dphi = f.boolean("dphi", false);
-  } else {
+  } else if (p.kind != PlotKind::work_precision) {
     if (const json* v = f.value("pellet")) p.pellet = index_in(*v, f.path("pellet"), pellets, "pellet");
   }
   p.t_from = f.number("t_from", 0.0);
@@ -246,11 +248,12 @@ json scene_to_json(const Scene& s) {
       case PlotKind::phase: pj["kind"] = "phase"; break;
       case PlotKind::time: pj["kind"] = "time"; break;
       case PlotKind::cylinder: pj["kind"] = "cylinder"; break;
+      case PlotKind::work_precision: pj["kind"] = "work_precision"; break;
     }
     if (p.kind == PlotKind::time) {
       pj["pellets"] = p.pellets;
       if (p.show_dphi) pj["dphi"] = true;
-    } else {
+    } else if (p.kind != PlotKind::work_precision) {
       pj["pellet"] = p.pellet;
     }
     if (p.t_from != 0.0) pj["t_from"] = p.t_from;

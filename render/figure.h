@@ -18,6 +18,7 @@
 #include "core/model.h"
 #include "core/result.h"
 #include "core/validate.h"
+#include "core/work_precision.h"
 #include "render/plot_spec.h"
 
 namespace vibro {
@@ -45,8 +46,10 @@ std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model&
                                           ImageFormat format);
 
 // Validates, then draws every panel. Also an error: a pellet whose track the run did not record.
+// Work-precision panels draw `work_precision`, which must then be given.
 RenderResult render_figure(const FigureSpec& figure, const Model& model, const RunResult& run,
-                           ImageFormat format);
+                           ImageFormat format,
+                           const WorkPrecisionReport* work_precision = nullptr);
 
 // Whether this build can draw 3-D (cylinder) panels.
 bool cylinder_panels_available();

@@ -26,6 +26,8 @@ std::optional<FieldError> check_plot(std::size_t i, const PlotSpec& plot, const 
       const std::string field = plot_field(i, "pellets") + "[" + std::to_string(j) + "]";
       if (auto e = check_pellet(field, plot.pellets[j], model.size())) return e;
     }
+  } else if (plot.kind == PlotKind::work_precision) {
+    // Draws the sweep, not the run: no pellet to check.
   } else if (auto e = check_pellet(plot_field(i, "pellet"), plot.pellet, model.size())) {
     return e;
   }

@@ -7,6 +7,7 @@
 
 #include "core/model.h"
 #include "core/result.h"
+#include "core/work_precision.h"
 #include "render/layout.h"
 #include "render/plot_spec.h"
 #include "render/style.h"
@@ -19,6 +20,7 @@ struct PanelInput {
   const RunResult& run;
   const PanelLayout& layout;
   const Style& style;
+  const WorkPrecisionReport* work_precision = nullptr;  // for work_precision panels
 };
 
 // The (φ, φ̇) portrait of one pellet: numbered branches, impacts, limiters, optional overlays.
@@ -26,5 +28,8 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in);
 
 // φ(t) of the listed pellets (and φ̇(t) below it when asked), limiter angles, event marks.
 void draw_time_panel(cairo_t* cr, const PanelInput& in);
+
+// log10 error against log10 median run time, one line per method, points labelled by rtol.
+void draw_work_precision_panel(cairo_t* cr, const PanelInput& in);
 
 }  // namespace vibro::render

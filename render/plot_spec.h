@@ -13,6 +13,7 @@ enum class PlotKind {
   phase,     // (φ, φ̇) of one pellet, branches told apart
   time,      // φ(t) (optionally φ̇(t)) of the listed pellets
   cylinder,  // 3-D (OSMesa): the trajectory on the phase cylinder (cos φ, sin φ, φ̇)
+  work_precision,  // log error against log run time, one line per method (a sweep, not the run)
 };
 
 struct PhasePoint {

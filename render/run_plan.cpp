@@ -10,7 +10,9 @@ RunPlan plan_run(const FigureSpec& figure, const SimOptions& base, int pellets) 
   plan.options.record.assign(pellets, false);
   double until = 0.0;
   for (const PlotSpec& p : figure.plots) {
-    if (p.kind == PlotKind::time) {
+    if (p.kind == PlotKind::work_precision) {
+      plan.needs_work_precision = true;
+    } else if (p.kind == PlotKind::time) {
       if (p.pellets.empty()) plan.options.record.assign(pellets, true);
       for (int i : p.pellets)
         if (i >= 0 && i < pellets) plan.options.record[i] = true;

@@ -12,6 +12,7 @@ namespace vibro {
 struct RunPlan {
   SimOptions options;  // the base options with record flags, record_until and t_end set
   bool needs_3d = false;
+  bool needs_work_precision = false;  // a work-precision sweep of the scene
 };
 
 RunPlan plan_run(const FigureSpec& figure, const SimOptions& base, int pellets);

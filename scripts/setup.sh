@@ -7,7 +7,10 @@ cd "$(dirname "$0")/.."
 packages=(cmake g++ make pkg-config libeigen3-dev libosmesa6-dev libcairo2-dev libpng-dev
           nlohmann-json3-dev libcpp-httplib-dev libgtest-dev fonts-dejavu-core)
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(libbenchmark-dev chromium nodejs npm curl jq)
+  packages+=(libbenchmark-dev chromium curl jq)
+  # The base image ships Node.js (with npm) from its own packages; Debian's would conflict.
+  command -v node > /dev/null || packages+=(nodejs)
+  command -v npm > /dev/null || packages+=(npm)
 fi
 
 missing=()
