@@ -1,0 +1,59 @@
+// Calls to the vibro HTTP service (API.md). Every refusal becomes an ApiError carrying the
+// server's message and, when it names one, the scene field at fault.
+
+export class ApiError extends Error {
+  constructor(message, { status = 0, field = null } = {}) {
+    super(message);
+    this.status = status;
+    this.field = field;
+  }
+}
+
+async function request(url, options = {}) {
+  let response;
+  try {
+    response = await fetch(url, options);
+  } catch (e) {
+    if (e.name === "AbortError") throw e;
+    throw new ApiError(`The server at ${location.host} did not answer (${e.message}).`);
+  }
+  if (response.ok) return response;
+  let body = null;
+  try {
+    body = await response.json();
+  } catch {
+    // A non-JSON refusal (a proxy, a crash page): report the status alone.
+  }
+  const message = body?.error ?? `${response.status} ${response.statusText}`.trim();
+  throw new ApiError(message, { status: response.status, field: body?.field ?? null });
+}
+
+function postJson(url, scene, signal) {
+  return request(url, {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(scene),
+    signal,
+  });
+}
+
+// [{name, description}], in the server's order. Accepts a bare list or {presets: [...]}.
+export async function listPresets() {
+  const body = await (await request("/api/presets")).json();
+  return Array.isArray(body) ? body : body.presets ?? [];
+}
+
+export async function getPreset(name) {
+  return (await request(`/api/presets/${encodeURIComponent(name)}`)).json();
+}
+
+// The run result, and its text as received (offered for download unchanged).
+export async function simulate(scene, signal) {
+  const text = await (await postJson("/api/simulate", scene, signal)).text();
+  return { result: JSON.parse(text), text };
+}
+
+// format: "png" | "svg"; resolves to a Blob of that type.
+export async function renderImage(scene, format, signal) {
+  return (await postJson(`/api/render?format=${format}`, scene, signal)).blob();
+}

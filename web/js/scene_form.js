@@ -1,0 +1,421 @@
+// The scene editor: one labelled input per scene field (API.md), built from a scene object and
+// read back into one. Adding or removing pellets, limiters and panels reads the form, edits the
+// scene object (renumbering every index that points at what moved) and rebuilds the form, so
+// the DOM never holds state the scene object does not.
+
+import { fill, h } from "./dom.js";
+import { checkField, intListField, numberField, pelletChecks, pelletOptions, selectField, textField } from "./fields.js";
+import { parseNumber } from "./numbers.js";
+import { setPath } from "./scene_path.js";
+
+export const MAX_PELLETS = 8;
+const MAX_LIMITERS = 16;
+const MAX_PLOTS = 8;
+
+const PLOT_KINDS = [
+  { value: "phase", label: "phase portrait", short: "Phase" },
+  { value: "time", label: "time series", short: "Time" },
+  { value: "cylinder", label: "cylinder (3-D)", short: "Cylinder" },
+  { value: "work_precision", label: "work–precision", short: "Work–precision" },
+];
+const KIND_TITLES = { phase: "phase portrait", time: "time series", cylinder: "phase cylinder", work_precision: "work–precision" };
+
+export class SceneForm {
+  // root: an element to fill; onEdit: called after any change made by the user.
+  constructor(root, { onEdit }) {
+    this.root = root;
+    this.onEdit = onEdit;
+    this.name = undefined;
+    root.addEventListener("input", () => onEdit());
+    root.addEventListener("change", () => onEdit());
+  }
+
+  load(scene) {
+    this.name = scene.name;
+    const model = scene.model ?? {};
+    const n = model.pellets?.length ?? 0;
+    fill(this.root,
+      this.modelSection(model),
+      this.pelletsSection(model.pellets ?? []),
+      this.limitersSection(model.limiters ?? [], n),
+      this.runSection(scene),
+      this.plotsSection(scene.plots ?? [], n),
+      this.imageSection(scene),
+    );
+  }
+
+  // { scene, problems: [{field, message}] }. A value that is not a number is kept as its text,
+  // so that rebuilding the form keeps what was typed; such a scene must not be sent.
+  read() {
+    const scene = {};
+    if (this.name) scene.name = this.name;
+    const problems = [];
+    // Document order, so keys come out in the order a person reads them; a card (data-item)
+    // stands for its list element even when all its inputs are empty.
+    for (const el of this.root.querySelectorAll("[data-field], [data-item]")) {
+      const { field, kind, item } = el.dataset;
+      if (item) setPath(scene, item, {});
+      if (el.disabled || !field || kind === "group") continue;
+      const text = el.value?.trim();
+      if (kind === "bool") {
+        if (el.checked) setPath(scene, field, true);
+      } else if (kind === "index-list") {
+        const picked = [...el.querySelectorAll("input:checked")].map((c) => Number(c.value));
+        if (picked.length) setPath(scene, field, picked);
+      } else if (text === "") {
+        continue; // an omitted key takes the server's documented default
+      } else if (kind === "number") {
+        const v = parseNumber(text);
+        if (v === null) problems.push({ field, message: "is not a number (examples: 0.2, 1e-10, π/12, -pi/2)" });
+        setPath(scene, field, v ?? text);
+      } else if (kind === "int" || kind === "int-optional") {
+        setPath(scene, field, Number(text));
+      } else if (kind === "int-list") {
+        const items = text.split(/[\s,;]+/).filter(Boolean);
+        const values = items.map(Number);
+        if (values.some((v) => !Number.isInteger(v))) {
+          problems.push({ field, message: "must list whole numbers separated by commas, e.g. 2, 3" });
+          setPath(scene, field, text);
+        } else setPath(scene, field, values);
+      } else {
+        setPath(scene, field, text);
+      }
+    }
+    return { scene, problems };
+  }
+
+  // Rebuilds the form after `edit` changes the scene, then focuses `focusPath` if given.
+  restructure(edit, focusSelector) {
+    const { scene } = this.read();
+    edit(scene);
+    this.load(scene);
+    this.onEdit();
+    const target = focusSelector && this.root.querySelector(focusSelector);
+    if (target) target.focus();
+  }
+
+  // [SECTION] model
+  modelSection(m) {
+    return section(
+      "Model",
+      grid(
+        numberField({ path: "model.g", label: "g — gravity", unit: "m/s²", value: m.g, placeholder: "9.81" }),
+        numberField({ path: "model.R", label: "R — radius", unit: "m", value: m.R }),
+        numberField({ path: "model.alpha0", label: "α₀ — friction angle", unit: "rad", value: m.alpha0, placeholder: "0", hint: "μ = tan α₀" }),
+        selectField({
+          path: "model.friction",
+          label: "Friction law",
+          value: m.friction ?? "paper",
+          options: [
+            { value: "paper", label: "paper" },
+            { value: "bilateral", label: "bilateral" },
+          ],
+          hint: "bilateral: |N|, on a wire",
+        }),
+        numberField({ path: "model.mu_s", label: "μₛ — static coefficient", value: m.mu_s, placeholder: "tan α₀", hint: "≥ μ; for the stick test" }),
+        numberField({ path: "model.k_c", label: "k_c — pellet restitution", value: m.k_c, placeholder: "1", hint: "0 plastic … 1 elastic" }),
+      ),
+    );
+  }
+
+  // [SECTION] pellets
+  pelletsSection(pellets) {
+    const n = pellets.length;
+    const cards = pellets.map((p, i) => {
+      const path = `model.pellets[${i}]`;
+      const who = `Pellet ${i + 1}`;
+      return card(
+        path,
+        who,
+        removeButton(`Remove pellet ${i + 1}`, n <= 1, () => this.restructure((s) => removePellet(s, i), "[data-action=add-pellet]")),
+        grid(
+          numberField({ path: `${path}.m`, label: "m — mass", unit: "kg", value: p.m, aria: `${who} mass m (kg)` }),
+          numberField({ path: `${path}.phi0`, label: "φ₀ — angle", unit: "rad", value: p.phi0, angle: true, aria: `${who} initial angle φ₀ (rad)` }),
+          numberField({ path: `${path}.dphi0`, label: "φ̇₀ — velocity", unit: "rad/s", value: p.dphi0, placeholder: "0", aria: `${who} initial angular velocity φ̇₀ (rad/s)` }),
+          numberField({ path: `${path}.F0`, label: "F₀ — force", unit: "N", value: p.F0, placeholder: "0", aria: `${who} force amplitude F₀ (N)` }),
+          numberField({ path: `${path}.Omega`, label: "Ω — frequency", unit: "rad/s", value: p.Omega, placeholder: "0", aria: `${who} force frequency Ω (rad/s)` }),
+          numberField({ path: `${path}.psi`, label: "ψ — phase", unit: "rad", value: p.psi, angle: true, placeholder: "0", aria: `${who} force phase ψ (rad)` }),
+        ),
+      );
+    });
+    const add = h(
+      "button",
+      {
+        type: "button",
+        class: "add",
+        dataset: { action: "add-pellet" },
+        disabled: n >= MAX_PELLETS,
+        onClick: () =>
+          this.restructure(
+            (s) => s.model.pellets.push({ m: 0.2, phi0: 0, dphi0: 0 }),
+            `[data-field="model.pellets[${n}].m"]`,
+          ),
+      },
+      "+ Pellet",
+    );
+    return section(`Pellets (${n} of 1–${MAX_PELLETS})`, [
+      h("p", { class: "note" }, "Force F(t) = F₀ cos(Ωt + ψ). Angles from the lowest point, positive toward limiter 1; they accept π, e.g. π/12."),
+      cards,
+      h("div", { class: "adders" }, add),
+    ], { field: "model.pellets" });
+  }
+
+  // [SECTION] limiters
+  limitersSection(limiters, pelletCount) {
+    const n = limiters.length;
+    const cards = limiters.map((l, i) => {
+      const path = `model.limiters[${i}]`;
+      const rearm = selectField({
+        path: `${path}.rearm_by`,
+        label: "re-armed by",
+        kind: "int-optional",
+        value: l.rearm_by,
+        disabled: !l.mobile,
+        options: [{ value: "", label: "—" }].concat(
+          limiters.map((_, j) => ({ value: j, label: `limiter ${j + 1}` })).filter((o) => o.value !== i),
+        ),
+        hint: "impacts on it re-arm this one",
+      });
+      const rearmSelect = rearm.querySelector("select");
+      return card(
+        path,
+        `Limiter ${i + 1}`,
+        removeButton(`Remove limiter ${i + 1}`, false, () => this.restructure((s) => removeLimiter(s, i), "[data-action=add-limiter]")),
+        grid(
+          numberField({ path: `${path}.angle`, label: "angle", unit: "rad", value: l.angle, angle: true, aria: `Limiter ${i + 1} angle (rad)` }),
+          numberField({ path: `${path}.k`, label: "k — restitution", value: l.k, hint: "[0, 1]", aria: `Limiter ${i + 1} restitution k` }),
+          checkField({
+            path: `${path}.mobile`,
+            label: "mobile",
+            checked: l.mobile,
+            onChange: (e) => {
+              rearmSelect.disabled = !e.target.checked;
+            },
+          }),
+          rearm,
+          pelletChecks({
+            path: `${path}.pellets`,
+            legend: `Limiter ${i + 1} acts on pellets`,
+            count: pelletCount,
+            selected: l.pellets ?? [],
+            hint: "none checked: all pellets",
+          }),
+        ),
+      );
+    });
+    const add = h(
+      "button",
+      {
+        type: "button",
+        class: "add",
+        dataset: { action: "add-limiter" },
+        disabled: n >= MAX_LIMITERS,
+        onClick: () =>
+          this.restructure(
+            (s) => (s.model.limiters ??= []).push({ angle: Math.PI / 4, k: 0.5 }),
+            `[data-field="model.limiters[${n}].angle"]`,
+          ),
+      },
+      "+ Limiter",
+    );
+    return section(`Limiters (${n})`, [
+      h("p", { class: "note" }, "A mobile limiter is disarmed by the impact it takes and re-armed by an impact on the limiter named."),
+      cards,
+      h("div", { class: "adders" }, add),
+    ], { field: "model.limiters" });
+  }
+
+  // [SECTION] run
+  runSection(scene) {
+    const solver = scene.solver ?? {};
+    return section(
+      "Run",
+      grid(
+        numberField({ path: "t_end", label: "t_end — duration", unit: "s", value: scene.t_end }),
+        selectField({
+          path: "solver.method",
+          label: "Integrator",
+          value: solver.method ?? "auto",
+          options: [
+            { value: "auto", label: "auto (DOP853 ⇄ Radau IIA)" },
+            { value: "dopri5", label: "dopri5 (Dormand–Prince 5(4))" },
+            { value: "dop853", label: "dop853 (Dormand–Prince 8)" },
+            { value: "radau5", label: "radau5 (Radau IIA, implicit)" },
+          ],
+        }),
+        numberField({ path: "solver.rtol", label: "rtol", value: solver.rtol, placeholder: "1e-9", hint: "relative tolerance" }),
+        numberField({ path: "solver.atol", label: "atol", value: solver.atol, placeholder: "1e-12", hint: "absolute tolerance" }),
+        checkField({ path: "trajectories", label: "sampled trajectories in the result JSON", checked: scene.trajectories }),
+      ),
+    );
+  }
+
+  // [SECTION] plots
+  plotsSection(plots, pelletCount) {
+    const n = plots.length;
+    const cards = plots.map((p, i) => this.plotCard(p, i, pelletCount, n));
+    const adders = PLOT_KINDS.map((k) =>
+      h(
+        "button",
+        {
+          type: "button",
+          class: "add",
+          disabled: n >= MAX_PLOTS,
+          dataset: { action: `add-${k.value}` },
+          "aria-label": `Add a ${KIND_TITLES[k.value]} panel`,
+          onClick: () => this.restructure((s) => (s.plots ??= []).push(newPlot(k.value, pelletCount)), `[data-field="plots[${n}].kind"]`),
+        },
+        `+ ${k.short}`,
+      ),
+    );
+    return section(`Panels (${n} of ${MAX_PLOTS})`, [cards, h("div", { class: "adders" }, adders)], { field: "plots" });
+  }
+
+  plotCard(p, i, pelletCount, count) {
+    const path = `plots[${i}]`;
+    const kind = p.kind ?? "phase";
+    const kindField = selectField({
+      path: `${path}.kind`,
+      label: "Kind",
+      value: kind,
+      options: PLOT_KINDS,
+      onChange: (e) => this.restructure((s) => (s.plots[i] = convertPlot(s.plots[i], e.target.value)), `[data-field="${path}.kind"]`),
+    });
+    const pelletField = selectField({ path: `${path}.pellet`, label: "Pellet", kind: "int", value: p.pellet ?? 0, options: pelletOptions(pelletCount) });
+    const title = textField({ path: `${path}.title`, label: "Title", value: p.title, placeholder: "automatic", wide: false });
+    const from = numberField({ path: `${path}.t_from`, label: "from t", unit: "s", value: p.t_from, placeholder: "0" });
+    const to = numberField({ path: `${path}.t_to`, label: "to t", unit: "s", value: p.t_to, placeholder: "t_end" });
+    const blank = h("div", { class: "field" });
+
+    let fields;
+    if (kind === "time") {
+      fields = [
+        kindField, title, blank,
+        pelletChecks({ path: `${path}.pellets`, legend: "Pellets drawn", count: pelletCount, selected: p.pellets ?? [], hint: "none checked: all pellets" }),
+        from, to, checkField({ path: `${path}.dphi`, label: "also φ̇(t)", checked: p.dphi }),
+      ];
+    } else if (kind === "phase") {
+      const fi = p.first_integral;
+      const fiFields = [
+        numberField({ path: `${path}.first_integral.phi`, label: "through φ", unit: "rad", value: fi?.phi, angle: true }),
+        numberField({ path: `${path}.first_integral.dphi`, label: "through φ̇", unit: "rad/s", value: fi?.dphi }),
+      ];
+      // Unchecked, the point's inputs are disabled, and read() leaves disabled inputs out.
+      const setFi = (on) => fiFields.forEach((f) => (f.querySelector("input").disabled = !on));
+      setFi(Boolean(fi));
+      fields = [
+        kindField, pelletField, title,
+        from, to,
+        intListField({ path: `${path}.branches`, label: "Branches", value: p.branches, placeholder: "all", hint: "intervals from 1: 2, 3" }),
+        checkField({ path: `${path}.friction_zone`, label: "shade the friction zone |φ| ≤ α₀ (mod 2π)", checked: p.friction_zone, wide: true }),
+        h(
+          "div",
+          { class: "field check wide" },
+          h(
+            "label",
+            {},
+            h("input", { type: "checkbox", checked: Boolean(fi), onChange: (e) => setFi(e.target.checked) }),
+            " overlay the exact first integral of the unforced motion through",
+          ),
+        ),
+        ...fiFields,
+      ];
+    } else if (kind === "work_precision") {
+      // A sweep over methods and tolerances of the whole scene: no pellet, no window.
+      fields = [
+        kindField, title, blank,
+        h("p", { class: "note wide" }, "Error against run time for each integrator over a range of tolerances; the run is repeated for every point, so it takes longer."),
+      ];
+    } else {
+      const cam = p.camera ?? {};
+      fields = [
+        kindField, pelletField, title,
+        from, to, blank,
+        numberField({ path: `${path}.camera.azimuth`, label: "azimuth", unit: "°", value: cam.azimuth, placeholder: "35" }),
+        numberField({ path: `${path}.camera.elevation`, label: "elevation", unit: "°", value: cam.elevation, placeholder: "25", hint: "[-89, 89]" }),
+        numberField({ path: `${path}.camera.distance`, label: "distance", unit: "radii", value: cam.distance, placeholder: "5", hint: "[1.5, 50]" }),
+      ];
+    }
+    const focusAfterRemove = count > 1 ? `[data-field="plots[${Math.max(i - 1, 0)}].kind"]` : "[data-action=add-phase]";
+    return card(
+      path,
+      `Panel ${i + 1} — ${KIND_TITLES[kind] ?? kind}`,
+      removeButton(`Remove panel ${i + 1}`, false, () => this.restructure((s) => s.plots.splice(i, 1), focusAfterRemove)),
+      grid(...fields),
+    );
+  }
+
+  // [SECTION] image
+  imageSection(scene) {
+    return section(
+      "Image",
+      grid(
+        numberField({ path: "width", label: "width", unit: "px", value: scene.width, placeholder: "1200", hint: "64–4096" }),
+        numberField({ path: "height", label: "height", unit: "px", value: scene.height, placeholder: "800", hint: "64–4096" }),
+      ),
+    );
+  }
+}
+
+// `field` lets an error about a whole list ("model.pellets") land on its section.
+function section(title, content, { field } = {}) {
+  return h("fieldset", { class: "section", dataset: field ? { field, kind: "group" } : undefined }, h("legend", {}, title), content, errorSlot());
+}
+
+function grid(...fields) {
+  return h("div", { class: "grid" }, fields);
+}
+
+function card(path, title, removeBtn, body) {
+  return h("fieldset", { class: "card", dataset: { item: path, field: path, kind: "group" } }, h("legend", {}, title), removeBtn, body, errorSlot());
+}
+
+function errorSlot() {
+  return h("p", { class: "field-error", hidden: true });
+}
+
+function removeButton(label, disabled, onClick) {
+  return h("button", { type: "button", class: "remove", "aria-label": label, title: label, disabled, onClick }, "Remove");
+}
+
+function newPlot(kind, pelletCount) {
+  if (kind === "work_precision") return { kind };
+  if (kind === "time") return { kind, pellets: Array.from({ length: pelletCount }, (_, i) => i) };
+  return { kind, pellet: 0 };
+}
+
+// Keeps what two kinds share (window, title, pellet) when a panel changes kind.
+function convertPlot(p, kind) {
+  const q = { kind };
+  if (p.title !== undefined) q.title = p.title;
+  if (p.t_from !== undefined) q.t_from = p.t_from;
+  if (p.t_to !== undefined) q.t_to = p.t_to;
+  if (kind === "work_precision") return q;
+  if (kind === "time") q.pellets = [p.pellet ?? p.pellets?.[0] ?? 0];
+  else q.pellet = p.pellet ?? p.pellets?.[0] ?? 0;
+  return q;
+}
+
+// Index lists after pellet `i` goes: drop it, shift the ones after it down.
+function renumber(list, i) {
+  return list.filter((j) => j !== i).map((j) => (j > i ? j - 1 : j));
+}
+
+function removePellet(scene, i) {
+  scene.model.pellets.splice(i, 1);
+  for (const l of scene.model.limiters ?? []) {
+    if (Array.isArray(l.pellets)) l.pellets = renumber(l.pellets, i);
+  }
+  for (const p of scene.plots ?? []) {
+    if (Array.isArray(p.pellets)) p.pellets = renumber(p.pellets, i);
+    if (typeof p.pellet === "number" && p.pellet >= i) p.pellet = Math.max(p.pellet - 1, 0);
+  }
+}
+
+function removeLimiter(scene, i) {
+  scene.model.limiters.splice(i, 1);
+  for (const l of scene.model.limiters) {
+    if (l.rearm_by === i) delete l.rearm_by;
+    else if (typeof l.rearm_by === "number" && l.rearm_by > i) l.rearm_by -= 1;
+  }
+}

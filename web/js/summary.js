@@ -1,0 +1,107 @@
+// The summary of a run: the answer sentence, impact counts, where each pellet ends, what the
+// run cost and how accurate it is (the error estimate sits next to the time and step counts,
+// so that one is never read without the other), and the warnings.
+
+import { fill, h } from "./dom.js";
+import { formatValue } from "./numbers.js";
+
+const STATE_LABELS = { sliding: "sliding", stuck: "stuck", resting_at_limiter: "resting at limiter" };
+
+export function showSummary(container, result) {
+  const s = result.summary ?? {};
+  const items = [
+    ["limiter impacts", s.limiter_impacts],
+    ["collisions", s.collisions],
+    ["chatter sequences", s.chatter_sequences],
+    ["last impact", s.last_impact ? `no. ${s.last_impact.index} at t = ${formatValue(s.last_impact.t)} s` : "none"],
+  ];
+  fill(container,
+    s.answer ? h("p", { class: "answer" }, s.answer) : null,
+    h(
+      "dl",
+      { class: "counts" },
+      items.filter(([, v]) => v !== undefined).map(([k, v]) => h("div", {}, h("dt", {}, k), h("dd", {}, String(v)))),
+    ),
+    finalTable(s.final ?? []),
+    statsLine(result.stats ?? {}),
+  );
+}
+
+function finalTable(final) {
+  if (!final.length) return null;
+  return h(
+    "table",
+    { class: "final" },
+    h("caption", {}, "Where the pellets end"),
+    h(
+      "thead",
+      {},
+      h(
+        "tr",
+        {},
+        h("th", { scope: "col" }, "pellet"),
+        h("th", { scope: "col" }, "state"),
+        h("th", { scope: "col", class: "n" }, "φ (rad)"),
+        h("th", { scope: "col", class: "n", title: "φ wrapped into (−π, π]" }, "φ wrapped"),
+        h("th", { scope: "col", class: "n" }, "φ̇ (rad/s)"),
+      ),
+    ),
+    h(
+      "tbody",
+      {},
+      final.map((f, i) => {
+        let state = STATE_LABELS[f.state] ?? f.state;
+        if (f.limiter !== undefined) state += ` ${f.limiter + 1}`;
+        return h(
+          "tr",
+          {},
+          h("th", { scope: "row" }, String(i + 1)),
+          h("td", {}, state),
+          h("td", { class: "n", title: String(f.phi) }, formatValue(f.phi)),
+          h("td", { class: "n", title: String(f.phi_wrapped) }, formatValue(f.phi_wrapped)),
+          h("td", { class: "n" }, formatValue(f.dphi)),
+        );
+      }),
+    ),
+  );
+}
+
+function statsLine(st) {
+  const parts = [];
+  const add = (label, value, title) => {
+    if (value !== undefined && value !== null) parts.push(h("span", { title }, h("span", { class: "k" }, label), " ", value));
+  };
+  add("error estimate", st.error_estimate !== undefined ? formatValue(st.error_estimate, 2) : undefined, "largest residual of the exact references (first integral, energy) over the run");
+  add("run time", st.wall_ms !== undefined ? `${formatValue(st.wall_ms, 3)} ms` : undefined);
+  add("steps", st.steps !== undefined ? `${st.steps}${st.rejected !== undefined ? ` (${st.rejected} rejected)` : ""}` : undefined);
+  add("RHS evaluations", st.rhs_evals);
+  add("method", st.method);
+  add("energy defect", st.energy_defect !== undefined ? formatValue(st.energy_defect, 2) : undefined);
+  add("first-integral residual", st.first_integral_residual !== undefined ? formatValue(st.first_integral_residual, 2) : undefined);
+  add("tolerances", st.rtol !== undefined ? `rtol ${st.rtol}, atol ${st.atol}` : undefined);
+  add("termination", st.termination);
+  return h(
+    "div",
+    { class: "stats" },
+    h("p", {}, parts),
+    st.message ? h("p", { class: st.termination === "completed" ? "muted" : "warn" }, st.message) : null,
+  );
+}
+
+// Warnings are objects {code, message, ...} or plain strings; many of one code fold together.
+export function showWarnings(container, warnings) {
+  if (!warnings?.length) {
+    fill(container);
+    container.hidden = true;
+    return;
+  }
+  container.hidden = false;
+  const text = (w) => (typeof w === "string" ? w : w.message ?? JSON.stringify(w));
+  const list = h("ul", {}, warnings.map((w) => h("li", {}, text(w))));
+  const title = `${warnings.length} warning${warnings.length > 1 ? "s" : ""}`;
+  fill(container,
+    warnings.length <= 2
+      ? [h("h3", {}, title), list]
+      : h("details", {}, h("summary", {}, `${title}: `, text(warnings[0]), " …"), list),
+  );
+}
