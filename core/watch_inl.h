@@ -97,6 +97,43 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
     found.push_back({br.watch, t});
     earliest = std::min(earliest, t);
   }
+  // A watch may have dipped below zero and come back between two samples before the earliest
+  // crossing (a pellet that overshoots a limiter just before it reverses). At the earliest
+  // crossing, every watch must still be positive; one that is not crossed earlier: find it.
+  for (int pass = 0; pass < 8 && std::isfinite(earliest); ++pass) {
+    dense(earliest, y);
+    bool added = false;
+    for (std::size_t w = 0; w < watches.size(); ++w) {
+      if (!armed_[w] || std::any_of(found.begin(), found.end(),
+                                    [&](const Crossing& c) { return c.watch == static_cast<int>(w); }))
+        continue;
+      const double g_end = evaluate(watches[w], model, bodies, earliest, y);
+      if (g_end > 0.0) continue;
+      // The last sample before `earliest` where it was positive brackets the root.
+      double a = t_prev, fa = 0.0;
+      Vec ya(y.size());
+      dense(t_prev, ya);
+      fa = evaluate(watches[w], model, bodies, t_prev, ya);
+      for (std::size_t k = 0; k < times.size() && times[k] < earliest; ++k) {
+        const double g = evaluate(watches[w], model, bodies, times[k], states[k]);
+        if (g > 0.0) {
+          a = times[k];
+          fa = g;
+        }
+      }
+      if (!(fa > 0.0)) continue;
+      const Watch& watch = watches[w];
+      auto g = [&](double t) {
+        dense(t, ya);
+        return evaluate(watch, model, bodies, t, ya);
+      };
+      const double t = brent_root(g, a, earliest, fa, g_end);
+      found.push_back({static_cast<int>(w), t});
+      earliest = std::min(earliest, t);
+      added = true;
+    }
+    if (!added) break;
+  }
   std::erase_if(found, [&](const Crossing& c) { return c.t > earliest + simultaneous; });
   std::sort(found.begin(), found.end(),
             [](const Crossing& x, const Crossing& y) { return x.t < y.t; });

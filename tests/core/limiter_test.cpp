@@ -76,3 +76,29 @@ TEST(Limiter, LimiterActingOnOnePelletLetsTheOtherPass) {
 
 }  // namespace
 }  // namespace vibro
+
+namespace vibro {
+namespace {
+
+// Without friction the pellet turns back 1e-4 rad beyond the limiter: with loose tolerances its
+// steps are long, and the overshoot lies inside one step between the samples. A check at step
+// ends (or samples) alone would miss the impact and leave the pellet beyond an armed limiter.
+TEST(Limiter, AnOvershootInsideOneStepIsFound) {
+  const double theta = 0.5, beyond = 1e-4;
+  for (Method method : {Method::dopri5, Method::dop853, Method::radau5, Method::automatic}) {
+    for (double rtol : {1e-3, 1e-6, 1e-9}) {
+      Model m = testing::one_pellet(0.0, 0.0, 0.0);
+      m.pellets[0].dphi0 = std::sqrt(2 * m.g / m.R * (1 - std::cos(theta + beyond)));
+      m.limiters = {{theta, 0.5, false, -1, {}}};
+      const RunResult run = simulate(m, testing::recorded(m, 1.0, method, rtol, rtol * 1e-3));
+      auto impacts = testing::events_of(run, EventKind::limiter);
+      ASSERT_FALSE(impacts.empty()) << method_name(method) << " rtol " << rtol;
+      EXPECT_EQ(impacts[0]->phi, theta);
+      for (const Branch& b : run.tracks[0].branches)
+        for (const Sample& s : b.samples) ASSERT_LE(s.phi, theta) << method_name(method);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace vibro
