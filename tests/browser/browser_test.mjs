@@ -1,0 +1,249 @@
+// The web page in headless Chromium against a real `vibro serve`.
+//
+//   VIBRO=build/vibro WEB=web node tests/browser/browser_test.mjs
+//   node tests/browser/browser_test.mjs build/vibro [web]
+//
+// Starts the server on a free loopback port, drives the page as a person would (pick the paper
+// preset, Render, read the figure, the events and the summary; enter an invalid value and find
+// the server's error next to that field; reopen the permalink), saves screenshots for people to
+// look at, and ends with "browser: N passed, M failed". Exit 0 when all pass, 1 otherwise, 77
+// (CTest's skip code) when Chromium is not installed. Uses Debian's Chromium; never downloads one.
+
+import { spawn } from "node:child_process";
+import { existsSync, mkdtempSync } from "node:fs";
+import { createServer } from "node:net";
+import { tmpdir } from "node:os";
+import { dirname, join, resolve } from "node:path";
+import { fileURLToPath } from "node:url";
+import { chromium } from "playwright-core";
+
+const here = dirname(fileURLToPath(import.meta.url));
+const vibro = resolve(process.argv[2] ?? process.env.VIBRO ?? "build/vibro");
+const web = resolve(process.argv[3] ?? process.env.WEB ?? join(here, "../../web"));
+const chromiumPath = process.env.CHROMIUM ?? "/usr/bin/chromium";
+const shots = mkdtempSync(join(tmpdir(), "vibro-browser-"));
+
+if (!existsSync(chromiumPath)) {
+  console.log(`browser: skipped (no Chromium at ${chromiumPath}; apt-get install chromium)`);
+  process.exit(77);
+}
+if (!existsSync(vibro)) {
+  console.log(`browser: 0 passed, 1 failed (no vibro binary at ${vibro})`);
+  process.exit(1);
+}
+
+// [SECTION] the server
+
+function freePort() {
+  return new Promise((ok, fail) => {
+    const s = createServer();
+    s.once("error", fail);
+    s.listen(0, "127.0.0.1", () => {
+      const { port } = s.address();
+      s.close(() => ok(port));
+    });
+  });
+}
+
+async function startServer() {
+  const port = await freePort();
+  const proc = spawn(vibro, ["serve", "--host", "127.0.0.1", "--port", String(port), "--web", web], {
+    stdio: ["ignore", "pipe", "pipe"],
+  });
+  let output = "";
+  proc.stdout.on("data", (d) => (output += d));
+  proc.stderr.on("data", (d) => (output += d));
+  let exited = null;
+  proc.on("exit", (code) => (exited = code));
+  const base = `http://127.0.0.1:${port}`;
+  const deadline = Date.now() + 20000;
+  while (Date.now() < deadline) {
+    if (exited !== null) throw new Error(`vibro serve exited with ${exited}:\n${output}`);
+    try {
+      const r = await fetch(`${base}/api/health`);
+      if (r.ok) return { proc, base };
+    } catch {
+      // not listening yet
+    }
+    await new Promise((r) => setTimeout(r, 100));
+  }
+  proc.kill();
+  throw new Error(`vibro serve did not answer /api/health within 20 s:\n${output}`);
+}
+
+// [SECTION] checks
+
+const results = [];
+async function check(name, fn) {
+  const started = Date.now();
+  try {
+    await fn();
+    results.push({ name, ok: true });
+    console.log(`ok   ${name} (${Date.now() - started} ms)`);
+  } catch (e) {
+    results.push({ name, ok: false });
+    console.log(`FAIL ${name}: ${e.message.split("\n")[0]}`);
+  }
+}
+
+function expect(condition, message) {
+  if (!condition) throw new Error(message);
+}
+
+// The page counts finished runs in #results[data-run]; wait for the count to pass `after`.
+async function waitForRun(page, after) {
+  await page.waitForFunction(
+    (n) => {
+      const r = document.getElementById("results");
+      return Number(r.dataset.run ?? 0) > n && r.dataset.state === "done";
+    },
+    after,
+    { timeout: 30000 },
+  );
+  return runCount(page);
+}
+
+async function runCount(page) {
+  return page.evaluate(() => Number(document.getElementById("results").dataset.run ?? 0));
+}
+
+async function waitForRefusal(page) {
+  await page.waitForFunction(() => document.getElementById("results").dataset.state === "error", null, { timeout: 30000 });
+}
+
+// Fraction of the figure's pixels that are not near-white, measured by drawing it on a canvas.
+async function inkFraction(page) {
+  return page.evaluate(async () => {
+    const img = document.getElementById("figure");
+    await img.decode();
+    const c = document.createElement("canvas");
+    c.width = img.naturalWidth;
+    c.height = img.naturalHeight;
+    const ctx = c.getContext("2d");
+    ctx.drawImage(img, 0, 0);
+    const { data } = ctx.getImageData(0, 0, c.width, c.height);
+    let ink = 0;
+    for (let i = 0; i < data.length; i += 4) if (data[i] + data[i + 1] + data[i + 2] < 600) ink += 1;
+    return { width: img.naturalWidth, height: img.naturalHeight, ink: ink / (data.length / 4) };
+  });
+}
+
+// The error text shown for the input with data-field = path (via its aria-describedby slot).
+async function errorNextTo(page, path) {
+  return page.evaluate((p) => {
+    const input = document.querySelector(`[data-field="${p}"]`);
+    if (!input) return { found: false };
+    const slot = document.getElementById(input.dataset.errorId);
+    return {
+      found: true,
+      invalid: input.getAttribute("aria-invalid") === "true",
+      text: slot && !slot.hidden ? slot.textContent : "",
+      sameField: Boolean(slot && input.closest(".field") === slot.closest(".field")),
+      described: (input.getAttribute("aria-describedby") ?? "").split(" ").includes(slot?.id),
+    };
+  }, path);
+}
+
+// [SECTION] the run
+
+let server;
+let browser;
+try {
+  server = await startServer();
+  browser = await chromium.launch({
+    executablePath: chromiumPath,
+    args: ["--no-sandbox", "--disable-gpu", "--no-first-run", "--disable-background-networking", "--disable-component-update", "--disable-sync", "--disable-quic"],
+  });
+  const page = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+  const pageErrors = [];
+  page.on("pageerror", (e) => pageErrors.push(e.message));
+
+  await check("the page loads, lists the presets with the paper first, and opens a preset link", async () => {
+    await page.goto(`${server.base}/#preset=grazing`);
+    await waitForRun(page, 0);
+    const names = await page.$$eval("#preset option", (os) => os.map((o) => o.value).filter(Boolean));
+    expect(names[0] === "paper", `first preset is ${names[0]}, not paper`);
+    expect(names.some((n) => n.startsWith("paper-fig")), "no paper figure presets listed");
+    expect((await page.inputValue("#preset")) === "grazing", "the #preset=grazing link did not select grazing");
+  });
+
+  await check("paper preset: Render shows the figure, the event table and the summary", async () => {
+    const before = await runCount(page);
+    await page.selectOption("#preset", "paper");
+    const picked = await waitForRun(page, before);
+    expect((await page.locator(".assumptions li").count()) > 0, "the paper's assumptions are not shown");
+    expect((await page.inputValue('[data-field="model.R"]')) === "0.5", "the form does not hold the paper scene");
+    await page.click("#render");
+    await waitForRun(page, picked);
+    const fig = await inkFraction(page);
+    expect(fig.width > 0 && fig.height > 0, "the figure has no size");
+    expect(fig.ink > 0.005, `the figure is blank (${(fig.ink * 100).toFixed(2)} % ink)`);
+    const rows = await page.locator("table.events tbody tr").count();
+    expect(rows > 10, `the event table has ${rows} rows`);
+    const answer = await page.textContent("#summary .answer");
+    expect(/impact/.test(answer ?? ""), `no answer sentence in the summary: ${answer}`);
+    expect((await page.locator("table.final tbody tr").count()) === 2, "final states are not listed for both pellets");
+    expect(/error estimate/.test(await page.textContent("#summary .stats")), "no error estimate in the summary");
+    expect((await page.getAttribute("#dl-json", "href"))?.startsWith("blob:"), "no result JSON download");
+    expect((await page.inputValue("#curl")).includes("/api/render?format=png"), "no curl command");
+    await page.screenshot({ path: join(shots, "paper.png") });
+  });
+
+  await check("pellet 2 mass = -1, Enter: the server's error appears next to that field", async () => {
+    const field = '[data-field="model.pellets[1].m"]';
+    await page.fill(field, "-1");
+    await page.press(field, "Enter");
+    await waitForRefusal(page);
+    const e = await errorNextTo(page, "model.pellets[1].m");
+    expect(e.found && e.invalid, "the field is not marked invalid");
+    expect(e.text.length > 0, "no error text next to the field");
+    expect(e.sameField && e.described, "the error text is not attached to the field");
+    await page.evaluate(() => document.getElementById("scene-form").scrollIntoView());
+    await page.screenshot({ path: join(shots, "error.png") });
+  });
+
+  await check("R = 0 after fixing the mass: the error moves to R", async () => {
+    await page.fill('[data-field="model.pellets[1].m"]', "0.2");
+    await page.fill('[data-field="model.R"]', "0");
+    await page.click("#render");
+    await waitForRefusal(page);
+    const r = await errorNextTo(page, "model.R");
+    expect(r.invalid && r.text.length > 0 && r.sameField, "no error next to R");
+    const m = await errorNextTo(page, "model.pellets[1].m");
+    expect(!m.invalid && m.text === "", "the old error on pellet 2's mass was not cleared");
+  });
+
+  await check("the permalink reopens the edited scene in a new page", async () => {
+    await page.fill('[data-field="model.R"]', "0.5");
+    await page.fill('[data-field="t_end"]', "5");
+    const before = await runCount(page);
+    await page.click("#render");
+    await waitForRun(page, before);
+    const link = await page.getAttribute("#permalink", "href");
+    expect(link?.includes("#scene="), `the permalink is ${link}`);
+    const second = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+    second.on("pageerror", (e) => pageErrors.push(e.message));
+    await second.goto(link);
+    await waitForRun(second, 0);
+    expect((await second.inputValue('[data-field="t_end"]')) === "5", "t_end was not restored");
+    expect((await second.inputValue('[data-field="model.pellets[1].phi0"]')) === "-π/12", "pellet 2's φ₀ was not restored");
+    expect((await second.locator("table.events tbody tr").count()) > 0, "the reopened scene did not run");
+    await second.close();
+  });
+
+  await check("no script errors on the page", async () => {
+    expect(pageErrors.length === 0, pageErrors.join("; "));
+  });
+} catch (e) {
+  results.push({ name: "setup", ok: false });
+  console.log(`FAIL setup: ${e.message}`);
+} finally {
+  await browser?.close();
+  server?.proc.kill();
+}
+
+const passed = results.filter((r) => r.ok).length;
+const failed = results.length - passed;
+console.log(`screenshots: ${shots}`);
+console.log(`browser: ${passed} passed, ${failed} failed`);
+process.exit(failed ? 1 : 0);
