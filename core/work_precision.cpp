@@ -100,6 +100,7 @@ WorkPrecisionReport work_precision(const Model& model, const SimOptions& base,
       p.rtol = o.rtol;
       p.atol = o.atol;
       p.median_ms = times[times.size() / 2];
+      p.estimate = run.stats.error_estimate;
       p.steps = run.stats.steps;
       p.rhs_evals = run.stats.rhs_evals;
       p.events = static_cast<long>(run.events.size());

@@ -36,6 +36,7 @@ struct WorkPrecisionPoint {
   // largest of |Δt|/sqrt(R/g) over the events, |Δφ| and sqrt(R/g)·|Δφ̇| at the end; when the
   // event sequences part ways, over the events they share (events_match is then false).
   double error = 0.0;
+  double estimate = 0.0;  // the run's own stats.error_estimate, to compare with `error`
   long steps = 0, rhs_evals = 0;
   long events = 0;
   bool events_match = true;  // reference run: the same events in the same order

@@ -13,6 +13,7 @@ nlohmann::json work_precision_to_json(const WorkPrecisionReport& report) {
                     {"atol", p.atol},
                     {"median_ms", num(p.median_ms)},
                     {"error", num(p.error)},
+                    {"estimate", num(p.estimate)},
                     {"steps", p.steps},
                     {"rhs_evals", p.rhs_evals},
                     {"events", p.events},
