@@ -1,0 +1,39 @@
+#!/usr/bin/env bash
+# Installs the benchmark packages, builds the benchmarks (Release) and runs them with
+# repetitions, pinned to one core, writing JSON to $BUILD_DIR/results/ and markdown tables
+# (medians, ratios) to stdout.
+# Usage: bash bench/run.sh   (BUILD_DIR defaults to build-bench; REPETITIONS to 5)
+set -euo pipefail
+cd "$(dirname "$0")/.."
+build="${BUILD_DIR:-build-bench}"
+reps="${REPETITIONS:-5}"
+core="${BENCH_CORE:-1}"
+
+packages=(libbenchmark-dev libboost-dev libsundials-dev)
+missing=()
+for p in "${packages[@]}"; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  [[ $(id -u) -ne 0 ]] && sudo="sudo"
+  echo "bench: installing ${missing[*]}"
+  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q "${missing[@]}" ||
+    { $sudo apt-get update -q && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q "${missing[@]}"; }
+fi
+
+cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DVIBRO_BUILD_BENCH=ON -DVIBRO_BUILD_TESTS=OFF \
+  > "$build.log" 2>&1 || { cat "$build.log"; exit 1; }
+cmake --build "$build" -j2 --target engine_bench overhead_bench work_precision_bench \
+  event_peer_bench >> "$build.log" 2>&1 || { tail -50 "$build.log"; exit 1; }
+
+mkdir -p "$build/results"
+# One core, as the targets are stated; llvmpipe (3-D panel) then gets that core alone too.
+for b in engine_bench overhead_bench work_precision_bench event_peer_bench; do
+  echo "bench: running $b" >&2
+  LP_NUM_THREADS=1 taskset -c "$core" "$build/bench/$b" \
+    --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
+    --benchmark_min_time=0.05 \
+    --benchmark_out="$build/results/$b.json" --benchmark_out_format=json > /dev/null
+done
+python3 bench/report.py "$build/results"
