@@ -79,7 +79,7 @@ async function render() {
   if (problems.length) {
     problems.forEach((p) => showFieldError(ui.fields, p.field, p.message));
     revealField(ui.fields.querySelector(".invalid"));
-    setStatus(`Not sent: ${problems.length === 1 ? "a field needs" : `${problems.length} fields need`} a valid number.`);
+    setStatus(`Not sent: ${problems.length === 1 ? "a field needs" : `${problems.length} fields need`} a valid value.`, true);
     return;
   }
   state.inFlight?.abort();
@@ -175,11 +175,17 @@ function showRequestError(e) {
   const el = e.field ? showFieldError(ui.fields, e.field, e.message) : null;
   if (el) {
     revealField(el);
-    setStatus(`Not rendered: the server refused ${e.field} — ${e.message}`);
+    setStatus(`Not rendered: ${fieldName(el)} ${e.message} (${e.field}).`, true);
   } else {
     showGeneralError(e.field ? `${e.field}: ${e.message}` : e.message);
-    setStatus("Not rendered.");
+    setStatus("Not rendered.", true);
   }
+}
+
+// What a person calls the field: its accessible label ("Pellet 2 mass m (kg)") or its legend.
+function fieldName(el) {
+  const label = el.getAttribute("aria-label") ?? (el.id && document.querySelector(`label[for="${el.id}"]`)?.textContent);
+  return (label ?? el.querySelector("legend")?.textContent ?? el.dataset.field).trim();
 }
 
 function showGeneralError(message) {
@@ -192,8 +198,9 @@ function hideGeneralError() {
   ui.generalError.textContent = "";
 }
 
-function setStatus(text) {
+function setStatus(text, isError = false) {
   ui.status.textContent = text;
+  ui.status.classList.toggle("error", isError);
 }
 
 // [SECTION] copying
@@ -255,7 +262,18 @@ async function start() {
   await render();
 }
 
+// The header names the server's version, so a screenshot says which engine made the figure.
+async function showVersion() {
+  try {
+    const health = await (await fetch("/api/health")).json();
+    $("health").textContent = `vibro ${health.version ?? ""} · ${health.status ?? "?"}`.replace("  ", " ");
+  } catch {
+    $("health").textContent = "service unreachable";
+  }
+}
+
 async function init() {
+  showVersion();
   try {
     fillPicker(ui.picker, await listPresets());
     await start();

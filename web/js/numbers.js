@@ -64,7 +64,7 @@ export function parseNumber(text) {
 const PI_DENOMINATORS = [1, 2, 3, 4, 6, 8, 12, 16, 24, 32, 36, 48];
 
 // The shortest "kπ/d" that parses back to exactly x, or null.
-function asPiFraction(x) {
+export function asPiFraction(x) {
   if (x === 0) return null;
   for (const d of PI_DENOMINATORS) {
     const k = Math.round((x * d) / Math.PI);

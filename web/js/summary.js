@@ -3,7 +3,7 @@
 // so that one is never read without the other), and the warnings.
 
 import { fill, h } from "./dom.js";
-import { formatValue } from "./numbers.js";
+import { asPiFraction, formatValue } from "./numbers.js";
 
 const STATE_LABELS = { sliding: "sliding", stuck: "stuck", resting_at_limiter: "resting at limiter" };
 
@@ -57,13 +57,19 @@ function finalTable(final) {
           {},
           h("th", { scope: "row" }, String(i + 1)),
           h("td", {}, state),
-          h("td", { class: "n", title: String(f.phi) }, formatValue(f.phi)),
-          h("td", { class: "n", title: String(f.phi_wrapped) }, formatValue(f.phi_wrapped)),
+          h("td", { class: "n", title: String(f.phi) }, angle(f.phi)),
+          h("td", { class: "n", title: String(f.phi_wrapped) }, angle(f.phi_wrapped)),
           h("td", { class: "n" }, formatValue(f.dphi)),
         );
       }),
     ),
   );
+}
+
+// A resting angle is often exactly a limiter's angle, such as 3π/2: say so.
+function angle(x) {
+  const pi = typeof x === "number" ? asPiFraction(x) : null;
+  return pi ? `${formatValue(x)} = ${pi}` : formatValue(x);
 }
 
 function statsLine(st) {
