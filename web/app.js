@@ -193,6 +193,13 @@ function showGeneralError(message) {
   ui.generalError.hidden = false;
 }
 
+// About the page itself (a broken link), kept across renders until dismissed.
+function showNotice(message) {
+  $("notice-text").textContent = message;
+  $("notice").hidden = false;
+}
+$("notice-dismiss").addEventListener("click", () => ($("notice").hidden = true));
+
 function hideGeneralError() {
   ui.generalError.hidden = true;
   ui.generalError.textContent = "";
@@ -248,14 +255,19 @@ window.addEventListener("hashchange", () => start().catch(showRequestError));
 
 async function start() {
   const wanted = readHash();
-  if (wanted.error) showGeneralError(wanted.error);
+  if (wanted.error) showNotice(wanted.error);
   if (wanted.scene) {
     // A scene from a link: name the preset it came from, if the server still has it.
     const name = wanted.scene.name;
     state.preset = name && [...ui.picker.options].some((o) => o.value === name) ? await getPreset(name) : null;
     ui.picker.value = state.preset ? name : "";
-    form.load(wanted.scene);
-    edited();
+    try {
+      form.load(wanted.scene);
+      edited();
+    } catch (e) {
+      showNotice(`The link's scene could not be shown in the form (${e.message}); the paper scene is shown instead.`);
+      await loadPreset("paper");
+    }
   } else {
     await loadPreset(wanted.preset ?? "paper");
   }
