@@ -35,6 +35,7 @@ std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
   std::optional<std::string> text;
   std::string origin;
   json overrides = json::object();
+  double deadline_ms = 0.0;
   for (next = 0; next < args.size(); ++next) {
     const std::string& a = args[next];
     auto value = [&]() -> std::optional<std::string> {
@@ -63,6 +64,18 @@ std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
         else overrides["solver"][a.substr(2)] = std::stod(*v);
       } catch (const std::exception&) {
         print_error(a, "must be a number");
+        return std::nullopt;
+      }
+    } else if (a == "--deadline-ms") {
+      auto v = value();
+      if (!v) return std::nullopt;
+      try {
+        deadline_ms = std::stod(*v);
+      } catch (const std::exception&) {
+        deadline_ms = -1.0;
+      }
+      if (!(deadline_ms > 0.0)) {
+        print_error(a, "must be a positive number of milliseconds");
         return std::nullopt;
       }
     } else if (a == "--trajectories") {
@@ -94,7 +107,9 @@ std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
     print_error(e->field, e->message);
     return std::nullopt;
   }
-  return std::get<Scene>(std::move(parsed));
+  Scene scene = std::get<Scene>(std::move(parsed));
+  if (deadline_ms > 0.0) scene.sim.deadline_ms = deadline_ms;
+  return scene;
 }
 
 int simulate_command(const Args& args) {
