@@ -12,6 +12,16 @@ export const MAX_PELLETS = 8;
 const MAX_LIMITERS = 16;
 const MAX_PLOTS = 8;
 
+const FRICTION_LAWS = [
+  { value: "paper", label: "paper" },
+  { value: "bilateral", label: "bilateral" },
+];
+const METHODS = [
+  { value: "auto", label: "auto (DOP853 ⇄ Radau IIA)" },
+  { value: "dopri5", label: "dopri5 (Dormand–Prince 5(4))" },
+  { value: "dop853", label: "dop853 (Dormand–Prince 8)" },
+  { value: "radau5", label: "radau5 (Radau IIA, implicit)" },
+];
 const PLOT_KINDS = [
   { value: "phase", label: "phase portrait", short: "Phase" },
   { value: "time", label: "time series", short: "Time" },
@@ -106,10 +116,7 @@ export class SceneForm {
           path: "model.friction",
           label: "Friction law",
           value: m.friction ?? "paper",
-          options: [
-            { value: "paper", label: "paper" },
-            { value: "bilateral", label: "bilateral" },
-          ],
+          options: FRICTION_LAWS,
           hint: "bilateral: |N|, on a wire",
         }),
         numberField({ path: "model.mu_s", label: "μₛ — static coefficient", value: m.mu_s, placeholder: "tan α₀", hint: "≥ μ; for the stick test" }),
@@ -138,20 +145,8 @@ export class SceneForm {
         ),
       );
     });
-    const add = h(
-      "button",
-      {
-        type: "button",
-        class: "add",
-        dataset: { action: "add-pellet" },
-        disabled: n >= MAX_PELLETS,
-        onClick: () =>
-          this.restructure(
-            (s) => s.model.pellets.push({ m: 0.2, phi0: 0, dphi0: 0 }),
-            `[data-field="model.pellets[${n}].m"]`,
-          ),
-      },
-      "+ Pellet",
+    const add = addButton("pellet", "+ Pellet", n >= MAX_PELLETS, () =>
+      this.restructure((s) => s.model.pellets.push({ m: 0.2, phi0: 0, dphi0: 0 }), `[data-field="model.pellets[${n}].m"]`),
     );
     return section(`Pellets (${n} of 1–${MAX_PELLETS})`, [
       h("p", { class: "note" }, "Force F(t) = F₀ cos(Ωt + ψ). Angles from the lowest point, positive toward limiter 1; they accept π, e.g. π/12."),
@@ -203,20 +198,8 @@ export class SceneForm {
         ),
       );
     });
-    const add = h(
-      "button",
-      {
-        type: "button",
-        class: "add",
-        dataset: { action: "add-limiter" },
-        disabled: n >= MAX_LIMITERS,
-        onClick: () =>
-          this.restructure(
-            (s) => (s.model.limiters ??= []).push({ angle: Math.PI / 4, k: 0.5 }),
-            `[data-field="model.limiters[${n}].angle"]`,
-          ),
-      },
-      "+ Limiter",
+    const add = addButton("limiter", "+ Limiter", n >= MAX_LIMITERS, () =>
+      this.restructure((s) => (s.model.limiters ??= []).push({ angle: Math.PI / 4, k: 0.5 }), `[data-field="model.limiters[${n}].angle"]`),
     );
     return section(`Limiters (${n})`, [
       h("p", { class: "note" }, "A mobile limiter is disarmed by the impact it takes and re-armed by an impact on the limiter named."),
@@ -236,12 +219,7 @@ export class SceneForm {
           path: "solver.method",
           label: "Integrator",
           value: solver.method ?? "auto",
-          options: [
-            { value: "auto", label: "auto (DOP853 ⇄ Radau IIA)" },
-            { value: "dopri5", label: "dopri5 (Dormand–Prince 5(4))" },
-            { value: "dop853", label: "dop853 (Dormand–Prince 8)" },
-            { value: "radau5", label: "radau5 (Radau IIA, implicit)" },
-          ],
+          options: METHODS,
         }),
         numberField({ path: "solver.rtol", label: "rtol", value: solver.rtol, placeholder: "1e-9", hint: "relative tolerance" }),
         numberField({ path: "solver.atol", label: "atol", value: solver.atol, placeholder: "1e-12", hint: "absolute tolerance" }),
@@ -254,20 +232,13 @@ export class SceneForm {
   plotsSection(plots, pelletCount) {
     const n = plots.length;
     const cards = plots.map((p, i) => this.plotCard(p, i, pelletCount, n));
-    const adders = PLOT_KINDS.map((k) =>
-      h(
-        "button",
-        {
-          type: "button",
-          class: "add",
-          disabled: n >= MAX_PLOTS,
-          dataset: { action: `add-${k.value}` },
-          "aria-label": `Add a ${KIND_TITLES[k.value]} panel`,
-          onClick: () => this.restructure((s) => (s.plots ??= []).push(newPlot(k.value, pelletCount)), `[data-field="plots[${n}].kind"]`),
-        },
-        `+ ${k.short}`,
-      ),
-    );
+    const adders = PLOT_KINDS.map((k) => {
+      const button = addButton(k.value, `+ ${k.short}`, n >= MAX_PLOTS, () =>
+        this.restructure((s) => (s.plots ??= []).push(newPlot(k.value, pelletCount)), `[data-field="plots[${n}].kind"]`),
+      );
+      button.setAttribute("aria-label", `Add a ${KIND_TITLES[k.value]} panel`);
+      return button;
+    });
     return section(`Panels (${n} of ${MAX_PLOTS})`, [cards, h("div", { class: "adders" }, adders)], { field: "plots" });
   }
 
@@ -372,6 +343,11 @@ function card(path, title, removeBtn, body) {
 
 function errorSlot() {
   return h("p", { class: "field-error", hidden: true });
+}
+
+// data-action="add-<what>" lets focus return to it after a removal.
+function addButton(what, label, disabled, onClick) {
+  return h("button", { type: "button", class: "add", dataset: { action: `add-${what}` }, disabled, onClick }, label);
 }
 
 function removeButton(label, disabled, onClick) {
