@@ -1,6 +1,8 @@
 #include "io/json_fields.h"
 
+#include <algorithm>
 #include <cmath>
+#include <vector>
 
 namespace vibro {
 
@@ -92,11 +94,41 @@ const nlohmann::json* Fields::array(const std::string& key, std::size_t max_item
   return v;
 }
 
+namespace {
+
+// Edit distance, to suggest the field a typo meant.
+std::size_t distance(const std::string& a, const std::string& b) {
+  std::vector<std::size_t> row(b.size() + 1);
+  for (std::size_t j = 0; j <= b.size(); ++j) row[j] = j;
+  for (std::size_t i = 1; i <= a.size(); ++i) {
+    std::size_t diagonal = row[0];
+    row[0] = i;
+    for (std::size_t j = 1; j <= b.size(); ++j) {
+      const std::size_t up = row[j];
+      row[j] = std::min({row[j] + 1, row[j - 1] + 1, diagonal + (a[i - 1] != b[j - 1] ? 1 : 0)});
+      diagonal = up;
+    }
+  }
+  return row[b.size()];
+}
+
+}  // namespace
+
 void Fields::done() const {
   for (auto it = json_.begin(); it != json_.end(); ++it) {
-    if (!read_.count(it.key())) {
-      throw FieldException(path(it.key()), "is not a known field here");
+    if (read_.count(it.key())) continue;
+    std::string message = "is not a known field here";
+    std::string best;
+    std::size_t best_distance = 3;  // suggest only close matches
+    for (const std::string& known : read_) {
+      const std::size_t d = distance(it.key(), known);
+      if (d < best_distance) {
+        best_distance = d;
+        best = known;
+      }
     }
+    if (!best.empty()) message += " (did you mean \"" + best + "\"?)";
+    throw FieldException(path(it.key()), message);
   }
 }
 
