@@ -175,7 +175,7 @@ function showRequestError(e) {
   const el = e.field ? showFieldError(ui.fields, e.field, e.message) : null;
   if (el) {
     revealField(el);
-    setStatus(`Not rendered: ${fieldName(el)} ${e.message} (${e.field}).`, true);
+    setStatus(`Not rendered — ${fieldName(el)}: ${e.message} (${e.field}).`, true);
   } else {
     showGeneralError(e.field ? `${e.field}: ${e.message}` : e.message);
     setStatus("Not rendered.", true);

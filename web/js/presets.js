@@ -19,7 +19,7 @@ export function fillPicker(select, presets) {
   fill(select,
     h("option", { value: "" }, "— your own scene —"),
     groupPresets(presets).map((g) =>
-      h("optgroup", { label: g.label }, g.presets.map((p) => h("option", { value: p.name }, p.name))),
+      h("optgroup", { label: g.label }, g.presets.map((p) => h("option", { value: p.name, title: p.description }, p.name))),
     ),
   );
 }

@@ -17,10 +17,10 @@ const FRICTION_LAWS = [
   { value: "bilateral", label: "bilateral" },
 ];
 const METHODS = [
-  { value: "auto", label: "auto (DOP853 ⇄ Radau IIA)" },
-  { value: "dopri5", label: "dopri5 (Dormand–Prince 5(4))" },
-  { value: "dop853", label: "dop853 (Dormand–Prince 8)" },
-  { value: "radau5", label: "radau5 (Radau IIA, implicit)" },
+  { value: "auto", label: "auto" },
+  { value: "dopri5", label: "dopri5 (explicit, 5)" },
+  { value: "dop853", label: "dop853 (explicit, 8)" },
+  { value: "radau5", label: "radau5 (implicit, 5)" },
 ];
 const PLOT_KINDS = [
   { value: "phase", label: "phase portrait", short: "Phase" },
@@ -220,6 +220,7 @@ export class SceneForm {
           label: "Integrator",
           value: solver.method ?? "auto",
           options: METHODS,
+          hint: "auto: DOP853, Radau IIA when stiff",
         }),
         numberField({ path: "solver.rtol", label: "rtol", value: solver.rtol, placeholder: "1e-9", hint: "relative tolerance" }),
         numberField({ path: "solver.atol", label: "atol", value: solver.atol, placeholder: "1e-12", hint: "absolute tolerance" }),
