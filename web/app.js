@@ -1,9 +1,9 @@
 // The page: a scene editor on the left, the run on the right. This file wires the modules
 // together; each view and each encoding lives in web/js/.
 
-import { fill } from "./js/dom.js";
 import { ApiError, getPreset, listPresets, renderImage, simulate } from "./js/api.js";
 import { curlCommand } from "./js/curl.js";
+import { fill } from "./js/dom.js";
 import { showEvents } from "./js/events_table.js";
 import { clearFieldErrors, revealField, showFieldError } from "./js/field_errors.js";
 import { readHash, sceneLink } from "./js/permalink.js";
@@ -62,8 +62,10 @@ function edited() {
   const modified = state.preset ? !sameScene(scene, state.preset) : false;
   describePreset(ui.about, state.preset, modified);
   if (problems.length) return;
-  history.replaceState(null, "", `#${sceneLink(scene).split("#")[1]}`);
-  ui.permalink.href = sceneLink(scene);
+  // The address bar is the permalink too, so a bookmark or a reload keeps the scene.
+  const link = sceneLink(scene);
+  history.replaceState(null, "", link);
+  ui.permalink.href = link;
   ui.curl.value = curlCommand(scene, ui.curlWhat.value);
   if (state.run && !sameScene(scene, state.run.scene)) setStatus("Edited since the last render: press Render to update.");
 }
@@ -184,8 +186,8 @@ function showRequestError(e) {
 
 // What a person calls the field: its accessible label ("Pellet 2 mass m (kg)") or its legend.
 function fieldName(el) {
-  const label = el.getAttribute("aria-label") ?? (el.id && document.querySelector(`label[for="${el.id}"]`)?.textContent);
-  return (label ?? el.querySelector("legend")?.textContent ?? el.dataset.field).trim();
+  const label = el.getAttribute("aria-label") || (el.id && document.querySelector(`label[for="${el.id}"]`)?.textContent);
+  return (label || el.querySelector("legend")?.textContent || el.dataset.field).trim();
 }
 
 function showGeneralError(message) {
