@@ -37,14 +37,15 @@ double body_free_acceleration(const Model& model, const Body& body, double t, do
 }
 
 SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bodies)
-    : model_(model), bodies_(bodies) {
+    : model_(model), bodies_(bodies), mu_(model.mu()), gR_(model.g / model.R) {
   mass_.reserve(bodies.size());
   for (const Body& b : bodies) mass_.push_back(body_mass(model, b));
 }
 
+// The hot loop of every run: each transcendental function is computed once per body.
 void SegmentDynamics::rhs(double t, const Vec& y, Vec& dydt) const {
   const double R = model_.R;
-  const double mu = model_.mu();
+  const bool paper = model_.friction == FrictionLaw::paper;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
     if (body.mode != Mode::sliding) {
@@ -57,16 +58,26 @@ void SegmentDynamics::rhs(double t, const Vec& y, Vec& dydt) const {
     }
     const int L = body.leader();
     const double phi = y[phi_index(L)], dphi = y[dphi_index(L)];
-    double F = 0.0;
-    for (int i : body.members) F += model_.pellets[i].force.at(t);
-    const double acc = sliding_acceleration(model_, F, mass_[b], body.s, phi, dphi);
-    double n = normal_per_mass(model_, phi, dphi);
-    if (model_.friction == FrictionLaw::bilateral) n = std::abs(n);
+    const double c = std::cos(phi), sn = std::sin(phi);
+    const int s = body.s;
+    const bool alone = body.members.size() == 1;
+    auto force = [&](int i) {
+      const Forcing& f = model_.pellets[i].force;
+      return f.active() ? f.at(t) : 0.0;
+    };
+    double F = alone ? force(L) : 0.0;
+    if (!alone)
+      for (int i : body.members) F += force(i);
+    const double q = dphi * dphi + gR_ * c;  // normal force per unit mass, over R
+    const double acc = paper ? F / (mass_[b] * R) - s * mu_ * dphi * dphi - gR_ * (sn + s * mu_ * c)
+                             : F / (mass_[b] * R) - gR_ * sn - s * mu_ * std::abs(q);
+    const double n = R * (paper ? q : std::abs(q));  // g cos phi + R dphi², or its magnitude
     for (int i : body.members) {
       const double m = model_.pellets[i].m;
+      const double Fi = alone ? F : force(i);
       dydt[phi_index(i)] = y[dphi_index(i)];
       dydt[dphi_index(i)] = acc;
-      dydt[work_index(i)] = R * dphi * (model_.pellets[i].force.at(t) - m * body.s * mu * n);
+      dydt[work_index(i)] = R * dphi * (Fi - m * s * mu_ * n);
     }
   }
 }

@@ -36,6 +36,8 @@ class SegmentDynamics final : public OdeSystem {
   const Model& model_;
   const std::vector<Body>& bodies_;
   std::vector<double> mass_;  // per body
+  double mu_;                 // tan(alpha0)
+  double gR_;                 // g / R
 };
 
 }  // namespace vibro

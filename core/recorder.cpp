@@ -26,7 +26,7 @@ Recorder::Recorder(const Model& model, const std::vector<bool>& record, double r
   }
 }
 
-void Recorder::sample(double t, const Vec& y, const std::vector<Body>& bodies) {
+void Recorder::sample(double t, const Vec& y) {
   if (t <= record_until_) {
     for (PelletTrack& track : tracks_) {
       const int i = track.pellet;
@@ -37,6 +37,9 @@ void Recorder::sample(double t, const Vec& y, const std::vector<Body>& bodies) {
       track.branches.back().samples.push_back({t, y[phi_index(i)], y[dphi_index(i)]});
     }
   }
+}
+
+void Recorder::check_normal_force(double t, const Vec& y, const std::vector<Body>& bodies) {
   if (model_.friction != FrictionLaw::paper || model_.alpha0 == 0.0) return;
   for (const Body& b : bodies) {
     const double phi = y[phi_index(b.leader())], dphi = y[dphi_index(b.leader())];

@@ -15,8 +15,11 @@ class Recorder {
  public:
   Recorder(const Model& model, const std::vector<bool>& record, double record_until);
 
-  // A state of the whole system at time t; `bodies` says who slides.
-  void sample(double t, const Vec& y, const std::vector<Body>& bodies);
+  // A state of the whole system at time t, kept for the recorded pellets.
+  void sample(double t, const Vec& y);
+  // Watches the paper law's normal force of the sliding bodies (at step ends and events: a cos
+  // per body is not worth paying at every sample).
+  void check_normal_force(double t, const Vec& y, const std::vector<Body>& bodies);
   // Pellet i's motion interval ends at t (an event touched it); the next sample opens a new one.
   void end_branch(int pellet);
   // Closes open warning intervals at the end of the run and hands everything over.

@@ -598,7 +598,8 @@ void Simulation::start_segment(double t) {
   dynamics_ = std::make_unique<SegmentDynamics>(model_, bodies_);
   stepper_->start(*dynamics_, t, y_);
   finder_.start(watches_, model_, bodies_, t, y_);
-  recorder_.sample(t, y_, bodies_);
+  recorder_.sample(t, y_);
+  recorder_.check_normal_force(t, y_, bodies_);
 }
 
 RunResult Simulation::run() {
@@ -660,10 +661,11 @@ RunResult Simulation::run() {
           watches_, model_, bodies_, a, times, states, simultaneous,
           [&](double tt, Vec& out) { stepper_->dense(tt, out); });
       const double t_stop = found.empty() ? b : found.front().t;
-      for (int k = 0; k <= m && times[k] < t_stop; ++k) recorder_.sample(times[k], states[k], bodies_);
+      for (int k = 0; k <= m && times[k] < t_stop; ++k) recorder_.sample(times[k], states[k]);
       if (found.empty()) {
         t = b;
         y_ = stepper_->y();
+        recorder_.check_normal_force(t, y_, bodies_);
         first_integral_check(t, y_);
         check_energy();
       } else {
@@ -671,7 +673,8 @@ RunResult Simulation::run() {
         stepper_->dense(t, y_event);
         y_ = y_event;
         first_integral_check(t, y_);
-        recorder_.sample(t, y_, bodies_);
+        recorder_.sample(t, y_);
+        recorder_.check_normal_force(t, y_, bodies_);
         same_instant_ = std::abs(t - last_instant_) <= simultaneous ? same_instant_ + 1 : 0;
         last_instant_ = t;
         if (same_instant_ > 1000) {
@@ -694,7 +697,7 @@ RunResult Simulation::run() {
     // Report the last finite state.
     if (!std::isfinite(y_.sum())) y_ = stepper_->y();
   }
-  recorder_.sample(std::min(t, t_end), y_, bodies_);
+  recorder_.sample(std::min(t, t_end), y_);
   recorder_.finish(t, result_);
   std::stable_sort(result_.events.begin(), result_.events.end(),
                    [](const Event& a, const Event& b) { return a.t < b.t; });

@@ -72,6 +72,7 @@ class CrossingFinder {
  private:
   std::vector<double> last_;
   std::vector<bool> armed_;
+  Vec scratch_, scratch_left_;  // dense states while refining roots, kept to avoid allocation
 };
 
 // Brent's root finder on [a, b] with f(a) > 0 >= f(b); returns the smallest bracketing point

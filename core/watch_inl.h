@@ -85,7 +85,8 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
             [](const Bracket& x, const Bracket& y) { return x.b < y.b; });
   std::vector<Crossing> found;
   double earliest = std::numeric_limits<double>::infinity();
-  Vec y(states.front().size());
+  Vec& y = scratch_;
+  y.resize(states.front().size());
   for (const Bracket& br : brackets) {
     if (br.a > earliest + simultaneous) break;
     const Watch& w = watches[br.watch];
@@ -111,7 +112,8 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
       if (g_end > 0.0) continue;
       // The last sample before `earliest` where it was positive brackets the root.
       double a = t_prev, fa = 0.0;
-      Vec ya(y.size());
+      Vec& ya = scratch_left_;
+      ya.resize(y.size());
       dense(t_prev, ya);
       fa = evaluate(watches[w], model, bodies, t_prev, ya);
       for (std::size_t k = 0; k < times.size() && times[k] < earliest; ++k) {
