@@ -30,6 +30,7 @@ int simulate_command(const Args& args);
 int presets_command(const Args& args);
 int preset_command(const Args& args);
 int render_command(const Args& args);
+int serve_command(const Args& args);
 int work_precision_command(const Args& args);
 
 }  // namespace vibro

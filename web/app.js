@@ -33,18 +33,28 @@ const ui = {
 
 const state = {
   preset: null, // the preset scene the form started from, as the server sent it
+  presetAsForm: null, // the same, as the form reads it back
   run: null, // {scene, images: {png, svg} as object URLs, json: object URL}
   inFlight: null, // AbortController of the request under way
   runs: 0,
 };
 
 const form = new SceneForm(ui.fields, { onEdit: scheduleEdited });
+// A form never shown: reads a preset the way the visible form would (its selects always send
+// friction and method, say), so "edited" means the person changed something, not the defaults.
+const probe = new SceneForm(document.createElement("div"), { onEdit() {} });
+
+function asForm(scene) {
+  probe.load(scene);
+  return probe.read().scene;
+}
 
 // [SECTION] scene in the form
 
 async function loadPreset(name) {
   const scene = await getPreset(name);
   state.preset = scene;
+  state.presetAsForm = asForm(scene);
   ui.picker.value = name;
   form.load(scene);
   edited();
@@ -59,7 +69,7 @@ function scheduleEdited() {
 
 function edited() {
   const { scene, problems } = form.read();
-  const modified = state.preset ? !sameScene(scene, state.preset) : false;
+  const modified = state.presetAsForm ? !sameScene(scene, state.presetAsForm) : false;
   describePreset(ui.about, state.preset, modified);
   if (problems.length) return;
   // The address bar is the permalink too, so a bookmark or a reload keeps the scene.
@@ -262,6 +272,7 @@ async function start() {
     // A scene from a link: name the preset it came from, if the server still has it.
     const name = wanted.scene.name;
     state.preset = name && [...ui.picker.options].some((o) => o.value === name) ? await getPreset(name) : null;
+    state.presetAsForm = state.preset ? asForm(state.preset) : null;
     ui.picker.value = state.preset ? name : "";
     try {
       form.load(wanted.scene);

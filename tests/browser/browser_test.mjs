@@ -165,6 +165,7 @@ try {
     expect(names[0] === "paper", `first preset is ${names[0]}, not paper`);
     expect(names.some((n) => n.startsWith("paper-fig")), "no paper figure presets listed");
     expect((await page.inputValue("#preset")) === "grazing", "the #preset=grazing link did not select grazing");
+    expect((await page.locator("#preset-about .modified").count()) === 0, "an untouched preset is called edited");
   });
 
   await check("paper preset: Render shows the figure, the event table and the summary", async () => {

@@ -40,10 +40,9 @@ export function describePreset(container, scene, modified) {
   );
 }
 
-// Whether two scenes ask for the same run (key order and descriptive keys aside).
+// Whether two scenes read from forms are the same (key order aside).
 export function sameScene(a, b) {
-  const strip = ({ description, assumptions, ...rest }) => rest;
-  return canonical(strip(a)) === canonical(strip(b));
+  return canonical(a) === canonical(b);
 }
 
 function canonical(v) {
