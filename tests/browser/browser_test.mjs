@@ -199,7 +199,6 @@ try {
     expect(e.found && e.invalid, "the field is not marked invalid");
     expect(e.text.length > 0, "no error text next to the field");
     expect(e.sameField && e.described, "the error text is not attached to the field");
-    await page.evaluate(() => document.getElementById("scene-form").scrollIntoView());
     await page.screenshot({ path: join(shots, "error.png") });
   });
 

@@ -52,11 +52,11 @@ export function revealField(el) {
   target.focus({ preventScroll: true });
   const box = scrollBox(target);
   if (!box) {
-    target.scrollIntoView({ block: "center", behavior: "smooth" });
+    target.scrollIntoView({ block: "center" });
     return;
   }
   const offset = target.getBoundingClientRect().top - box.getBoundingClientRect().top;
-  box.scrollBy({ top: offset - box.clientHeight / 2, behavior: "smooth" });
+  box.scrollBy({ top: offset - box.clientHeight / 2 });
 }
 
 function scrollBox(el) {
