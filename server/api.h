@@ -1,0 +1,53 @@
+// The handlers of the endpoints in API.md, and the shared path behind the costly ones:
+// canonical key → If-None-Match → cache → bounded worker queue → answer.
+#pragma once
+
+#include <functional>
+#include <string>
+
+#include "io/scene.h"
+#include "server/config.h"
+#include "server/http.h"
+#include "server/response_cache.h"
+#include "server/run_scene.h"
+#include "server/static_files.h"
+#include "server/worker_pool.h"
+
+namespace vibro::server {
+
+class Api {
+ public:
+  explicit Api(const ServerConfig& config);
+
+  void health(const httplib::Request& req, httplib::Response& res) const;
+  void limits(const httplib::Request& req, httplib::Response& res) const;
+  void preset_list(const httplib::Request& req, httplib::Response& res) const;
+  void preset(const httplib::Request& req, httplib::Response& res) const;  // /api/presets/{name}
+  void simulate_post(const httplib::Request& req, httplib::Response& res);
+  void simulate_get(const httplib::Request& req, httplib::Response& res);  // ?preset=NAME
+  void render_post(const httplib::Request& req, httplib::Response& res);
+  void render_get(const httplib::Request& req, httplib::Response& res);  // ?preset=NAME
+  void static_file(const httplib::Request& req, httplib::Response& res) const;
+
+  // Draws the paper preset into the cache, as GET /api/render?preset=paper asks for it, so the
+  // page's first figure is ready. False (with the error) if that fails.
+  bool warm_up(std::string& error);
+
+  const StaticFiles& web() const { return web_; }
+
+ private:
+  void simulate(const Scene& scene, const httplib::Request& req, httplib::Response& res);
+  void render(const Scene& scene, const httplib::Request& req, httplib::Response& res);
+  // Answers from the cache, or runs `job` on a worker and caches what it produces.
+  void answer(const std::string& key, std::function<JobResult()> job, const httplib::Request& req,
+              httplib::Response& res);
+
+  const ServerConfig config_;
+  const SceneLimits scene_limits_;
+  const std::string preset_list_;  // the JSON of GET /api/presets, made once
+  StaticFiles web_;
+  ResponseCache cache_;
+  WorkerPool workers_;  // last: its destructor runs queued jobs, which use the members above
+};
+
+}  // namespace vibro::server

@@ -1,0 +1,37 @@
+#include "server/config.h"
+
+#include <algorithm>
+#include <thread>
+
+namespace vibro::server {
+
+SceneLimits scene_limits(const Limits& limits) {
+  SceneLimits s;
+  s.sim.max_pellets = limits.pellets;
+  s.sim.max_limiters = limits.limiters;
+  s.sim.max_t_end = limits.t_end;
+  s.max_plots = limits.plots;
+  s.max_width = limits.width;
+  s.max_height = limits.height;
+  return s;
+}
+
+nlohmann::json limits_json(const Limits& limits) {
+  return {{"body_bytes", limits.body_bytes}, {"t_end", limits.t_end},
+          {"events", limits.events},         {"steps", limits.steps},
+          {"samples", limits.samples},       {"deadline_ms", limits.deadline_ms},
+          {"width", limits.width},           {"height", limits.height},
+          {"pixels", limits.pixels},         {"pellets", limits.pellets},
+          {"limiters", limits.limiters},     {"plots", limits.plots}};
+}
+
+int worker_count(const ServerConfig& config) {
+  if (config.workers > 0) return config.workers;
+  return std::max(1, static_cast<int>(std::thread::hardware_concurrency()));
+}
+
+std::string web_dir(const ServerConfig& config) {
+  return config.web_dir.empty() ? std::string(VIBRO_WEB_DIR) : config.web_dir;
+}
+
+}  // namespace vibro::server

@@ -1,0 +1,60 @@
+// Everything `vibro serve` can be told, in one struct: where to listen, how many threads, and the
+// limits that bound the work any one request may cause. docs/SERVER.md lists the defaults and the
+// flags that change them.
+#pragma once
+
+#include <cstddef>
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "io/scene.h"
+
+namespace vibro::server {
+
+// What one request may cost. A scene over a limit that can be known up front (sizes, counts,
+// t_end) is refused before any work; the rest (events, steps, samples, wall clock) stop the run.
+struct Limits {
+  std::size_t body_bytes = 64 * 1024;  // request body
+  double t_end = 1000.0;               // s, simulated time span
+  long events = 20000;                 // events a run may list
+  long steps = 2'000'000;              // accepted plus rejected integrator steps
+  long samples = 200'000;              // trajectory points kept (all recorded pellets together)
+  double deadline_ms = 2000.0;         // wall clock of one simulation
+  int width = 4000;                    // image width, px
+  int height = 4000;                   // image height, px
+  long pixels = 8'000'000;             // width × height
+  int pellets = 8;
+  int limiters = 16;
+  int plots = 8;
+};
+
+struct ServerConfig {
+  std::string host = "127.0.0.1";  // loopback unless told otherwise
+  int port = 8080;                 // 0: an ephemeral port (tests)
+  std::string web_dir;             // static files; empty: the repository's web/
+  int workers = 0;                 // simulation and render threads; 0: one per core
+  std::size_t queue = 64;          // jobs waiting for a worker; beyond it: 503
+  // Threads that read requests and write responses; each holds one connection at a time,
+  // so this must cover the clients' keep-alive connections.
+  int connection_threads = 32;
+  int read_timeout_s = 5;  // a client that stalls this long mid-request is dropped
+  int write_timeout_s = 5;
+  int keep_alive_s = 2;                        // idle keep-alive connections are closed after this
+  std::size_t cache_bytes = 64 * 1024 * 1024;  // results and images, least recently used dropped
+  bool access_log = true;                      // one line per request on stderr
+  Limits limits;
+};
+
+// The scene reader's bounds, from the server's limits.
+SceneLimits scene_limits(const Limits& limits);
+
+// The limits as GET /api/limits shows them.
+nlohmann::json limits_json(const Limits& limits);
+
+// The worker count after resolving 0 to the number of cores.
+int worker_count(const ServerConfig& config);
+
+// The web directory after resolving empty to the repository's web/.
+std::string web_dir(const ServerConfig& config);
+
+}  // namespace vibro::server

@@ -1,0 +1,93 @@
+#include "server/router.h"
+
+#include <charconv>
+
+#include "server/api_error.h"
+
+namespace vibro::server {
+namespace {
+
+using Result = httplib::Server::HandlerResponse;
+
+bool matches(const Route& route, const std::string& path) {
+  if (route.path.ends_with('/')) return path.starts_with(route.path);
+  return path == route.path;
+}
+
+bool under_api(const std::string& path) { return path == "/api" || path.starts_with("/api/"); }
+
+// The media type without parameters ("application/json; charset=utf-8" → "application/json").
+std::string media_type(const std::string& content_type) {
+  std::string type = content_type.substr(0, content_type.find(';'));
+  while (!type.empty() && type.back() == ' ') type.pop_back();
+  for (char& c : type) c = static_cast<char>(std::tolower(static_cast<unsigned char>(c)));
+  return type;
+}
+
+}  // namespace
+
+Result Router::route(const httplib::Request& req, httplib::Response& res) const {
+  // A refusal sent before the body is read must also end the connection: the unread body
+  // would otherwise be taken for the next request.
+  const std::string length_text = req.get_header_value("Content-Length");
+  const bool has_body =
+      req.has_header("Transfer-Encoding") || (!length_text.empty() && length_text != "0");
+  const std::string method = req.method == "HEAD" ? "GET" : req.method;
+
+  const Route* found = nullptr;
+  std::string allowed;
+  const auto consider = [&](const Route& r) {
+    if (r.method == method)
+      found = &r;
+    else if (allowed.find(r.method) == std::string::npos)
+      allowed += (allowed.empty() ? "" : ", ") + r.method;
+  };
+  for (const Route& r : routes_) {
+    if (!found && matches(r, req.path)) consider(r);
+  }
+  if (!found && allowed.empty() && !under_api(req.path)) consider(pages_);
+  if (!found && allowed.empty()) {
+    send_error(res, {404, "path", "no such endpoint: " + req.path}, has_body);
+    return Result::Handled;
+  }
+  if (!found) {
+    res.set_header("Allow", allowed);
+    send_error(res, {405, "method", req.method + " is not allowed here; use " + allowed}, has_body);
+    return Result::Handled;
+  }
+  if (method != "POST") {
+    if (has_body) {
+      send_error(res, {400, "body", "a " + req.method + " request takes no body"}, true);
+    } else {
+      found->handler(req, res);
+    }
+    return Result::Handled;
+  }
+
+  if (req.has_header("Transfer-Encoding") || !req.has_header("Content-Length")) {
+    send_error(res, {411, "body", "send the scene with a Content-Length, not chunked"}, true);
+    return Result::Handled;
+  }
+  std::size_t length = 0;
+  const auto [end, ec] =
+      std::from_chars(length_text.data(), length_text.data() + length_text.size(), length);
+  if (ec == std::errc::result_out_of_range || (ec == std::errc() && length > max_body_bytes_)) {
+    send_error(
+        res,
+        {413, "body",
+         "the body is over the server's limit of " + std::to_string(max_body_bytes_) + " bytes"},
+        true);
+    return Result::Handled;
+  }
+  if (ec != std::errc() || end != length_text.data() + length_text.size()) {
+    send_error(res, {400, "Content-Length", "must be a byte count"}, true);
+    return Result::Handled;
+  }
+  if (media_type(req.get_header_value("Content-Type")) != "application/json") {
+    send_error(res, {415, "Content-Type", "must be application/json"}, true);
+    return Result::Handled;
+  }
+  return Result::Unhandled;
+}
+
+}  // namespace vibro::server

@@ -1,0 +1,103 @@
+#include "server/run_scene.h"
+
+#include <algorithm>
+#include <sstream>
+
+#include "core/simulate.h"
+#include "io/result_json.h"
+#include "render/run_plan.h"
+
+namespace vibro::server {
+namespace {
+
+// The scene's options within the server's limits. Recorded branches cost memory per sample,
+// so when pellets are recorded the step budget also bounds the samples they keep.
+struct BoundedOptions {
+  SimOptions options;
+  bool samples_bound = false;  // the step budget comes from the sample limit
+};
+
+BoundedOptions bounded(SimOptions options, const Limits& limits) {
+  BoundedOptions b;
+  options.max_events = std::min(options.max_events, limits.events);
+  options.max_steps = std::min(options.max_steps, limits.steps);
+  options.deadline_ms = std::min(options.deadline_ms, limits.deadline_ms);
+  const long recorded = std::count(options.record.begin(), options.record.end(), true);
+  if (recorded > 0) {
+    const long per_step = recorded * (options.samples_per_step + 1);
+    const long by_samples = std::max(1L, limits.samples / per_step);
+    if (by_samples < options.max_steps) {
+      options.max_steps = by_samples;
+      b.samples_bound = true;
+    }
+  }
+  b.options = std::move(options);
+  return b;
+}
+
+// A run that a limit stopped is refused (422) with its partial stats; a completed run, or one
+// the numerics ended (its result says so), is an answer.
+std::optional<ApiError> stopped_by_limit(const RunResult& run, const Scene& scene,
+                                         const BoundedOptions& b, const Limits& limits) {
+  const Stats& st = run.stats;
+  std::ostringstream why;
+  switch (st.termination) {
+    case Termination::completed:
+    case Termination::numerical_failure:
+      return std::nullopt;
+    case Termination::deadline:
+      why << "the run took longer than its deadline of " << limits.deadline_ms << " ms";
+      break;
+    case Termination::event_limit:
+      why << "the run has more than the server's limit of " << b.options.max_events << " events";
+      break;
+    case Termination::step_limit:
+      if (b.samples_bound) {
+        why << "the trajectories drawn need more than the server's limit of " << limits.samples
+            << " samples";
+      } else {
+        why << "the run needs more than the server's limit of " << b.options.max_steps << " steps";
+      }
+      break;
+  }
+  why << " (stopped at t = " << st.t_reached << " s of t_end = " << b.options.t_end
+      << " s); shorten t_end or loosen the tolerances";
+  ApiError error{422, "t_end", why.str()};
+  error.extra["stats"] = result_to_json(run, scene.model)["stats"];
+  return error;
+}
+
+}  // namespace
+
+std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, const Limits& limits) {
+  const FigureSpec& f = scene.figure;
+  if (static_cast<long>(f.width) * f.height > limits.pixels) {
+    return ApiError{400, "width",
+                    "width × height = " + std::to_string(static_cast<long>(f.width) * f.height) +
+                        " px is over the server's limit of " + std::to_string(limits.pixels) +
+                        " px"};
+  }
+  if (auto e = validate_figure(f, scene.model, format)) return ApiError::from(*e);
+  return std::nullopt;
+}
+
+JobResult simulate_scene(const Scene& scene, const Limits& limits) {
+  SimOptions options = scene.sim;
+  options.record.assign(scene.model.size(), scene.trajectories);
+  const BoundedOptions b = bounded(std::move(options), limits);
+  const RunResult run = simulate(scene.model, b.options);
+  if (auto error = stopped_by_limit(run, scene, b, limits)) return *error;
+  return Produced{result_to_json(run, scene.model).dump(), "application/json"};
+}
+
+JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& limits) {
+  const RunPlan plan = plan_run(scene.figure, scene.sim, scene.model.size());
+  const BoundedOptions b = bounded(plan.options, limits);
+  const RunResult run = simulate(scene.model, b.options);
+  if (auto error = stopped_by_limit(run, scene, b, limits)) return *error;
+  RenderResult image = render_figure(scene.figure, scene.model, run, format);
+  if (!image.ok()) return ApiError::from(*image.error);
+  return Produced{std::string(image.bytes.begin(), image.bytes.end()), image.content_type};
+}
+
+}  // namespace vibro::server

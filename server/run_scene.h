@@ -1,0 +1,33 @@
+// The work behind /api/simulate and /api/render, run on a worker: the scene's options bounded
+// by the server's limits, the simulation, the figure, and either the answer or an error that
+// says which limit stopped the run.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <variant>
+
+#include "io/scene.h"
+#include "render/figure.h"
+#include "server/api_error.h"
+#include "server/config.h"
+
+namespace vibro::server {
+
+struct Produced {
+  std::string body;
+  std::string content_type;
+};
+
+using JobResult = std::variant<Produced, ApiError>;
+
+// What can be known before any work: the image's size and the figure against the model.
+std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, const Limits& limits);
+
+// The run as API.md's JSON, with the sampled branches if the scene asks for trajectories.
+JobResult simulate_scene(const Scene& scene, const Limits& limits);
+
+// The scene's plots as one image, computing only what they draw.
+JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& limits);
+
+}  // namespace vibro::server

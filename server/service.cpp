@@ -1,0 +1,164 @@
+#include "server/service.h"
+
+#include <sys/socket.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <cstdio>
+#include <thread>
+
+#include "server/access_log.h"
+#include "server/api.h"
+#include "server/api_error.h"
+#include "server/http.h"
+#include "server/router.h"
+
+namespace vibro::server {
+namespace {
+
+using httplib::Request;
+using httplib::Response;
+
+// cpp-httplib 0.11 listens with a backlog of 5, compiled in: a burst of new connections beyond
+// it is dropped by the kernel and retried by the clients a second later. Listening again on the
+// bound socket updates the backlog in place (Linux).
+class HttpServer : public httplib::Server {
+ public:
+  void widen_backlog() { ::listen(svr_sock_, SOMAXCONN); }
+};
+
+std::vector<Route> api_routes(Api& api) {
+  auto bind = [&api](auto member) {
+    return [&api, member](const Request& req, Response& res) { (api.*member)(req, res); };
+  };
+  return {
+      {"GET", "/api/health", bind(&Api::health)},
+      {"GET", "/api/limits", bind(&Api::limits)},
+      {"GET", "/api/presets", bind(&Api::preset_list)},
+      {"GET", "/api/presets/", bind(&Api::preset)},
+      {"GET", "/api/simulate", bind(&Api::simulate_get)},
+      {"POST", "/api/simulate", bind(&Api::simulate_post)},
+      {"GET", "/api/render", bind(&Api::render_get)},
+      {"POST", "/api/render", bind(&Api::render_post)},
+  };
+}
+
+// Errors cpp-httplib makes itself (a malformed request line, a body over the payload limit, a
+// target too long) get the same JSON shape as ours.
+httplib::Server::HandlerResponse json_error(const Request&, Response& res, std::size_t body_limit) {
+  if (!res.body.empty()) return httplib::Server::HandlerResponse::Unhandled;
+  switch (res.status) {
+    case 413:
+      send_error(
+          res,
+          {413, "body",
+           "the body is over the server's limit of " + std::to_string(body_limit) + " bytes"},
+          true);
+      break;
+    case 414:
+      send_error(res, {414, "path", "the request target is too long"}, true);
+      break;
+    default:
+      send_error(res, {res.status, "request", "the request could not be read as HTTP/1.1"}, true);
+  }
+  return httplib::Server::HandlerResponse::Handled;
+}
+
+}  // namespace
+
+struct Service::State {
+  explicit State(const ServerConfig& config)
+      : config(config),
+        log(config.access_log),
+        api(config),
+        router(
+            api_routes(api),
+            [this](const Request& req, Response& res) { api.static_file(req, res); },
+            config.limits.body_bytes) {}
+
+  const ServerConfig config;
+  const AccessLog log;
+  Api api;
+  const Router router;
+  HttpServer http;
+  std::atomic<bool> stop_requested{false};
+  std::atomic<bool> serving{false};
+  std::atomic<bool> served{false};
+};
+
+Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(config)) {
+  // A client that hangs up mid-response must not end the process with SIGPIPE.
+  std::signal(SIGPIPE, SIG_IGN);
+  State& s = *state_;
+  httplib::Server& http = s.http;
+  http.new_task_queue = [n = config.connection_threads] { return new httplib::ThreadPool(n); };
+  http.set_payload_max_length(config.limits.body_bytes);
+  http.set_read_timeout(config.read_timeout_s);
+  http.set_write_timeout(config.write_timeout_s);
+  http.set_keep_alive_timeout(config.keep_alive_s);
+  // Bounds what a client that ignores "Connection: close" after a refusal can make the server
+  // read: cpp-httplib keeps the socket and takes the unread body for further (bad) requests.
+  http.set_keep_alive_max_count(100);
+  http.set_tcp_nodelay(true);
+  http.set_pre_routing_handler([&s](const Request& req, Response& res) {
+    s.log.start();
+    return s.router.route(req, res);
+  });
+  for (const Route& r : s.router.routes()) {
+    if (r.method == "POST") http.Post(r.path, r.handler);
+  }
+  http.set_error_handler(httplib::Server::HandlerWithResponse(
+      [limit = config.limits.body_bytes](const Request& req, Response& res) {
+        return json_error(req, res, limit);
+      }));
+  // What went wrong inside stays inside: the log says what, the client only that it was not
+  // its fault.
+  http.set_exception_handler([](const Request& req, Response& res, std::exception_ptr error) {
+    std::string what = "unknown exception";
+    try {
+      std::rethrow_exception(error);
+    } catch (const std::exception& e) {
+      what = e.what();
+    } catch (...) {
+    }
+    std::fprintf(stderr, "vibro: %s %s failed: %s\n", req.method.c_str(), req.path.c_str(),
+                 what.c_str());
+    send_error(res, {500, "server", "internal error"});
+  });
+  http.set_logger([&s](const Request& req, const Response& res) { s.log.write(req, res); });
+}
+
+Service::~Service() = default;
+
+int Service::bind() {
+  const ServerConfig& c = state_->config;
+  const int port = c.port == 0 ? state_->http.bind_to_any_port(c.host)
+                   : state_->http.bind_to_port(c.host, c.port) ? c.port
+                                                               : -1;
+  if (port > 0) state_->http.widen_backlog();
+  return port;
+}
+
+bool Service::serve() {
+  State& s = *state_;
+  s.serving = true;
+  const bool ok = s.stop_requested || s.http.listen_after_bind();
+  s.served = true;
+  return ok;
+}
+
+void Service::stop() {
+  State& s = *state_;
+  s.stop_requested = true;
+  // cpp-httplib ignores stop() before its accept loop runs: wait for the loop (or for serve()
+  // to have returned) so a stop that races the start is not lost.
+  while (s.serving && !s.served && !s.http.is_running()) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(1));
+  }
+  s.http.stop();
+}
+
+bool Service::warm_up(std::string& error) { return state_->api.warm_up(error); }
+
+}  // namespace vibro::server

@@ -1,0 +1,134 @@
+// Every endpoint of API.md answers with the right status, content type and shape.
+#include <gtest/gtest.h>
+
+#include <nlohmann/json.hpp>
+
+#include "tests/server/test_server.h"
+
+namespace vibro::testing {
+namespace {
+
+using nlohmann::json;
+
+class Endpoints : public SharedServerTest {};
+
+TEST_F(Endpoints, HealthSaysOkAndTheVersion) {
+  auto res = server->client().Get("/api/health");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
+  const json body = json::parse(res->body);
+  EXPECT_EQ(body["status"], "ok");
+  EXPECT_TRUE(body["version"].is_string());
+}
+
+TEST_F(Endpoints, PresetsListThePaperSceneFirst) {
+  auto res = server->client().Get("/api/presets");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  const json list = json::parse(res->body);
+  ASSERT_TRUE(list.is_array());
+  ASSERT_FALSE(list.empty());
+  EXPECT_EQ(list[0]["name"], "paper");
+  EXPECT_TRUE(list[0]["description"].is_string());
+  EXPECT_TRUE(list[0]["scene"]["model"].is_object());
+}
+
+TEST_F(Endpoints, OnePresetIsItsScene) {
+  auto res = server->client().Get("/api/presets/paper");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
+  const json scene = json::parse(res->body);
+  EXPECT_EQ(scene["model"]["pellets"].size(), 2u);
+}
+
+TEST_F(Endpoints, LimitsAreShown) {
+  auto res = server->client().Get("/api/limits");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  const json limits = json::parse(res->body);
+  EXPECT_EQ(limits["t_end"], 1000.0);
+  EXPECT_EQ(limits["body_bytes"], 65536);
+}
+
+TEST_F(Endpoints, PostSimulateGivesTheRun) {
+  auto res = server->client().Post("/api/simulate", paper_scene(12.0), "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
+  const json run = json::parse(res->body);
+  ASSERT_FALSE(run["events"].empty());
+  EXPECT_EQ(run["events"][0]["kind"], "limiter");
+  EXPECT_EQ(run["summary"]["final"].size(), 2u);
+  EXPECT_EQ(run["stats"]["termination"], "completed");
+  EXPECT_FALSE(run.contains("trajectories"));
+}
+
+TEST_F(Endpoints, TrajectoriesOnlyWhenAsked) {
+  json scene = json::parse(paper_scene(2.0));
+  scene["trajectories"] = true;
+  auto res = server->client().Post("/api/simulate", scene.dump(), "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  const json run = json::parse(res->body);
+  ASSERT_TRUE(run.contains("trajectories"));
+  EXPECT_EQ(run["trajectories"].size(), 2u);
+  EXPECT_FALSE(run["trajectories"][0]["branches"].empty());
+}
+
+TEST_F(Endpoints, GetSimulateReadsAPresetWithOverrides) {
+  auto res = server->client().Get("/api/simulate?preset=paper&t_end=3&method=dopri5");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  const json run = json::parse(res->body);
+  EXPECT_DOUBLE_EQ(run["stats"]["t_reached"].get<double>(), 3.0);
+  EXPECT_EQ(run["stats"]["method"], "dopri5");
+}
+
+TEST_F(Endpoints, PostRenderDrawsPngAndSvg) {
+  auto png = server->client().Post("/api/render?format=png", paper_scene(5.0), "application/json");
+  ASSERT_TRUE(png);
+  ASSERT_EQ(png->status, 200) << png->body;
+  EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
+  EXPECT_EQ(png_size(png->body), std::make_pair(400, 300));
+
+  auto svg = server->client().Post("/api/render?format=svg", paper_scene(5.0), "application/json");
+  ASSERT_TRUE(svg);
+  ASSERT_EQ(svg->status, 200) << svg->body;
+  EXPECT_EQ(svg->get_header_value("Content-Type"), "image/svg+xml");
+  EXPECT_NE(svg->body.find("<svg"), std::string::npos);
+}
+
+TEST_F(Endpoints, GetRenderOfThePaperPresetIsAPng) {
+  auto res = server->client().Get("/api/render?preset=paper&format=png");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_EQ(res->get_header_value("Content-Type"), "image/png");
+  EXPECT_EQ(png_size(res->body), std::make_pair(1200, 800));
+}
+
+TEST_F(Endpoints, GetRenderOverridesSizeAndPellet) {
+  auto res = server->client().Get("/api/render?preset=paper&format=png&width=400&height=320");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_EQ(png_size(res->body), std::make_pair(400, 320));
+
+  auto one = server->client().Get("/api/render?preset=paper-fig5&width=400&pellet=0&t_end=4");
+  auto two = server->client().Get("/api/render?preset=paper-fig5&width=400&pellet=1&t_end=4");
+  ASSERT_TRUE(one && two);
+  ASSERT_EQ(one->status, 200) << one->body;
+  ASSERT_EQ(two->status, 200) << two->body;
+  EXPECT_NE(one->body, two->body);
+}
+
+TEST_F(Endpoints, HeadAnswersWithoutABody) {
+  auto res = server->client().Head("/api/render?preset=paper&width=400&height=300");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_EQ(res->get_header_value("Content-Type"), "image/png");
+  EXPECT_TRUE(res->body.empty());
+}
+
+}  // namespace
+}  // namespace vibro::testing

@@ -1,0 +1,115 @@
+// The server's parts alone: the cache's bound, tags, the worker queue's bound, flags, signals.
+#include <gtest/gtest.h>
+
+#include <atomic>
+#include <chrono>
+#include <csignal>
+#include <future>
+#include <thread>
+
+#include "server/etag.h"
+#include "server/flags.h"
+#include "server/response_cache.h"
+#include "server/stop_signals.h"
+#include "server/worker_pool.h"
+
+namespace vibro::server {
+namespace {
+
+std::shared_ptr<const CachedResponse> answer(std::size_t bytes) {
+  return std::make_shared<const CachedResponse>(
+      CachedResponse{std::string(bytes, 'x'), "application/json", "\"t\""});
+}
+
+TEST(ResponseCache, DropsTheLeastRecentlyUsedBeyondItsBytes) {
+  ResponseCache cache(1000);
+  cache.insert("a", answer(200));
+  cache.insert("b", answer(200));
+  cache.insert("c", answer(200));
+  ASSERT_TRUE(cache.find("a"));  // a is now the most recent
+  cache.insert("d", answer(200));
+  cache.insert("e", answer(200));  // 1000 + keys: b goes first
+  EXPECT_TRUE(cache.find("a"));
+  EXPECT_FALSE(cache.find("b"));
+  EXPECT_TRUE(cache.find("e"));
+  EXPECT_LE(cache.size_bytes(), 1000u);
+}
+
+TEST(ResponseCache, KeepsNothingLargerThanAQuarter) {
+  ResponseCache cache(1000);
+  cache.insert("big", answer(300));
+  EXPECT_FALSE(cache.find("big"));
+  ResponseCache off(0);
+  off.insert("a", answer(1));
+  EXPECT_FALSE(off.find("a"));
+}
+
+TEST(Etag, IsStableQuotedAndMatchesLists) {
+  const std::string tag = etag_of("key");
+  EXPECT_EQ(tag, etag_of("key"));
+  EXPECT_NE(tag, etag_of("key2"));
+  EXPECT_EQ(tag.front(), '"');
+  EXPECT_EQ(tag.back(), '"');
+  EXPECT_TRUE(etag_matches(tag, tag));
+  EXPECT_TRUE(etag_matches("\"x\", W/" + tag, tag));
+  EXPECT_TRUE(etag_matches("*", tag));
+  EXPECT_FALSE(etag_matches("", tag));
+  EXPECT_FALSE(etag_matches("\"x\"", tag));
+}
+
+TEST(WorkerPool, RefusesWorkBeyondItsQueue) {
+  std::promise<void> release;
+  std::shared_future<void> released = release.get_future().share();
+  std::atomic<int> ran{0};
+  {
+    WorkerPool pool(1, 2);
+    std::promise<void> started;
+    ASSERT_TRUE(pool.try_post([&] {
+      started.set_value();
+      released.wait();
+      ++ran;
+    }));
+    started.get_future().wait();  // the worker holds the first job
+    EXPECT_TRUE(pool.try_post([&] { ++ran; }));
+    EXPECT_TRUE(pool.try_post([&] { ++ran; }));
+    EXPECT_FALSE(pool.try_post([&] { ++ran; }));
+    release.set_value();
+  }  // the destructor runs what was queued
+  EXPECT_EQ(ran, 3);
+}
+
+TEST(Flags, SetTheConfigAndNameBadOnes) {
+  auto parsed = config_from_flags({"--port", "9000", "--max-t-end", "50", "--threads", "3",
+                                   "--quiet", "--cache-mib", "8", "--deadline-ms", "250"});
+  ASSERT_TRUE(std::holds_alternative<ServerConfig>(parsed));
+  const ServerConfig& c = std::get<ServerConfig>(parsed);
+  EXPECT_EQ(c.port, 9000);
+  EXPECT_EQ(c.limits.t_end, 50.0);
+  EXPECT_EQ(c.workers, 3);
+  EXPECT_FALSE(c.access_log);
+  EXPECT_EQ(c.cache_bytes, 8u << 20);
+  EXPECT_EQ(c.limits.deadline_ms, 250.0);
+  EXPECT_EQ(c.host, "127.0.0.1");
+
+  auto field = [](std::vector<std::string> args) {
+    auto r = config_from_flags(args);
+    return std::holds_alternative<FieldError>(r) ? std::get<FieldError>(r).field : "";
+  };
+  EXPECT_EQ(field({"--port", "http"}), "--port");
+  EXPECT_EQ(field({"--port", "70000"}), "--port");
+  EXPECT_EQ(field({"--max-width"}), "--max-width");
+  EXPECT_EQ(field({"--colour", "red"}), "--colour");
+}
+
+TEST(StopOnSignals, SigtermCallsStopOutsideTheHandler) {
+  std::promise<void> stopped;
+  auto done = stopped.get_future();
+  {
+    StopOnSignals on_signal([&] { stopped.set_value(); });
+    std::raise(SIGTERM);
+    EXPECT_EQ(done.wait_for(std::chrono::seconds(5)), std::future_status::ready);
+  }
+}
+
+}  // namespace
+}  // namespace vibro::server
