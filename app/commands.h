@@ -22,8 +22,8 @@ struct Command {
 const std::vector<Command>& commands();
 
 // Reads the scene a command names: a file, "-" for stdin, or "--preset NAME"; with common
-// overrides (--t-end, --method, --rtol, --atol). On failure prints the error (naming the field)
-// as JSON to stderr and returns nothing.
+// overrides (--t-end, --method, --rtol, --atol, --deadline-ms, --trajectories). On failure
+// prints the error (naming the field) as JSON to stderr and returns nothing.
 std::optional<Scene> load_scene(const Args& args, std::size_t& next);
 
 int simulate_command(const Args& args);

@@ -55,7 +55,7 @@ void Recorder::close_warning(int pellet, double t) {
   if (std::isnan(negative_since_[pellet])) return;
   if (warnings_.size() < kMaxWarnings) {
     std::ostringstream msg;
-    msg << "pellet " << pellet << ": the normal force g cos(phi) + R dphi^2 is negative from t = "
+    msg << "pellet " << pellet + 1 << ": the normal force g cos(phi) + R dphi^2 is negative from t = "
         << negative_since_[pellet] << " s to " << t
         << " s; there the paper's friction law pushes the pellet along (not physical)";
     warnings_.push_back({"negative_normal_force", msg.str(), pellet, negative_since_[pellet], t});

@@ -31,6 +31,17 @@ std::vector<Rect> grid_cells(int count, int width, int height) {
   for (int i = 0; i < count; ++i)
     cells.push_back({std::floor((i % columns) * w), std::floor((i / columns) * h), std::floor(w),
                      std::floor(h)});
+  // The panels of a last, partly filled row share its whole width (a φ(t) plot under two
+  // portraits spans the figure instead of leaving a blank cell).
+  const int last_row = count - (rows - 1) * columns;
+  if (rows > 1 && last_row < columns) {
+    const double lw = static_cast<double>(width) / last_row;
+    for (int k = 0; k < last_row; ++k) {
+      Rect& c = cells[(rows - 1) * columns + k];
+      c.x = std::floor(k * lw);
+      c.w = std::floor(lw);
+    }
+  }
   return cells;
 }
 
