@@ -77,6 +77,14 @@ std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, con
                         " px is over the server's limit of " + std::to_string(limits.pixels) +
                         " px"};
   }
+  for (std::size_t i = 0; i < f.plots.size(); ++i) {
+    // A sweep is some 120 timed runs: far over one request's budget, and its timings would make
+    // the same scene give different bytes.
+    if (f.plots[i].kind == PlotKind::work_precision) {
+      return ApiError{400, "plots[" + std::to_string(i) + "].kind",
+                      "work_precision plots are drawn by `vibro work-precision`, not the server"};
+    }
+  }
   if (auto e = validate_figure(f, scene.model, format)) return ApiError::from(*e);
   return std::nullopt;
 }

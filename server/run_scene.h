@@ -21,7 +21,8 @@ struct Produced {
 
 using JobResult = std::variant<Produced, ApiError>;
 
-// What can be known before any work: the image's size and the figure against the model.
+// What can be known before any work: the image's size, the figure against the model, and no
+// work-precision sweep (the command line draws those).
 std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, const Limits& limits);
 
 // The run as API.md's JSON, with the sampled branches if the scene asks for trajectories.

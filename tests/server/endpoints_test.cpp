@@ -10,23 +10,26 @@ namespace {
 
 using nlohmann::json;
 
-class Endpoints : public SharedServerTest {};
+class Endpoints : public SharedServerTest {
+ protected:
+  // The JSON a GET answers, after checking it is a 200 of type application/json.
+  static json get_json(const char* path) {
+    auto res = server->client().Get(path);
+    if (!res) return {};
+    EXPECT_EQ(res->status, 200) << path << ": " << res->body;
+    EXPECT_EQ(res->get_header_value("Content-Type"), "application/json") << path;
+    return json::parse(res->body, nullptr, false);
+  }
+};
 
 TEST_F(Endpoints, HealthSaysOkAndTheVersion) {
-  auto res = server->client().Get("/api/health");
-  ASSERT_TRUE(res);
-  EXPECT_EQ(res->status, 200);
-  EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
-  const json body = json::parse(res->body);
+  const json body = get_json("/api/health");
   EXPECT_EQ(body["status"], "ok");
   EXPECT_TRUE(body["version"].is_string());
 }
 
 TEST_F(Endpoints, PresetsListThePaperSceneFirst) {
-  auto res = server->client().Get("/api/presets");
-  ASSERT_TRUE(res);
-  EXPECT_EQ(res->status, 200);
-  const json list = json::parse(res->body);
+  const json list = get_json("/api/presets");
   ASSERT_TRUE(list.is_array());
   ASSERT_FALSE(list.empty());
   EXPECT_EQ(list[0]["name"], "paper");
@@ -35,19 +38,12 @@ TEST_F(Endpoints, PresetsListThePaperSceneFirst) {
 }
 
 TEST_F(Endpoints, OnePresetIsItsScene) {
-  auto res = server->client().Get("/api/presets/paper");
-  ASSERT_TRUE(res);
-  EXPECT_EQ(res->status, 200);
-  EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
-  const json scene = json::parse(res->body);
+  const json scene = get_json("/api/presets/paper");
   EXPECT_EQ(scene["model"]["pellets"].size(), 2u);
 }
 
 TEST_F(Endpoints, LimitsAreShown) {
-  auto res = server->client().Get("/api/limits");
-  ASSERT_TRUE(res);
-  EXPECT_EQ(res->status, 200);
-  const json limits = json::parse(res->body);
+  const json limits = get_json("/api/limits");
   EXPECT_EQ(limits["t_end"], 1000.0);
   EXPECT_EQ(limits["body_bytes"], 65536);
 }

@@ -70,6 +70,12 @@ TEST_F(Errors, AnImageTooLargeNamesItsSize) {
             "width");
 }
 
+TEST_F(Errors, AWorkPrecisionSweepIsLeftToTheCommandLine) {
+  json scene = paper();
+  scene["plots"].push_back({{"kind", "work_precision"}});
+  EXPECT_EQ(field_of(post_scene("/api/render", scene.dump()), 400), "plots[3].kind");
+}
+
 TEST_F(Errors, QueryValuesAreChecked) {
   auto get = [](const char* path) { return server->client().Get(path); };
   EXPECT_EQ(field_of(get("/api/render?preset=paper&t_end=nan"), 400), "t_end");
@@ -152,32 +158,41 @@ TEST_F(Errors, AnOverlongTargetIsRefused) {
   EXPECT_LT(res->status, 500);
 }
 
-TEST(Deadline, ARunOverItsDeadlineIsAClearError) {
+// The refusal of a run that a limit stopped: 422 naming t_end, with the partial stats.
+json stopped_run(const server::ServerConfig& config, const char* path) {
+  TestServer server(config);
+  auto res = server.client().Get(path);
+  if (!res) return {};
+  EXPECT_EQ(res->status, 422) << res->body;
+  EXPECT_EQ(res->get_header_value("Cache-Control"), "no-store");
+  json body = json::parse(res->body);
+  EXPECT_EQ(body["field"], "t_end");
+  return body;
+}
+
+TEST(RunLimits, ARunOverItsDeadlineIsAClearError) {
   server::ServerConfig config;
   config.limits.deadline_ms = 100;
-  TestServer server(config);
-  auto res = server.client().Get("/api/simulate?preset=high-frequency&t_end=100");
-  ASSERT_TRUE(res);
-  EXPECT_EQ(res->status, 422) << res->body;
-  const json body = json::parse(res->body);
-  EXPECT_EQ(body["field"], "t_end");
+  const json body = stopped_run(config, "/api/simulate?preset=high-frequency&t_end=100");
   EXPECT_NE(body["error"].get<std::string>().find("longer than its deadline of 100 ms"),
             std::string::npos)
       << body["error"];
   EXPECT_EQ(body["stats"]["termination"], "deadline");
   EXPECT_LT(body["stats"]["t_reached"].get<double>(), 100.0);
-  EXPECT_EQ(res->get_header_value("Cache-Control"), "no-store");
 }
 
-TEST(Deadline, AnEventLimitStopsTheRunWithItsStats) {
+TEST(RunLimits, TheSampleLimitBoundsTheTrajectoriesDrawn) {
+  server::ServerConfig config;
+  config.limits.samples = 1000;
+  const json body = stopped_run(config, "/api/render?preset=paper&width=400&height=300");
+  EXPECT_NE(body["error"].get<std::string>().find("1000 samples"), std::string::npos);
+  EXPECT_EQ(body["stats"]["termination"], "step_limit");
+}
+
+TEST(RunLimits, AnEventLimitStopsTheRunWithItsStats) {
   server::ServerConfig config;
   config.limits.events = 10;
-  TestServer server(config);
-  auto res = server.client().Get("/api/render?preset=paper&width=400&height=300");
-  ASSERT_TRUE(res);
-  EXPECT_EQ(res->status, 422) << res->body;
-  const json body = json::parse(res->body);
-  EXPECT_EQ(body["field"], "t_end");
+  const json body = stopped_run(config, "/api/render?preset=paper&width=400&height=300");
   EXPECT_EQ(body["stats"]["termination"], "event_limit");
 }
 
