@@ -103,6 +103,12 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
   http.set_tcp_nodelay(true);
   http.set_pre_routing_handler([&s](const Request& req, Response& res) {
     s.log.start();
+    // cpp-httplib 0.11 compresses JSON and SVG answers on every response, with brotli at its
+    // slowest quality when the client accepts "br" (every browser): some 200 ms of CPU for one
+    // cached SVG on a connection thread. On loopback compression buys nothing, so the server
+    // answers uncompressed (a reverse proxy may compress). The request is cpp-httplib's own
+    // non-const object, handed to this handler as const.
+    const_cast<Request&>(req).headers.erase("Accept-Encoding");
     return s.router.route(req, res);
   });
   for (const Route& r : s.router.routes()) {

@@ -74,6 +74,17 @@ TEST_F(Caching, APresetAndTheSameScenePostedShareAnEntry) {
   EXPECT_EQ(post->body, get->body);
 }
 
+TEST_F(Caching, AnswersAreSentAsCachedWithoutCompressingEachTime) {
+  for (const char* encoding : {"br", "gzip, deflate, br"}) {
+    auto res = server->client().Get("/api/render?preset=paper&format=svg&width=400&height=300",
+                                    {{"Accept-Encoding", encoding}});
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 200);
+    EXPECT_FALSE(res->has_header("Content-Encoding")) << encoding;
+    EXPECT_NE(res->body.find("<svg"), std::string::npos);
+  }
+}
+
 TEST_F(Caching, ErrorsAreNotCached) {
   auto res = server->client().Get("/api/render?preset=nope");
   ASSERT_TRUE(res);

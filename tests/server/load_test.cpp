@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <atomic>
+#include <chrono>
 #include <map>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -81,6 +82,28 @@ TEST(Load, AFullQueueAnswers503WithRetryAfter) {
   EXPECT_LE(stopped, 3);
   EXPECT_EQ(other, 0);
   EXPECT_TRUE(retry_after);
+}
+
+TEST(Load, AStalledClientIsDroppedAtTheReadTimeout) {
+  server::ServerConfig config;
+  config.connection_threads = 1;  // the stalled client holds the only one
+  config.read_timeout_s = 1;
+  config.keep_alive_s = 1;
+  TestServer server(config);
+  const auto start = std::chrono::steady_clock::now();
+  std::thread stalled([&] {
+    // Half a request line, then nothing: the server must give up on it.
+    const RawReply reply = raw_exchange(server.port(), "GET /api/hea", 5000);
+    EXPECT_EQ(reply.status(), -1);
+  });
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));
+  auto res = server.client().Get("/api/health");
+  const double waited =
+      std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
+  stalled.join();
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200);
+  EXPECT_LT(waited, 3.5);
 }
 
 }  // namespace
