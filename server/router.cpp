@@ -1,5 +1,6 @@
 #include "server/router.h"
 
+#include <cctype>
 #include <charconv>
 
 #include "server/api_error.h"

@@ -70,10 +70,8 @@ std::optional<StaticFile> StaticFiles::find(std::string_view url_path) const {
   for (std::string_view s : *segments) {
     file /= s;
     // A symlink could point anywhere: web/ holds none, and any found is treated as absent.
-    if (fs::symlink_status(file, ec).type() != fs::file_type::regular &&
-        fs::symlink_status(file, ec).type() != fs::file_type::directory) {
-      return std::nullopt;
-    }
+    const fs::file_type type = fs::symlink_status(file, ec).type();
+    if (type != fs::file_type::regular && type != fs::file_type::directory) return std::nullopt;
   }
   if (url_path.ends_with('/')) file /= "index.html";
   if (fs::symlink_status(file, ec).type() != fs::file_type::regular) return std::nullopt;
