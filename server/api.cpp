@@ -143,6 +143,28 @@ void Api::render_get(const httplib::Request& req, httplib::Response& res) {
   render(std::get<Scene>(scene), req, res);
 }
 
+void Api::work_precision_post(const httplib::Request& req, httplib::Response& res) {
+  if (auto e = only_params(req, {"format"})) return send_error(res, *e);
+  std::optional<ImageFormat> image;
+  if (req.has_param("format") && req.get_param_value("format") != "json") {
+    const auto format = format_of(req);
+    if (auto* e = std::get_if<ApiError>(&format)) return send_error(res, *e);
+    image = std::get<ImageFormat>(format);
+  }
+  SceneOrApiError scene = scene_from_body(req, scene_limits_);
+  if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
+  auto produced = run_on_worker(
+      [scene = std::get<Scene>(std::move(scene)), image, this] {
+        return work_precision_scene(scene, image, config_.limits);
+      },
+      res);
+  if (!produced) return;
+  if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
+  Produced& p = std::get<Produced>(*produced);
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(std::move(p.body), p.content_type);
+}
+
 void Api::static_file(const httplib::Request& req, httplib::Response& res) const {
   const auto file = web_.find(req.path);
   if (!file) return send_error(res, {404, "path", "no such page"});
@@ -179,7 +201,17 @@ void Api::answer(const std::string& key, std::function<JobResult()> job,
     return;
   }
   if (auto hit = cache_.find(key)) return send(res, *hit, true);
+  auto produced = run_on_worker(std::move(job), res);
+  if (!produced) return;
+  if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
+  Produced& p = std::get<Produced>(*produced);
+  auto entry = std::make_shared<const CachedResponse>(
+      CachedResponse{std::move(p.body), std::move(p.content_type), etag});
+  cache_.insert(key, entry);
+  send(res, *entry, false);
+}
 
+std::optional<JobResult> Api::run_on_worker(std::function<JobResult()> job, httplib::Response& res) {
   auto promise = std::make_shared<std::promise<JobResult>>();
   std::future<JobResult> result = promise->get_future();
   const bool queued = workers_.try_post([promise, job = std::move(job)] {
@@ -191,17 +223,12 @@ void Api::answer(const std::string& key, std::function<JobResult()> job,
   });
   if (!queued) {
     res.set_header("Retry-After", "1");
-    return send_error(res, {503, "server",
-                            "the server is busy: every worker is taken and the "
-                            "queue is full; retry in a second"});
+    send_error(res, {503, "server",
+                     "the server is busy: every worker is taken and the queue is full; "
+                     "retry in a second"});
+    return std::nullopt;
   }
-  JobResult produced = result.get();
-  if (auto* e = std::get_if<ApiError>(&produced)) return send_error(res, *e);
-  Produced& p = std::get<Produced>(produced);
-  auto entry = std::make_shared<const CachedResponse>(
-      CachedResponse{std::move(p.body), std::move(p.content_type), etag});
-  cache_.insert(key, entry);
-  send(res, *entry, false);
+  return result.get();
 }
 
 bool Api::warm_up(std::string& error) {

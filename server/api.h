@@ -27,6 +27,9 @@ class Api {
   void simulate_get(const httplib::Request& req, httplib::Response& res);  // ?preset=NAME
   void render_post(const httplib::Request& req, httplib::Response& res);
   void render_get(const httplib::Request& req, httplib::Response& res);  // ?preset=NAME
+  // ?format=json|png|svg: the work-precision sweep of the scene; timings differ from run to
+  // run, so it is never cached.
+  void work_precision_post(const httplib::Request& req, httplib::Response& res);
   void static_file(const httplib::Request& req, httplib::Response& res) const;
 
   // Draws the paper preset into the cache, as GET /api/render?preset=paper asks for it, so the
@@ -41,6 +44,8 @@ class Api {
   // Answers from the cache, or runs `job` on a worker and caches what it produces.
   void answer(const std::string& key, std::function<JobResult()> job, const httplib::Request& req,
               httplib::Response& res);
+  // Runs `job` on a worker; empty when the queue is full (the 503 is then sent).
+  std::optional<JobResult> run_on_worker(std::function<JobResult()> job, httplib::Response& res);
 
   const ServerConfig config_;
   const SceneLimits scene_limits_;

@@ -4,6 +4,8 @@
 #include <sstream>
 
 #include "core/simulate.h"
+#include "core/work_precision.h"
+#include "io/work_precision_json.h"
 #include "io/result_json.h"
 #include "render/run_plan.h"
 
@@ -106,6 +108,27 @@ JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& lim
   RenderResult image = render_figure(scene.figure, scene.model, run, format);
   if (!image.ok()) return ApiError::from(*image.error);
   return Produced{std::string(image.bytes.begin(), image.bytes.end()), image.content_type};
+}
+
+JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> image,
+                               const Limits& limits) {
+  WorkPrecisionOptions sweep;
+  sweep.repeats = 1;
+  // About 44 runs (4 methods × 10 tolerances and 2 references): each gets a share of the
+  // deadline, so the whole sweep ends within a few deadlines.
+  SimOptions options = bounded(scene.sim, limits).options;
+  options.deadline_ms = limits.deadline_ms / 16.0;
+  const WorkPrecisionReport report = work_precision(scene.model, options, sweep);
+  if (!image) return Produced{work_precision_to_json(report).dump(), "application/json"};
+  FigureSpec figure;
+  figure.width = scene.figure.width;
+  figure.height = scene.figure.height;
+  PlotSpec plot;
+  plot.kind = PlotKind::work_precision;
+  figure.plots = {plot};
+  RenderResult drawn = render_figure(figure, scene.model, RunResult{}, *image, &report);
+  if (!drawn.ok()) return ApiError::from(*drawn.error);
+  return Produced{std::string(drawn.bytes.begin(), drawn.bytes.end()), drawn.content_type};
 }
 
 }  // namespace vibro::server

@@ -31,4 +31,9 @@ JobResult simulate_scene(const Scene& scene, const Limits& limits);
 // The scene's plots as one image, computing only what they draw.
 JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& limits);
 
+// The work-precision sweep of the scene (one run per method and tolerance, each within a
+// share of the deadline): its table as JSON, or its diagram when `image` names a format.
+JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> image,
+                               const Limits& limits);
+
 }  // namespace vibro::server

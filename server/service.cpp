@@ -41,6 +41,7 @@ std::vector<Route> api_routes(Api& api) {
       {"POST", "/api/simulate", bind(&Api::simulate_post)},
       {"GET", "/api/render", bind(&Api::render_get)},
       {"POST", "/api/render", bind(&Api::render_post)},
+      {"POST", "/api/work-precision", bind(&Api::work_precision_post)},
   };
 }
 

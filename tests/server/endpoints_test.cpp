@@ -128,3 +128,34 @@ TEST_F(Endpoints, HeadAnswersWithoutABody) {
 
 }  // namespace
 }  // namespace vibro::testing
+
+namespace vibro::testing {
+namespace {
+
+TEST_F(Endpoints, WorkPrecisionGivesTheTableOrTheDiagramUncached) {
+  auto table = server->client().Post("/api/work-precision", paper_scene(2.0), "application/json");
+  ASSERT_TRUE(table);
+  ASSERT_EQ(table->status, 200) << table->body;
+  EXPECT_EQ(table->get_header_value("Content-Type"), "application/json");
+  EXPECT_EQ(table->get_header_value("Cache-Control"), "no-store");
+  const json body = json::parse(table->body);
+  EXPECT_EQ(body["error_reference"], "reference_run");
+  ASSERT_EQ(body["points"].size(), 40u);  // 4 methods × 10 tolerances
+  for (const json& p : body["points"]) EXPECT_TRUE(p["error"].is_number());
+
+  auto svg = server->client().Post("/api/work-precision?format=svg", paper_scene(2.0),
+                                    "application/json");
+  ASSERT_TRUE(svg);
+  ASSERT_EQ(svg->status, 200);
+  EXPECT_EQ(svg->get_header_value("Content-Type"), "image/svg+xml");
+  EXPECT_NE(svg->body.find("<svg"), std::string::npos);
+
+  auto bad = server->client().Post("/api/work-precision?format=gif", paper_scene(2.0),
+                                   "application/json");
+  ASSERT_TRUE(bad);
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_EQ(json::parse(bad->body)["field"], "format");
+}
+
+}  // namespace
+}  // namespace vibro::testing
