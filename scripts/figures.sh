@@ -12,3 +12,19 @@ $vibro preset paper | python3 -c '
 import json,sys; s=json.load(sys.stdin); s.update(json.load(open("/tmp/vibro_cyl_patch.json"))); print(json.dumps(s))' \
   | $vibro render - -o docs/images/paper-cylinder.png > /dev/null
 echo "figures: docs/images/ regenerated"
+
+# The web page with the paper scene, from a real server, in headless Chromium.
+if command -v chromium > /dev/null; then
+  port=18765
+  $vibro serve --port $port --quiet > /dev/null 2>&1 &
+  server=$!
+  trap 'kill $server 2> /dev/null' EXIT
+  for _ in $(seq 50); do curl -sf "http://127.0.0.1:$port/api/health" > /dev/null && break; sleep 0.1; done
+  profile=$(mktemp -d)
+  chromium --headless --no-sandbox --disable-gpu --no-first-run --disable-background-networking \
+    --disable-component-update --disable-sync --user-data-dir="$profile" --hide-scrollbars \
+    --window-size=1280,800 --virtual-time-budget=8000 \
+    --screenshot="$PWD/docs/images/web-paper.png" "http://127.0.0.1:$port/#preset=paper" 2> /dev/null
+  rm -rf "$profile"
+  echo "figures: docs/images/web-paper.png"
+fi
