@@ -102,3 +102,34 @@ TEST(Limiter, AnOvershootInsideOneStepIsFound) {
 
 }  // namespace
 }  // namespace vibro
+
+namespace vibro {
+namespace {
+
+// Two pellets strike two limiters 1e-4 s apart, inside one long step at a loose tolerance: both
+// impacts are found, in order, at the times a tight run finds.
+TEST(Limiter, TwoEventsInOneStepAreBothFoundInOrder) {
+  Model m = testing::one_pellet(0.0, 0.1, 3.0);
+  m.pellets.push_back(m.pellets[0]);
+  m.pellets[1].phi0 = -0.1;
+  m.pellets[1].dphi0 = -3.0 - 1e-3;
+  m.limiters = {{0.5, 0.5, false, -1, {}}, {-0.5, 0.5, false, -1, {}}};
+  auto first_two = [&](double rtol) {
+    const RunResult run = simulate(m, testing::recorded(m, 0.2, Method::dop853, rtol, rtol));
+    std::vector<Event> impacts;
+    for (const Event* e : testing::events_of(run, EventKind::limiter)) impacts.push_back(*e);
+    EXPECT_GE(impacts.size(), 2u);
+    impacts.resize(2);
+    return impacts;
+  };
+  const auto loose = first_two(1e-3);
+  const auto tight = first_two(1e-12);
+  ASSERT_EQ(loose.size(), 2u);
+  EXPECT_EQ(loose[0].pellets, std::vector<int>{1});  // the faster one first
+  EXPECT_EQ(loose[1].pellets, std::vector<int>{0});
+  EXPECT_LT(loose[0].t, loose[1].t);
+  for (int k = 0; k < 2; ++k) EXPECT_NEAR(loose[k].t, tight[k].t, 1e-5);
+}
+
+}  // namespace
+}  // namespace vibro
