@@ -160,11 +160,25 @@ PlotSpec read_plot(const json& j, const std::string& path, int pellets) {
   return p;
 }
 
-int json_depth(const json& j) {
-  int d = 0;
-  if (j.is_object() || j.is_array())
-    for (const auto& v : j) d = std::max(d, json_depth(v));
-  return (j.is_object() || j.is_array()) ? d + 1 : 0;
+// The deepest nesting of arrays and objects in JSON text, strings skipped. A loop over the
+// text, not a recursion over the parsed tree: a body of 10^6 '[' overflowed the stack.
+int text_depth(std::string_view text) {
+  int depth = 0, deepest = 0;
+  bool in_string = false;
+  for (std::size_t i = 0; i < text.size(); ++i) {
+    const char c = text[i];
+    if (in_string) {
+      if (c == '\\') ++i;  // the escaped character cannot end the string
+      else if (c == '"') in_string = false;
+    } else if (c == '"') {
+      in_string = true;
+    } else if (c == '[' || c == '{') {
+      deepest = std::max(deepest, ++depth);
+    } else if (c == ']' || c == '}') {
+      --depth;
+    }
+  }
+  return deepest;
 }
 
 }  // namespace
@@ -210,11 +224,12 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
 }
 
 SceneOrError scene_from_text(std::string_view text, const SceneLimits& limits) {
-  json j = json::parse(text, nullptr, false);
-  if (j.is_discarded()) return FieldError{"scene", "is not valid JSON"};
-  if (json_depth(j) > limits.max_depth) {
+  // Checked before parsing, so a deep document costs no tree.
+  if (text_depth(text) > limits.max_depth) {
     return FieldError{"scene", "nests deeper than " + std::to_string(limits.max_depth) + " levels"};
   }
+  json j = json::parse(text, nullptr, false);
+  if (j.is_discarded()) return FieldError{"scene", "is not valid JSON"};
   return scene_from_json(j, limits);
 }
 
