@@ -31,11 +31,15 @@ double as_number(const nlohmann::json& v, const std::string& field) {
 }
 
 long as_integer(const nlohmann::json& v, const std::string& field) {
-  if (v.is_number_integer() || v.is_number_unsigned()) {
-    if (v.is_number_unsigned() && v.get<unsigned long long>() > 1000000000ULL) {
-      throw FieldException(field, "is out of range");
-    }
+  // Beyond ±1e9 in either sign: callers narrow to int, which would wrap -4294967232 to 64.
+  if (v.is_number_unsigned()) {
+    if (v.get<unsigned long long>() > 1000000000ULL) throw FieldException(field, "is out of range");
     return v.get<long>();
+  }
+  if (v.is_number_integer()) {
+    const long i = v.get<long>();
+    if (i < -1000000000L || i > 1000000000L) throw FieldException(field, "is out of range");
+    return i;
   }
   if (v.is_number_float()) {
     const double x = v.get<double>();
