@@ -51,7 +51,8 @@ json track_json(const PelletTrack& track) {
 std::string angle_text(double phi) {
   const double q = phi / (M_PI / 4.0);
   std::ostringstream s;
-  if (std::abs(q - std::round(q)) < 1e-9 && std::round(q) != 0.0) {
+  // Past 1e6 multiples of π/4 every double is within 1e-9 of an integer, and lround overflows.
+  if (std::abs(q) < 1e6 && std::abs(q - std::round(q)) < 1e-9 && std::round(q) != 0.0) {
     const long n = std::lround(q);
     long num = n, den = 4;
     while (num % 2 == 0 && den > 1) { num /= 2; den /= 2; }
