@@ -2,15 +2,20 @@
 
 namespace vibro::integrators {
 
-AutoSwitch::AutoSwitch(const StepperOptions& options) : explicit_(options), implicit_(options) {}
+template <class Explicit>
+AutoSwitchWith<Explicit>::AutoSwitchWith(const StepperOptions& options)
+    : explicit_(options), implicit_(options) {}
 
-const Stepper& AutoSwitch::active() const {
+template <class Explicit>
+const Stepper& AutoSwitchWith<Explicit>::active() const {
   return stiff_ ? static_cast<const Stepper&>(implicit_) : explicit_;
 }
 
-Stepper& AutoSwitch::active() { return stiff_ ? static_cast<Stepper&>(implicit_) : explicit_; }
+template <class Explicit>
+Stepper& AutoSwitchWith<Explicit>::active() { return stiff_ ? static_cast<Stepper&>(implicit_) : explicit_; }
 
-void AutoSwitch::start(const OdeSystem& sys, double t0, const Vec& y0) {
+template <class Explicit>
+void AutoSwitchWith<Explicit>::start(const OdeSystem& sys, double t0, const Vec& y0) {
   sys_ = &sys;
   // Both methods get their work arrays now, so that a switch does not allocate.
   explicit_.reserve(static_cast<int>(y0.size()));
@@ -24,7 +29,8 @@ void AutoSwitch::start(const OdeSystem& sys, double t0, const Vec& y0) {
   active().start(sys, t0, y0);
 }
 
-void AutoSwitch::switch_method() {
+template <class Explicit>
+void AutoSwitchWith<Explicit>::switch_method() {
   if (stiff_) {
     explicit_.resume(*sys_, implicit_.t(), implicit_.y(), implicit_.step_size());
   } else {
@@ -36,7 +42,8 @@ void AutoSwitch::switch_method() {
   ++switches_;
 }
 
-StepStatus AutoSwitch::step(double t_limit) {
+template <class Explicit>
+StepStatus AutoSwitchWith<Explicit>::step(double t_limit) {
   if (switch_pending_) switch_method();
   const StepStatus status = active().step(t_limit);
   if (status != StepStatus::ok) return status;
@@ -49,7 +56,8 @@ StepStatus AutoSwitch::step(double t_limit) {
   return status;
 }
 
-const StepperStats& AutoSwitch::stats() const {
+template <class Explicit>
+const StepperStats& AutoSwitchWith<Explicit>::stats() const {
   const StepperStats& a = explicit_.stats();
   const StepperStats& b = implicit_.stats();
   stats_.steps = a.steps + b.steps;
@@ -59,6 +67,14 @@ const StepperStats& AutoSwitch::stats() const {
   stats_.lu_decomps = a.lu_decomps + b.lu_decomps;
   stats_.stiff_switches = switches_;
   return stats_;
+}
+
+template class AutoSwitchWith<Dopri5>;
+template class AutoSwitchWith<Dop853>;
+
+std::unique_ptr<AutoSwitch> make_auto_switch(const StepperOptions& options) {
+  if (options.rtol > 1e-7) return std::make_unique<AutoSwitchWith<Dopri5>>(options);
+  return std::make_unique<AutoSwitchWith<Dop853>>(options);
 }
 
 }  // namespace vibro::integrators

@@ -31,7 +31,7 @@ std::unique_ptr<Stepper> make_stepper(Method method, const StepperOptions& optio
     case Method::radau5:
       return std::make_unique<integrators::Radau5>(options);
     case Method::automatic:
-      return std::make_unique<integrators::AutoSwitch>(options);
+      return integrators::make_auto_switch(options);
   }
   return nullptr;
 }

@@ -14,6 +14,8 @@ namespace vibro::testing {
 namespace {
 
 using integrators::AutoSwitch;
+using integrators::AutoSwitchWith;
+using integrators::Dop853;
 using integrators::Dop853;
 using integrators::Dopri5;
 using integrators::Radau5;
@@ -112,7 +114,7 @@ TEST(IntegratorsStiff, AutoSwitchesToRadau5OnVanDerPol) {
 
   auto s = make_stepper(Method::automatic, tolerances(1e-6, 1e-6));
   s->start(sys, 0.0, VanDerPol::initial());
-  EXPECT_EQ(s->name(), "dop853");
+  EXPECT_EQ(s->name(), "dopri5");  // the explicit method for loose tolerances
   ASSERT_EQ(run_to(*s, t_end).status, StepStatus::ok);
   EXPECT_EQ(s->name(), "radau5");
   EXPECT_GE(s->stats().stiff_switches, 1);
@@ -125,9 +127,14 @@ TEST(IntegratorsStiff, AutoSwitchesToRadau5OnVanDerPol) {
   EXPECT_LT((s->y() - VanDerPol::reference_at_2()).norm(), 1e-4);
 }
 
+TEST(IntegratorsStiff, AutoStartsWithTheExplicitMethodForItsTolerance) {
+  EXPECT_EQ(make_stepper(Method::automatic, tolerances(1e-6, 1e-8))->name(), "dopri5");
+  EXPECT_EQ(make_stepper(Method::automatic, tolerances(1e-9, 1e-12))->name(), "dop853");
+}
+
 TEST(IntegratorsStiff, AutoSwitchesBackWhenTheProblemCalmsDown) {
   const StiffThenCalm sys;
-  AutoSwitch s(tolerances(1e-8, 1e-8));
+  AutoSwitchWith<Dop853> s(tolerances(1e-8, 1e-8));
   s.start(sys, 0.0, StiffThenCalm::initial());
   ASSERT_EQ(run_to(s, 1.5).status, StepStatus::ok);
   EXPECT_EQ(s.name(), "radau5");
