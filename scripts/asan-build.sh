@@ -1,0 +1,36 @@
+#!/usr/bin/env bash
+# Builds vibro with clang, AddressSanitizer and UndefinedBehaviorSanitizer, instrumented for
+# libFuzzer's coverage too, so that the sanitized test suite (scripts/sanitize.sh) and the fuzz
+# target (scripts/fuzz.sh) share one build. Usage: scripts/asan-build.sh DIR [TARGET...]
+# Needs the libraries of scripts/setup.sh --test; installs clang and its runtimes if missing.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+dir="$1"
+shift
+
+# clang-14 and its sanitizer and libFuzzer runtimes (libclang-rt-14-dev) from Debian 12.
+missing=()
+for p in clang libclang-rt-14-dev; do
+  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
+done
+if ((${#missing[@]})); then
+  sudo=""
+  [[ $(id -u) -ne 0 ]] && sudo="sudo"
+  echo "asan-build: installing ${missing[*]}"
+  apt=(apt-get -o DPkg::Lock::Timeout=600)
+  $sudo "${apt[@]}" update -q
+  DEBIAN_FRONTEND=noninteractive $sudo "${apt[@]}" install -y -q --no-install-recommends "${missing[@]}"
+fi
+
+# fuzzer-no-link only adds coverage counters; the ASan runtime answers them in ordinary programs.
+flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
+mkdir -p "$dir"
+echo "asan-build: building $dir ${*:-(everything)} with clang, ASan + UBSan, -O1"
+CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DVIBRO_BUILD_FUZZ=ON \
+  > "$dir/build.log" 2>&1 || { cat "$dir/build.log"; exit 1; }
+targets=()
+for t in "$@"; do targets+=(--target "$t"); done
+cmake --build "$dir" "${targets[@]}" -j"${VIBRO_JOBS:-$(nproc)}" >> "$dir/build.log" 2>&1 ||
+  { tail -50 "$dir/build.log"; exit 1; }

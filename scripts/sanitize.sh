@@ -1,0 +1,17 @@
+#!/usr/bin/env bash
+# Runs the whole test suite built with AddressSanitizer and UndefinedBehaviorSanitizer
+# (scripts/asan-build.sh, into build-asan/ or $VIBRO_ASAN_DIR), leak checking on.
+# Usage: scripts/sanitize.sh   (after scripts/setup.sh --test; CI runs scripts/test.sh first)
+# Any sanitizer report ends its test with an error (-fno-sanitize-recover), so ctest fails.
+set -euo pipefail
+cd "$(dirname "$0")/.."
+dir="${VIBRO_ASAN_DIR:-build-asan}"
+bash scripts/asan-build.sh "$dir"
+
+export ASAN_OPTIONS="detect_leaks=1"
+# Mesa's OSMesa/llvmpipe driver (3-D panels) keeps allocations for the life of the process;
+# only those are suppressed (tests/lsan.supp), every other leak fails its test.
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# The headless-browser test drives Chromium and node, not our instrumented code: left out.
+ctest --test-dir "$dir" --output-on-failure -j"$(nproc)" -LE browser

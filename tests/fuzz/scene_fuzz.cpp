@@ -1,0 +1,68 @@
+// libFuzzer target: arbitrary bytes as a scene. Whatever parses is simulated and drawn with
+// small limits, and the run's contract (tests/robustness/run_invariants.h) is checked; a broken
+// invariant aborts so that libFuzzer keeps the input. Built only with VIBRO_BUILD_FUZZ (clang).
+#include <cstdint>
+#include <cstdio>
+#include <cstdlib>
+#include <string>
+#include <string_view>
+
+#include "core/simulate.h"
+#include "io/scene_json.h"
+#include "render/figure.h"
+#include "render/run_plan.h"
+#include "tests/robustness/run_invariants.h"
+
+namespace {
+
+using namespace vibro;
+
+void check(bool ok, const std::string& what) {
+  if (ok) return;
+  std::fprintf(stderr, "scene_fuzz: invariant violated: %s\n", what.c_str());
+  std::abort();
+}
+
+// Small enough that one input costs at most a few hundred milliseconds.
+SceneLimits fuzz_limits() {
+  SceneLimits limits;
+  limits.sim.max_t_end = 5.0;
+  limits.sim.max_pellets = 4;
+  limits.sim.max_limiters = 4;
+  limits.max_plots = 2;
+  limits.max_width = 256;
+  limits.max_height = 256;
+  return limits;
+}
+
+}  // namespace
+
+extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size) {
+  const std::string_view text(reinterpret_cast<const char*>(data), size);
+  SceneOrError parsed = scene_from_text(text, fuzz_limits());
+  auto* scene = std::get_if<Scene>(&parsed);
+  if (!scene) {
+    check(!std::get<FieldError>(parsed).field.empty(), "every refusal names a field");
+    return 0;
+  }
+  // 3-D panels load OSMesa and work-precision panels run a sweep of whole simulations: both
+  // too slow for fuzzing, so they are drawn as phase portraits of the same pellet.
+  for (PlotSpec& p : scene->figure.plots)
+    if (p.kind == PlotKind::cylinder || p.kind == PlotKind::work_precision) p.kind = PlotKind::phase;
+  // Both output formats, chosen by the input's length so each is covered.
+  const ImageFormat format = size % 2 ? ImageFormat::svg : ImageFormat::png;
+  if (validate_figure(scene->figure, scene->model, format)) return 0;
+
+  RunPlan plan = plan_run(scene->figure, scene->sim, scene->model.size());
+  plan.options.max_events = 2000;
+  plan.options.max_steps = 20000;
+  plan.options.deadline_ms = 200.0;
+  const RunResult run = simulate(scene->model, plan.options);
+  const std::string violation = robustness::run_violation(run, scene->model, plan.options.t_end);
+  check(violation.empty(), violation);
+
+  const RenderResult image = render_figure(scene->figure, scene->model, run, format);
+  if (image.ok()) check(!image.bytes.empty(), "a drawn figure has bytes");
+  else check(!image.error->field.empty(), "a render error names its field");
+  return 0;
+}

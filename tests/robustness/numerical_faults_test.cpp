@@ -1,0 +1,98 @@
+// Numerical faults found through real scenes end the run cleanly: termination
+// numerical_failure, a message naming the time and the cause, finite output, no crash.
+#include <gtest/gtest.h>
+
+#include <string>
+#include <vector>
+
+#include "io/result_json.h"
+#include "tests/robustness/scene_runs.h"
+
+namespace vibro::robustness {
+namespace {
+
+const std::vector<Method> kMethods = {Method::dopri5, Method::dop853, Method::radau5,
+                                      Method::automatic};
+
+void expect_failure(const RunResult& run, const std::string& at, const std::string& cause) {
+  EXPECT_EQ(run.stats.termination, Termination::numerical_failure);
+  EXPECT_NE(run.stats.message.find("stopped at t = " + at + " s"), std::string::npos)
+      << run.stats.message;
+  EXPECT_NE(run.stats.message.find(cause), std::string::npos) << run.stats.message;
+}
+
+// F0/(m R) = 2e24 rad/s²: φ reaches ~1e23 rad by the first reversal (t = π/3), where no step
+// size can resolve the stop any more.
+TEST(NumericalFaults, StepSizeUnderflowIsNamedWithItsTime) {
+  const Scene scene = parsed(R"({"model": {"R": 0.5, "pellets": [
+      {"m": 1e-12, "phi0": 0, "F0": 1e12, "Omega": 3}]}, "t_end": 5})");
+  for (Method method : kMethods) {
+    SCOPED_TRACE(method_name(method));
+    expect_failure(run_checked(scene, method), "1.0472", "the step size underflowed");
+  }
+}
+
+// The run above ends with φ ≈ 4.4e23 rad: the answer prints it as a number, not as a multiple
+// of π (which overflowed lround and printed φ = -2305843009213693952π).
+TEST(NumericalFaults, AnswerPrintsAHugeAngleInDecimals) {
+  const Scene scene = parsed(R"({"model": {"R": 0.5, "pellets": [
+      {"m": 1e-12, "phi0": 0, "F0": 1e12, "Omega": 3}]}, "t_end": 5})");
+  const RunResult run = run_checked(scene, Method::dop853);
+  const std::string answer = answer_sentence(run, scene.model);
+  EXPECT_NE(answer.find("φ = 4.444e+23,"), std::string::npos) << answer;
+}
+
+// F0/(m R) overflows to infinity in the first right-hand side.
+TEST(NumericalFaults, NonFiniteStateIsNamedWithItsTime) {
+  const Scene scene = parsed(R"({"model": {"R": 1e-300, "pellets": [
+      {"m": 1e-300, "phi0": 0, "F0": 1e12, "Omega": 3}]}, "t_end": 5})");
+  for (Method method : kMethods) {
+    SCOPED_TRACE(method_name(method));
+    expect_failure(run_checked(scene, method), "0", "the state became non-finite");
+  }
+}
+
+// g/R = 1e301 and dphi² = 1e14: the Jacobian's entries overflow and Newton cannot converge.
+TEST(NumericalFaults, RadauNewtonFailureIsNamedWithItsTime) {
+  const Scene scene = parsed(R"({"model": {"R": 1e-300, "pellets": [
+      {"m": 1, "phi0": 0.1, "dphi0": 1e7}]}, "t_end": 5, "solver": {"method": "radau5"}})");
+  expect_failure(run_checked(scene, Method::radau5), "0", "the implicit method's Newton iteration failed");
+}
+
+// Extreme scenes that the reader accepts. Each ends by any termination, within its deadline,
+// with the run's invariants kept (run_checked), under every method.
+TEST(NumericalFaults, ExtremeScenesEndCleanlyUnderEveryMethod) {
+  const std::vector<const char*> scenes = {
+      // forcing at 1e9 rad/s on a tiny, light pellet
+      R"({"model": {"R": 1e-9, "pellets": [{"m": 1e-12, "phi0": 0, "dphi0": 1e7, "F0": 1e12,
+          "Omega": 1e9}]}, "t_end": 5})",
+      // a pellet at 1e7 rad/s on a circle of 1 nm
+      R"({"model": {"R": 1e-9, "pellets": [{"m": 0.2, "phi0": 0, "dphi0": 1e7}]}, "t_end": 5})",
+      // friction angle a hair below π/2: mu ≈ 1e8
+      R"({"model": {"R": 0.5, "alpha0": 1.57079632, "pellets": [{"m": 0.2, "phi0": 1,
+          "dphi0": 1e3}]}, "t_end": 5})",
+      // the largest gravity and radius
+      R"({"model": {"g": 1e4, "R": 1e6, "pellets": [{"m": 1e12, "phi0": 3.1, "dphi0": -1e7}],
+          "limiters": [{"angle": 1e4, "k": 1}, {"angle": -1e4, "k": 0}]}, "t_end": 5})",
+      // eight pellets 2e-9 rad apart, plastic everywhere, one limiter between them
+      R"({"model": {"R": 0.5, "k_c": 0, "pellets": [{"m": 1, "phi0": 0, "dphi0": 5},
+          {"m": 1e-6, "phi0": 2e-9, "dphi0": -5}, {"m": 1e6, "phi0": 4e-9}, {"m": 1, "phi0": 6e-9},
+          {"m": 1, "phi0": 8e-9, "dphi0": 1e3}, {"m": 1, "phi0": 1e-8}, {"m": 1, "phi0": 1.2e-8},
+          {"m": 1, "phi0": 1.4e-8, "dphi0": -1e3}],
+          "limiters": [{"angle": 3e-9, "k": 0}]}, "t_end": 5})",
+      // static friction far above kinetic, forced at the edge of the friction cone
+      R"({"model": {"R": 0.5, "alpha0": 0.3, "mu_s": 1e6, "pellets": [{"m": 0.2, "phi0": 0.3,
+          "F0": 1e3, "Omega": 1e3}], "limiters": [{"angle": 0.3, "k": 0.999}]}, "t_end": 5})",
+  };
+  for (const char* text : scenes) {
+    const Scene scene = parsed(text);
+    for (Method method : kMethods) {
+      SCOPED_TRACE(std::string(method_name(method)) + " " + text);
+      const RunResult run = run_checked(scene, method, 500.0);
+      EXPECT_LT(run.stats.wall_ms, 5000.0);
+    }
+  }
+}
+
+}  // namespace
+}  // namespace vibro::robustness
