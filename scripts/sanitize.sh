@@ -14,4 +14,13 @@ export ASAN_OPTIONS="detect_leaks=1"
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 # The headless-browser test drives Chromium and node, not our instrumented code: left out.
-ctest --test-dir "$dir" --output-on-failure -j"$(nproc)" -LE browser
+# Only the summary is printed, or on failure everything but the passing tests' lines.
+log="$dir/ctest.log"
+status=0
+ctest --test-dir "$dir" --output-on-failure -j"$(nproc)" -LE browser > "$log" 2>&1 || status=$?
+if ((status)); then
+  grep -v -E "^ +Start |Passed +[0-9.]+ sec" "$log" | tail -300
+  echo "sanitize: FAILED (the whole log: $log)"
+  exit "$status"
+fi
+grep -E "tests passed|Total Test time" "$log"
