@@ -132,7 +132,8 @@ void Fields::done() const {
       }
     }
     if (!best.empty()) message += " (did you mean \"" + best + "\"?)";
-    throw FieldException(path(it.key()), message);
+    // The empty key is spelled "" so that the refusal still names a field.
+    throw FieldException(path(it.key().empty() ? "\"\"" : it.key()), message);
   }
 }
 
