@@ -144,6 +144,9 @@ std::vector<HostileCase> unicode_key_cases() {
     const std::string escaped = json(key).dump();
     cases.push_back({"key " + escaped, with_model_key(escaped + ": 1"), "model." + key});
   }
+  cases.push_back({"the empty key", R"({"": 1, "model": {"R": 1, "pellets": [{"m": 1, "phi0": 0}]},
+                                       "t_end": 1})", "\"\""});
+  cases.push_back({"the empty key in the model", with_model_key(R"("": 1)"), "model.\"\""});
   cases.push_back({"an escaped surrogate pair", with_model_key(R"("\ud83c\udfaf": 1)"), "model.🎯"});
   cases.push_back({"a look-alike value", with_model_key(R"("friction": "p\u0430per")"),
                    "model.friction"});
