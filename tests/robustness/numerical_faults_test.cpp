@@ -14,29 +14,33 @@ namespace {
 const std::vector<Method> kMethods = {Method::dopri5, Method::dop853, Method::radau5,
                                       Method::automatic};
 
-void expect_failure(const RunResult& run, const std::string& at, const std::string& cause) {
-  EXPECT_EQ(run.stats.termination, Termination::numerical_failure);
-  EXPECT_NE(run.stats.message.find("stopped at t = " + at + " s"), std::string::npos)
-      << run.stats.message;
-  EXPECT_NE(run.stats.message.find(cause), std::string::npos) << run.stats.message;
-}
-
-// F0/(m R) = 2e24 rad/s²: φ reaches ~1e23 rad by the first reversal (t = π/3), where no step
-// size can resolve the stop any more.
-TEST(NumericalFaults, StepSizeUnderflowIsNamedWithItsTime) {
-  const Scene scene = parsed(R"({"model": {"R": 0.5, "pellets": [
-      {"m": 1e-12, "phi0": 0, "F0": 1e12, "Omega": 3}]}, "t_end": 5})");
-  for (Method method : kMethods) {
+// Runs the scene under each method; each must end with numerical_failure at time `at` (as
+// the message prints it) for `cause`.
+void expect_failure(const char* text, const std::vector<Method>& methods, const std::string& at,
+                    const std::string& cause) {
+  const Scene scene = parsed(text);
+  for (Method method : methods) {
     SCOPED_TRACE(method_name(method));
-    expect_failure(run_checked(scene, method), "1.0472", "the step size underflowed");
+    const RunResult run = run_checked(scene, method);
+    EXPECT_EQ(run.stats.termination, Termination::numerical_failure);
+    EXPECT_NE(run.stats.message.find("stopped at t = " + at + " s: " + cause), std::string::npos)
+        << run.stats.message;
   }
 }
 
-// The run above ends with φ ≈ 4.4e23 rad: the answer prints it as a number, not as a multiple
-// of π (which overflowed lround and printed φ = -2305843009213693952π).
+// F0/(m R) = 2e24 rad/s²: φ reaches ~4e23 rad by the first reversal (t = π/3), where no step
+// size can resolve the stop any more.
+constexpr const char* kHugeForce = R"({"model": {"R": 0.5, "pellets": [
+    {"m": 1e-12, "phi0": 0, "F0": 1e12, "Omega": 3}]}, "t_end": 5})";
+
+TEST(NumericalFaults, StepSizeUnderflowIsNamedWithItsTime) {
+  expect_failure(kHugeForce, kMethods, "1.0472", "the step size underflowed");
+}
+
+// The answer prints that angle as a number, not as a multiple of π (which overflowed lround
+// and printed φ = -2305843009213693952π).
 TEST(NumericalFaults, AnswerPrintsAHugeAngleInDecimals) {
-  const Scene scene = parsed(R"({"model": {"R": 0.5, "pellets": [
-      {"m": 1e-12, "phi0": 0, "F0": 1e12, "Omega": 3}]}, "t_end": 5})");
+  const Scene scene = parsed(kHugeForce);
   const RunResult run = run_checked(scene, Method::dop853);
   const std::string answer = answer_sentence(run, scene.model);
   EXPECT_NE(answer.find("φ = 4.444e+23,"), std::string::npos) << answer;
@@ -44,19 +48,15 @@ TEST(NumericalFaults, AnswerPrintsAHugeAngleInDecimals) {
 
 // F0/(m R) overflows to infinity in the first right-hand side.
 TEST(NumericalFaults, NonFiniteStateIsNamedWithItsTime) {
-  const Scene scene = parsed(R"({"model": {"R": 1e-300, "pellets": [
-      {"m": 1e-300, "phi0": 0, "F0": 1e12, "Omega": 3}]}, "t_end": 5})");
-  for (Method method : kMethods) {
-    SCOPED_TRACE(method_name(method));
-    expect_failure(run_checked(scene, method), "0", "the state became non-finite");
-  }
+  expect_failure(R"({"model": {"R": 1e-300, "pellets": [
+      {"m": 1e-300, "phi0": 0, "F0": 1e12, "Omega": 3}]}, "t_end": 5})",
+                 kMethods, "0", "the state became non-finite");
 }
 
 // g/R = 1e301 and dphi² = 1e14: the Jacobian's entries overflow and Newton cannot converge.
 TEST(NumericalFaults, RadauNewtonFailureIsNamedWithItsTime) {
-  const Scene scene = parsed(R"({"model": {"R": 1e-300, "pellets": [
-      {"m": 1, "phi0": 0.1, "dphi0": 1e7}]}, "t_end": 5, "solver": {"method": "radau5"}})");
-  expect_failure(run_checked(scene, Method::radau5), "0", "the implicit method's Newton iteration failed");
+  expect_failure(R"({"model": {"R": 1e-300, "pellets": [{"m": 1, "phi0": 0.1, "dphi0": 1e7}]},
+      "t_end": 5})", {Method::radau5}, "0", "the implicit method's Newton iteration failed");
 }
 
 // Extreme scenes that the reader accepts. Each ends by any termination, within its deadline,

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <chrono>
+#include <functional>
 #include <string>
 
 #include "tests/robustness/scene_runs.h"
@@ -20,41 +21,40 @@ constexpr const char* kRattle = R"({"model": {"R": 0.5, "pellets": [
     {"m": 0.2, "phi0": 0, "dphi0": 10}],
     "limiters": [{"angle": 0.01, "k": 1}, {"angle": -0.01, "k": 1}]}, "t_end": 1000})";
 
-TEST(RunLimits, DeadlineStopsALongRunPromptly) {
-  const Scene scene = parsed(kLongForcedRun);
+// Runs the scene with its options changed by `limit`, and checks how and why it stopped.
+RunResult expect_stopped(const char* text, const std::function<void(SimOptions&)>& limit,
+                         Termination termination, const std::string& why) {
+  const Scene scene = parsed(text);
   SimOptions options = scene.sim;
-  options.deadline_ms = 100.0;
-  const auto start = std::chrono::steady_clock::now();
+  options.deadline_ms = 10000.0;  // no test may hang
+  limit(options);
   const RunResult run = run_checked(scene, options);
-  const double wall_s = std::chrono::duration<double>(std::chrono::steady_clock::now() - start).count();
-  EXPECT_EQ(run.stats.termination, Termination::deadline);
-  EXPECT_NE(run.stats.message.find("deadline of 100 ms"), std::string::npos) << run.stats.message;
+  EXPECT_EQ(run.stats.termination, termination);
+  EXPECT_NE(run.stats.message.find(why), std::string::npos) << run.stats.message;
+  return run;
+}
+
+TEST(RunLimits, DeadlineStopsALongRunPromptly) {
+  const auto start = std::chrono::steady_clock::now();
+  const RunResult run = expect_stopped(kLongForcedRun, [](SimOptions& o) { o.deadline_ms = 100.0; },
+                                       Termination::deadline, "deadline of 100 ms");
+  const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
   EXPECT_LT(run.stats.t_reached, 1e6);
-  EXPECT_LT(wall_s, 5.0);  // generous: sanitizer builds on a busy machine, not a timing target
+  EXPECT_LT(wall.count(), 5.0);  // generous: sanitizer builds on a busy machine, not a timing target
 }
 
 TEST(RunLimits, EventLimitStopsARattleCleanly) {
-  const Scene scene = parsed(kRattle);
-  SimOptions options = scene.sim;
-  options.max_events = 500;
-  options.deadline_ms = 10000.0;
-  const RunResult run = run_checked(scene, options);
-  EXPECT_EQ(run.stats.termination, Termination::event_limit);
-  EXPECT_NE(run.stats.message.find("the event limit"), std::string::npos) << run.stats.message;
+  const RunResult run = expect_stopped(kRattle, [](SimOptions& o) { o.max_events = 500; },
+                                       Termination::event_limit, "the event limit");
   EXPECT_LE(run.events.size(), 500u);
   EXPECT_GT(run.stats.t_reached, 0.5);  // about 1 s of rattling at 2 ms per impact
   EXPECT_LT(run.stats.t_reached, 2.0);
 }
 
 TEST(RunLimits, StepLimitStopsALongRunCleanly) {
-  const Scene scene = parsed(kLongForcedRun);
-  SimOptions options = scene.sim;
-  options.max_steps = 1000;
-  options.deadline_ms = 10000.0;
-  const RunResult run = run_checked(scene, options);
-  EXPECT_EQ(run.stats.termination, Termination::step_limit);
-  EXPECT_NE(run.stats.message.find("the step limit"), std::string::npos) << run.stats.message;
-  EXPECT_LE(run.stats.steps, 1000 + 1);
+  const RunResult run = expect_stopped(kLongForcedRun, [](SimOptions& o) { o.max_steps = 1000; },
+                                       Termination::step_limit, "the step limit");
+  EXPECT_LE(run.stats.steps, 1000);
 }
 
 }  // namespace
