@@ -84,7 +84,7 @@ std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, con
     // the same scene give different bytes.
     if (f.plots[i].kind == PlotKind::work_precision) {
       return ApiError{400, "plots[" + std::to_string(i) + "].kind",
-                      "work_precision plots are drawn by `vibro work-precision`, not the server"};
+                      "a work-precision diagram is a sweep of many timed runs: ask POST /api/work-precision?format=png for it"};
     }
   }
   if (auto e = validate_figure(f, scene.model, format)) return ApiError::from(*e);

@@ -54,6 +54,10 @@ export async function simulate(scene, signal) {
 }
 
 // format: "png" | "svg"; resolves to a Blob of that type.
+// A figure of work–precision panels only is a sweep of timed runs, which has its own endpoint.
 export async function renderImage(scene, format, signal) {
-  return (await postJson(`/api/render?format=${format}`, scene, signal)).blob();
+  const plots = scene.plots ?? [];
+  const sweep = plots.length > 0 && plots.every((p) => p.kind === "work_precision");
+  const path = sweep ? "/api/work-precision" : "/api/render";
+  return (await postJson(`${path}?format=${format}`, scene, signal)).blob();
 }
