@@ -23,11 +23,12 @@ if ((${#missing[@]})); then
 fi
 
 # fuzzer-no-link only adds coverage counters; the ASan runtime answers them in ordinary programs.
+# Line tables are all a sanitizer's stack trace needs, and compile faster than full -g.
 flags="-fsanitize=address,undefined,fuzzer-no-link -fno-sanitize-recover=undefined -fno-omit-frame-pointer"
 mkdir -p "$dir"
 echo "asan-build: building $dir ${*:-(everything)} with clang, ASan + UBSan, -O1"
 CC=clang CXX=clang++ cmake -S . -B "$dir" -DCMAKE_BUILD_TYPE=RelWithDebInfo \
-  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -g" -DCMAKE_CXX_FLAGS="$flags" \
+  -DCMAKE_CXX_FLAGS_RELWITHDEBINFO="-O1 -gline-tables-only" -DCMAKE_CXX_FLAGS="$flags" \
   -DCMAKE_EXE_LINKER_FLAGS="-fsanitize=address,undefined" -DVIBRO_BUILD_FUZZ=ON \
   > "$dir/build.log" 2>&1 || { cat "$dir/build.log"; exit 1; }
 targets=()
