@@ -87,7 +87,7 @@ std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
         print_error("scene", "cannot read the file \"" + a + "\"");
         return std::nullopt;
       }
-      origin = a;
+      origin = a == "-" ? "the standard input" : a;
     } else {
       break;  // an option of the command itself
     }
@@ -96,11 +96,12 @@ std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
     print_error("scene", "name a scene file, - for stdin, or --preset NAME");
     return std::nullopt;
   }
-  json j = json::parse(*text, nullptr, false);
-  if (j.is_discarded()) {
-    print_error("scene", origin + " is not valid JSON");
+  auto parsed_text = parse_scene_text(*text);
+  if (auto* e = std::get_if<FieldError>(&parsed_text)) {
+    print_error(e->field, origin + " " + e->message);
     return std::nullopt;
   }
+  json j = std::get<json>(std::move(parsed_text));
   if (j.is_object()) j.merge_patch(overrides);
   SceneOrError parsed = scene_from_json(j);
   if (auto* e = std::get_if<FieldError>(&parsed)) {

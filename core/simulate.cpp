@@ -197,10 +197,10 @@ bool Simulation::over_budget(double t) {
   const StepperStats& s = stepper_->stats();
   if (static_cast<long>(result_.events.size()) >= opt_.max_events) {
     result_.stats.termination = Termination::event_limit;
-    fail(t, "more than " + std::to_string(opt_.max_events) + " events (the event limit)");
+    fail(t, "the run reached its limit of " + std::to_string(opt_.max_events) + " events");
   } else if (s.steps + s.rejected >= opt_.max_steps) {
     result_.stats.termination = Termination::step_limit;
-    fail(t, "more than " + std::to_string(opt_.max_steps) + " steps (the step limit)");
+    fail(t, "the run reached its limit of " + std::to_string(opt_.max_steps) + " steps");
   } else if (std::isfinite(opt_.deadline_ms) &&
              std::chrono::duration<double, std::milli>(Clock::now() - started_).count() >
                  opt_.deadline_ms) {

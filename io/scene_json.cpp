@@ -223,14 +223,20 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
   }
 }
 
-SceneOrError scene_from_text(std::string_view text, const SceneLimits& limits) {
-  // Checked before parsing, so a deep document costs no tree.
+std::variant<json, FieldError> parse_scene_text(std::string_view text, const SceneLimits& limits) {
+  // Checked before parsing, so a deep document costs no tree (and no deep recursion).
   if (text_depth(text) > limits.max_depth) {
     return FieldError{"scene", "nests deeper than " + std::to_string(limits.max_depth) + " levels"};
   }
   json j = json::parse(text, nullptr, false);
   if (j.is_discarded()) return FieldError{"scene", "is not valid JSON"};
-  return scene_from_json(j, limits);
+  return j;
+}
+
+SceneOrError scene_from_text(std::string_view text, const SceneLimits& limits) {
+  auto parsed = parse_scene_text(text, limits);
+  if (auto* e = std::get_if<FieldError>(&parsed)) return *e;
+  return scene_from_json(std::get<json>(parsed), limits);
 }
 
 

@@ -16,6 +16,10 @@ using SceneOrError = std::variant<Scene, FieldError>;
 
 SceneOrError scene_from_json(const nlohmann::json& json, const SceneLimits& limits = {});
 SceneOrError scene_from_text(std::string_view text, const SceneLimits& limits = {});
+// The JSON of a scene's text, with its nesting bounded before parsing; for callers that edit
+// it before reading (the command line's overrides).
+std::variant<nlohmann::json, FieldError> parse_scene_text(std::string_view text,
+                                                          const SceneLimits& limits = {});
 nlohmann::json scene_to_json(const Scene& scene);
 
 }  // namespace vibro

@@ -45,7 +45,7 @@ TEST(RunLimits, DeadlineStopsALongRunPromptly) {
 
 TEST(RunLimits, EventLimitStopsARattleCleanly) {
   const RunResult run = expect_stopped(kRattle, [](SimOptions& o) { o.max_events = 500; },
-                                       Termination::event_limit, "the event limit");
+                                       Termination::event_limit, "its limit of 500 events");
   EXPECT_LE(run.events.size(), 500u);
   EXPECT_GT(run.stats.t_reached, 0.5);  // about 1 s of rattling at 2 ms per impact
   EXPECT_LT(run.stats.t_reached, 2.0);
@@ -53,7 +53,7 @@ TEST(RunLimits, EventLimitStopsARattleCleanly) {
 
 TEST(RunLimits, StepLimitStopsALongRunCleanly) {
   const RunResult run = expect_stopped(kLongForcedRun, [](SimOptions& o) { o.max_steps = 1000; },
-                                       Termination::step_limit, "the step limit");
+                                       Termination::step_limit, "its limit of 1000 steps");
   EXPECT_LE(run.stats.steps, 1000);
 }
 
