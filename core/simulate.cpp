@@ -666,8 +666,6 @@ RunResult Simulation::run() {
         t = b;
         y_ = stepper_->y();
         recorder_.check_normal_force(t, y_, bodies_);
-        first_integral_check(t, y_);
-        check_energy();
       } else {
         t = found.front().t;
         stepper_->dense(t, y_event);
@@ -692,7 +690,11 @@ RunResult Simulation::run() {
       if (!stopped_) over_budget(t);
     }
   }
-  if (!stopped_) t = std::max(t, t_end);
+  if (!stopped_) {
+    t = std::max(t, t_end);
+    first_integral_check(t, y_);
+    check_energy();
+  }
   if (stopped_) {
     // Report the last finite state.
     if (!std::isfinite(y_.sum())) y_ = stepper_->y();

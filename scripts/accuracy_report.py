@@ -173,7 +173,7 @@ def main():
         "- **The run's own estimate** (`stats.error_estimate`, in every result) is the larger of the",
         "  energy-balance defect `|E(t) − E(0) − W_force − W_friction − impact losses|` over the energy",
         "  scale, and the residual of the exact first integral of MODEL.md on unforced paper-law",
-        "  intervals. Both vanish for the exact solution; both are measured at every step end and event.",
+        "  intervals. Both vanish for the exact solution; both are measured at every event and at the end.",
         "- **The true error** of the work-precision sweeps (`vibro work-precision`) is measured against",
         "  what is exact where it applies — the first integral (unforced, paper law), the energy (no",
         "  friction, no forcing) — and otherwise against a reference run with another method at",
