@@ -9,18 +9,7 @@ build="${BUILD_DIR:-build-bench}"
 reps="${REPETITIONS:-5}"
 core="${BENCH_CORE:-1}"
 
-packages=(libbenchmark-dev libboost-dev libsundials-dev)
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  sudo=""
-  [[ $(id -u) -ne 0 ]] && sudo="sudo"
-  echo "bench: installing ${missing[*]}"
-  DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q "${missing[@]}" ||
-    { $sudo apt-get update -q && DEBIAN_FRONTEND=noninteractive $sudo apt-get install -y -q "${missing[@]}"; }
-fi
+bash scripts/install_packages.sh bench libbenchmark-dev libboost-dev libsundials-dev
 
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DVIBRO_BUILD_BENCH=ON -DVIBRO_BUILD_TESTS=OFF \
   > "$build.log" 2>&1 || { cat "$build.log"; exit 1; }

@@ -9,18 +9,7 @@ dir="$1"
 shift
 
 # clang-14 and its sanitizer and libFuzzer runtimes (libclang-rt-14-dev) from Debian 12.
-missing=()
-for p in clang libclang-rt-14-dev; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  sudo=""
-  [[ $(id -u) -ne 0 ]] && sudo="sudo"
-  echo "asan-build: installing ${missing[*]}"
-  apt=(apt-get -o DPkg::Lock::Timeout=600)
-  $sudo "${apt[@]}" update -q
-  DEBIAN_FRONTEND=noninteractive $sudo "${apt[@]}" install -y -q --no-install-recommends "${missing[@]}"
-fi
+bash scripts/install_packages.sh asan-build clang libclang-rt-14-dev
 
 # fuzzer-no-link only adds coverage counters; the ASan runtime answers them in ordinary programs.
 # Line tables are all a sanitizer's stack trace needs, and compile faster than full -g.

@@ -13,19 +13,7 @@ if [[ "${1:-}" == "--test" ]]; then
   command -v npm > /dev/null || packages+=(npm)
 fi
 
-missing=()
-for p in "${packages[@]}"; do
-  dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed" || missing+=("$p")
-done
-if ((${#missing[@]})); then
-  sudo=""
-  [[ $(id -u) -ne 0 ]] && sudo="sudo"
-  echo "setup: installing ${missing[*]}"
-  # Wait for another apt run (an unattended upgrade) instead of failing on its lock.
-  apt=(apt-get -o DPkg::Lock::Timeout=600)
-  $sudo "${apt[@]}" update -q
-  DEBIAN_FRONTEND=noninteractive $sudo "${apt[@]}" install -y -q --no-install-recommends "${missing[@]}"
-fi
+bash scripts/install_packages.sh setup "${packages[@]}"
 
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
 cmake --build build -j"$(nproc)" >> build.log 2>&1 || { tail -50 build.log; exit 1; }

@@ -13,18 +13,9 @@ command -v wrk > /dev/null || { echo "load.sh: needs wrk (apt-get install -y wrk
 [[ -x "$vibro" ]] || { echo "load.sh: no $vibro (build first, or set VIBRO)" >&2; exit 1; }
 
 work="$(mktemp -d)"
-"$vibro" serve --host 127.0.0.1 --port "$port" --quiet > "$work/serve.out" 2>&1 &
-server=$!
 trap 'kill "$server" 2> /dev/null; wait "$server" 2> /dev/null; rm -rf "$work"' EXIT
-for _ in $(seq 50); do
-  curl -sf "http://127.0.0.1:$port/api/health" > /dev/null && break
-  sleep 0.1
-done
-base="http://127.0.0.1:$port"
-
-# The paper scene with its t_end as a placeholder the Lua script fills per request.
-"$vibro" preset paper | sed 's/"t_end": [0-9.]*/"t_end": T_END_HERE/' > "$work/scene.json"
-grep -q T_END_HERE "$work/scene.json"
+source bench/http/serve.sh
+start_server
 
 run() {  # name, then wrk's own arguments
   local name="$1"

@@ -13,17 +13,10 @@ connections="${CONNECTIONS:-64}"
 command -v wrk > /dev/null || { echo "soak.sh: needs wrk (apt-get install -y wrk)" >&2; exit 1; }
 
 work="$(mktemp -d)"
-"$vibro" serve --host 127.0.0.1 --port "$port" --quiet --connections "$connections" \
-  > "$work/serve.out" 2>&1 &
-server=$!
-trap 'kill "$sampler" 2> /dev/null; kill "$server" 2> /dev/null; wait "$server" 2> /dev/null; rm -rf "$work"' EXIT
-sampler=$server  # replaced below
-for _ in $(seq 50); do
-  curl -sf "http://127.0.0.1:$port/api/health" > /dev/null && break
-  sleep 0.1
-done
-base="http://127.0.0.1:$port"
-"$vibro" preset paper | sed 's/"t_end": [0-9.]*/"t_end": T_END_HERE/' > "$work/scene.json"
+sampler=""
+trap 'kill $sampler "$server" 2> /dev/null; wait "$server" 2> /dev/null; rm -rf "$work"' EXIT
+source bench/http/serve.sh
+start_server --connections "$connections"
 export SCENE="$work/scene.json"
 
 rss() { awk '/VmRSS/ {print $2}' "/proc/$server/status"; }
