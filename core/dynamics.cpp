@@ -8,17 +8,6 @@ double normal_per_mass(const Model& model, double phi, double dphi) {
   return model.g * std::cos(phi) + model.R * dphi * dphi;
 }
 
-double sliding_acceleration(const Model& model, double F, double M, int s, double phi,
-                            double dphi) {
-  const double mu = model.mu();
-  const double gR = model.g / model.R;
-  if (model.friction == FrictionLaw::paper) {
-    return F / (M * model.R) - s * mu * dphi * dphi - gR * (std::sin(phi) + s * mu * std::cos(phi));
-  }
-  return F / (M * model.R) - gR * std::sin(phi) -
-         s * mu * std::abs(dphi * dphi + gR * std::cos(phi));
-}
-
 double body_force(const Model& model, const Body& body, double t) {
   double F = 0.0;
   for (int i : body.members) F += model.pellets[i].force.at(t);

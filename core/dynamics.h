@@ -10,10 +10,6 @@
 
 namespace vibro {
 
-// Tangential acceleration (rad/s²) of a body of total mass M under total force F, sliding in
-// direction s at (phi, dphi), under the model's friction law.
-double sliding_acceleration(const Model& model, double F, double M, int s, double phi, double dphi);
-
 // Normal force per unit mass, g cos phi + R dphi² (m/s²); negative means the paper law's
 // friction pushes the pellet along.
 double normal_per_mass(const Model& model, double phi, double dphi);
