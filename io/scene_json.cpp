@@ -228,9 +228,27 @@ std::variant<json, FieldError> parse_scene_text(std::string_view text, const Sce
   if (text_depth(text) > limits.max_depth) {
     return FieldError{"scene", "nests deeper than " + std::to_string(limits.max_depth) + " levels"};
   }
-  json j = json::parse(text, nullptr, false);
-  if (j.is_discarded()) return FieldError{"scene", "is not valid JSON"};
-  return j;
+  // The parser's message may quote the bytes it read: keep it printable ASCII, so that the
+  // error itself is valid JSON text.
+  auto printable = [](std::string why) {
+    for (char& c : why)
+      if (static_cast<unsigned char>(c) < 0x20 || static_cast<unsigned char>(c) >= 0x7f) c = '?';
+    return why;
+  };
+  try {
+    return json::parse(text);
+  } catch (const json::parse_error& e) {
+    // Where it breaks helps a person find the typo: "at byte 57: ...".
+    const std::string why = printable(e.what());
+    const auto colon = why.find("syntax error");
+    return FieldError{"scene", "is not valid JSON (at byte " + std::to_string(e.byte) + ": " +
+                                   (colon == std::string::npos ? why : why.substr(colon)) + ")"};
+  } catch (const json::exception& e) {  // a number beyond double's range (1e999), say
+    const std::string why = printable(e.what());
+    const auto end = why.find("] ");
+    return FieldError{"scene", "is not valid JSON (" +
+                                   (end == std::string::npos ? why : why.substr(end + 2)) + ")"};
+  }
 }
 
 SceneOrError scene_from_text(std::string_view text, const SceneLimits& limits) {

@@ -110,6 +110,17 @@ TEST(SceneJson, TextThatIsNotJsonOrTooDeepIsRefused) {
   EXPECT_EQ(field(""), "scene");
 }
 
+TEST(SceneJson, ASyntaxErrorSaysWhereAndAnOverflowSaysWhat) {
+  SceneOrError r = scene_from_text(R"({"model": {"R": 0.5,, }})");
+  ASSERT_TRUE(std::holds_alternative<FieldError>(r));
+  EXPECT_NE(std::get<FieldError>(r).message.find("at byte 21"), std::string::npos)
+      << std::get<FieldError>(r).message;
+  r = scene_from_text(R"({"t_end": 1e999})");
+  ASSERT_TRUE(std::holds_alternative<FieldError>(r));
+  EXPECT_EQ(std::get<FieldError>(r).field, "scene");
+  EXPECT_NE(std::get<FieldError>(r).message.find("1e999"), std::string::npos);
+}
+
 TEST(SceneJson, EveryPresetParsesAndItsCanonicalFormIsStable) {
   for (const PresetText& p : presets()) {
     const SceneOrError first = scene_from_text(p.json);
