@@ -13,16 +13,6 @@ void collide(double m_i, double m_j, double k_c, double& v_i, double& v_j) {
   v_j = ((m_j - k_c * m_i) * vj + m_i * (1.0 + k_c) * vi) / M;
 }
 
-namespace {
-
-void strike_limiter(const Model& model, std::vector<bool>& armed, int limiter) {
-  if (model.limiters[limiter].mobile) armed[limiter] = false;
-  for (std::size_t j = 0; j < model.limiters.size(); ++j) {
-    if (model.limiters[j].mobile && model.limiters[j].rearm_by == limiter) armed[j] = true;
-  }
-}
-
-// Two pellets on the two sides of an armed limiter that acts on both do not touch each other.
 bool separated_by_limiter(const std::vector<LimiterContact>& lc, const std::vector<bool>& armed,
                           const PairContact& p) {
   for (const LimiterContact& a : lc) {
@@ -32,6 +22,15 @@ bool separated_by_limiter(const std::vector<LimiterContact>& lc, const std::vect
     }
   }
   return false;
+}
+
+namespace {
+
+void strike_limiter(const Model& model, std::vector<bool>& armed, int limiter) {
+  if (model.limiters[limiter].mobile) armed[limiter] = false;
+  for (std::size_t j = 0; j < model.limiters.size(); ++j) {
+    if (model.limiters[j].mobile && model.limiters[j].rearm_by == limiter) armed[j] = true;
+  }
 }
 
 // The limit of an endless cascade: each group of touching pellets moves with its momentum's

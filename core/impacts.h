@@ -24,6 +24,10 @@ struct PairContact {
   int ahead;
 };
 
+// Two pellets on the two sides of an armed limiter that acts on both do not touch each other.
+bool separated_by_limiter(const std::vector<LimiterContact>& limiter_contacts,
+                          const std::vector<bool>& armed, const PairContact& pair);
+
 // Newton's law with momentum conserved, velocities signed along phi (MODEL.md, event 3).
 void collide(double m_i, double m_j, double k_c, double& v_i, double& v_j);
 

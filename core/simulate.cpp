@@ -9,6 +9,7 @@
 #include <sstream>
 
 #include "core/chatter.h"
+#include "core/contacts.h"
 #include "core/dynamics.h"
 #include "core/first_integral.h"
 #include "core/impacts.h"
@@ -20,14 +21,6 @@ namespace vibro {
 namespace {
 
 using Clock = std::chrono::steady_clock;
-
-// Two pellets next to each other around the circle; their gap phi_ahead − phi_behind + offset
-// lies in [0, 2π] for the whole run, because pellets never pass each other.
-struct Neighbours {
-  int behind;
-  int ahead;
-  double offset;
-};
 
 class Simulation {
  public:
@@ -65,13 +58,12 @@ class Simulation {
                        2.0 * p.m * model.g * model.R;
     }
     energy_scale_ = std::max(energy_scale_, 1e-300);
-    set_neighbours();
+    if (n_ >= 2) neighbours_ = circular_neighbours(y_, n_);
   }
 
   RunResult run();
 
  private:
-  void set_neighbours();
   double total_energy() const;
   double total_work() const;
   void check_energy();
@@ -81,7 +73,6 @@ class Simulation {
                     const std::vector<PairContact>& pair_contacts,
                     const std::vector<int>& struck_limiter_of, const std::vector<bool>& reversed,
                     const std::vector<bool>& released, std::vector<bool>& touched);
-  void touching_pairs(const std::vector<bool>& at_limiter, std::vector<PairContact>& pair_contacts);
   void start_segment(double t);
   void add_event(Event e, double t);
   bool over_budget(double t);
@@ -116,24 +107,6 @@ class Simulation {
   Clock::time_point started_ = Clock::now();
   bool stopped_ = false;
 };
-
-void Simulation::set_neighbours() {
-  if (n_ < 2) return;
-  std::vector<int> order(n_);
-  std::iota(order.begin(), order.end(), 0);
-  auto place = [&](int i) {
-    const double w = std::fmod(y_[phi_index(i)], kTwoPi);
-    return w < 0.0 ? w + kTwoPi : w;
-  };
-  std::sort(order.begin(), order.end(), [&](int a, int b) { return place(a) < place(b); });
-  for (int k = 0; k < n_; ++k) {
-    const int behind = order[k], ahead = order[(k + 1) % n_];
-    const double raw = y_[phi_index(ahead)] - y_[phi_index(behind)];
-    double gap = std::fmod(raw, kTwoPi);
-    if (gap <= 0.0) gap += kTwoPi;
-    neighbours_.push_back({behind, ahead, gap - raw});
-  }
-}
 
 double Simulation::total_energy() const {
   double E = 0.0;
@@ -224,54 +197,8 @@ void Simulation::assign_modes(double t, const std::vector<LimiterContact>& limit
   for (std::size_t b = 0; b < old.size(); ++b)
     for (int i : old[b].members) old_body[i] = static_cast<int>(b);
 
-  // Touching pellets move as one body when their forces press them together and they would
-  // otherwise collide again at once: equal speeds, or a remaining chatter between them shorter
-  // than the chatter time (its plastic limit). Chains are grown until nothing more joins.
-  std::vector<int> next(n_, -1), prev(n_, -1);
-  auto chain = [&](int from, const std::vector<int>& link, double& F, double& M, double& P) {
-    F = M = P = 0.0;
-    for (int i = from, guard = 0; i >= 0 && guard < n_; i = link[i], ++guard) {
-      F += model_.pellets[i].force.at(t);
-      M += model_.pellets[i].m;
-      P += model_.pellets[i].m * y_[dphi_index(i)];
-    }
-  };
-  for (bool grew = true; grew;) {
-    grew = false;
-    for (const PairContact& p : pair_contacts) {
-      if (next[p.behind] >= 0 || prev[p.ahead] >= 0) continue;
-      bool across_limiter = false;
-      for (const LimiterContact& a : limiter_contacts)
-        for (const LimiterContact& b : limiter_contacts)
-          across_limiter = across_limiter || (a.pellet == p.behind && b.pellet == p.ahead &&
-                                              a.limiter == b.limiter && a.side < b.side &&
-                                              armed_[a.limiter]);
-      if (across_limiter) continue;
-      double Fb, Mb, Pb, Fa, Ma, Pa;
-      chain(p.behind, prev, Fb, Mb, Pb);
-      chain(p.ahead, next, Fa, Ma, Pa);
-      const double press = (Fb / Mb - Fa / Ma) / model_.R;  // relative acceleration, rad/s²
-      const double approach = Pb / Mb - Pa / Ma;
-      if (press >= 0.0 && std::abs(approach) <= std::max(v_merge_, press * chatter_time_)) {
-        next[p.behind] = p.ahead;
-        prev[p.ahead] = p.behind;
-        grew = true;
-      }
-    }
-  }
-  std::vector<bool> placed(n_, false);
-  for (int start = 0; start < n_; ++start) {
-    if (placed[start]) continue;
-    int first = start;
-    for (int guard = 0; prev[first] >= 0 && prev[first] != start && guard < n_; ++guard)
-      first = prev[first];
-    Body body;
-    for (int i = first, guard = 0; i >= 0 && !placed[i] && guard < n_; i = next[i], ++guard) {
-      body.members.push_back(i);
-      placed[i] = true;
-    }
-    bodies_.push_back(body);
-  }
+  bodies_ = join_touching(model_, t, y_, pair_contacts, limiter_contacts, armed_,
+                          {v_merge_, chatter_time_});
 
   for (Body& body : bodies_) {
     double P = 0.0, M = 0.0;
@@ -437,7 +364,7 @@ void Simulation::instant(double t, const std::vector<Crossing>& crossings) {
         break;
     }
   }
-  touching_pairs(at_limiter, pair_contacts);
+  snap_touching(y_, neighbours_, contact_distance_, at_limiter, pair_contacts);
   // Standing contacts: bodies resting on limiters, and pellets moving together.
   for (const Body& b : bodies_) {
     if (b.mode == Mode::resting) {
@@ -479,31 +406,6 @@ void Simulation::instant(double t, const std::vector<Crossing>& crossings) {
   for (int i = 0; i < n_; ++i)
     if (touched[i]) recorder_.end_branch(i);
   check_energy();
-}
-
-// Neighbours closer than the contact distance touch at this instant too: an inelastic cascade
-// among several pellets closes their gaps geometrically, and only treating the near-touching
-// ones together ends it in bounded work (and never lets round-off push one through another).
-void Simulation::touching_pairs(const std::vector<bool>& at_limiter,
-                                std::vector<PairContact>& pair_contacts) {
-  for (int pass = 0; pass < n_; ++pass) {
-    bool changed = false;
-    for (const Neighbours& nb : neighbours_) {
-      double& pb = y_[phi_index(nb.behind)];
-      double& pa = y_[phi_index(nb.ahead)];
-      const double gap = pa - pb + nb.offset;
-      if (gap > contact_distance_ * (1.0 + std::abs(pb))) continue;
-      const bool listed = std::any_of(pair_contacts.begin(), pair_contacts.end(), [&](const PairContact& c) {
-        return c.behind == nb.behind && c.ahead == nb.ahead;
-      });
-      if (!listed) pair_contacts.push_back({nb.behind, nb.ahead});
-      if (gap == 0.0) continue;
-      if (at_limiter[nb.ahead]) pb = pa + nb.offset;
-      else pa = pb - nb.offset;
-      changed = true;
-    }
-    if (!changed) break;
-  }
 }
 
 void Simulation::initial_instant() {

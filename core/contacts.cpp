@@ -1,0 +1,101 @@
+#include "core/contacts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+namespace vibro {
+
+std::vector<Neighbours> circular_neighbours(const Vec& y, int n) {
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  auto place = [&](int i) {
+    const double w = std::fmod(y[phi_index(i)], kTwoPi);
+    return w < 0.0 ? w + kTwoPi : w;
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return place(a) < place(b); });
+  std::vector<Neighbours> neighbours;
+  for (int k = 0; k < n; ++k) {
+    const int behind = order[k], ahead = order[(k + 1) % n];
+    const double raw = y[phi_index(ahead)] - y[phi_index(behind)];
+    double gap = std::fmod(raw, kTwoPi);
+    if (gap <= 0.0) gap += kTwoPi;
+    neighbours.push_back({behind, ahead, gap - raw});
+  }
+  return neighbours;
+}
+
+void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact_distance,
+                   const std::vector<bool>& at_limiter, std::vector<PairContact>& pairs) {
+  for (std::size_t pass = 0; pass < neighbours.size(); ++pass) {
+    bool changed = false;
+    for (const Neighbours& nb : neighbours) {
+      double& pb = y[phi_index(nb.behind)];
+      double& pa = y[phi_index(nb.ahead)];
+      const double gap = pa - pb + nb.offset;
+      if (gap > contact_distance * (1.0 + std::abs(pb))) continue;
+      const bool listed = std::any_of(pairs.begin(), pairs.end(), [&](const PairContact& c) {
+        return c.behind == nb.behind && c.ahead == nb.ahead;
+      });
+      if (!listed) pairs.push_back({nb.behind, nb.ahead});
+      if (gap == 0.0) continue;
+      if (at_limiter[nb.ahead]) pb = pa + nb.offset;
+      else pa = pb - nb.offset;
+      changed = true;
+    }
+    if (!changed) break;
+  }
+}
+
+std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
+                                const std::vector<PairContact>& pairs,
+                                const std::vector<LimiterContact>& limiter_contacts,
+                                const std::vector<bool>& armed, const JoinCriteria& criteria) {
+  const int n = model.size();
+  std::vector<int> next(n, -1), prev(n, -1);
+  // Force, mass and momentum of the chain that `link` leads to from `from`.
+  auto chain = [&](int from, const std::vector<int>& link, double& F, double& M, double& P) {
+    F = M = P = 0.0;
+    for (int i = from, guard = 0; i >= 0 && guard < n; i = link[i], ++guard) {
+      F += model.pellets[i].force.at(t);
+      M += model.pellets[i].m;
+      P += model.pellets[i].m * y[dphi_index(i)];
+    }
+  };
+  // Chains grow until nothing more joins: a pair's press depends on the chains behind and ahead.
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const PairContact& p : pairs) {
+      if (next[p.behind] >= 0 || prev[p.ahead] >= 0) continue;
+      if (separated_by_limiter(limiter_contacts, armed, p)) continue;
+      double Fb, Mb, Pb, Fa, Ma, Pa;
+      chain(p.behind, prev, Fb, Mb, Pb);
+      chain(p.ahead, next, Fa, Ma, Pa);
+      const double press = (Fb / Mb - Fa / Ma) / model.R;  // relative acceleration, rad/s²
+      const double approach = Pb / Mb - Pa / Ma;
+      if (press >= 0.0 &&
+          std::abs(approach) <= std::max(criteria.v_merge, press * criteria.chatter_time)) {
+        next[p.behind] = p.ahead;
+        prev[p.ahead] = p.behind;
+        grew = true;
+      }
+    }
+  }
+  std::vector<Body> bodies;
+  std::vector<bool> placed(n, false);
+  for (int start = 0; start < n; ++start) {
+    if (placed[start]) continue;
+    int first = start;
+    for (int guard = 0; prev[first] >= 0 && prev[first] != start && guard < n; ++guard)
+      first = prev[first];
+    Body body;
+    for (int i = first, guard = 0; i >= 0 && !placed[i] && guard < n; i = next[i], ++guard) {
+      body.members.push_back(i);
+      placed[i] = true;
+    }
+    bodies.push_back(body);
+  }
+  return bodies;
+}
+
+}  // namespace vibro

@@ -1,0 +1,48 @@
+// Who touches whom around the circle: neighbours and their gaps, pellets close enough to touch
+// at an instant, and which touching pellets move on together as one body.
+#pragma once
+
+#include <vector>
+
+#include "core/impacts.h"
+#include "core/model.h"
+#include "core/motion.h"
+#include "core/ode.h"
+
+namespace vibro {
+
+// Two pellets next to each other around the circle; their gap phi_ahead − phi_behind + offset
+// lies in [0, 2π] for the whole run, because pellets never pass each other.
+struct Neighbours {
+  int behind;
+  int ahead;
+  double offset;
+};
+
+// The neighbours of n pellets (n ≥ 2) in their circular order at the state y.
+std::vector<Neighbours> circular_neighbours(const Vec& y, int n);
+
+// Neighbours closer than `contact_distance` (relative to 1 + |φ|) touch at this instant too: they
+// are added to `pairs` and snapped onto one place (the one at a limiter stays put). An inelastic
+// cascade among several pellets closes their gaps geometrically, and only treating the
+// near-touching ones together ends it in bounded work (and never lets round-off push one pellet
+// through another).
+void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact_distance,
+                   const std::vector<bool>& at_limiter, std::vector<PairContact>& pairs);
+
+// When touching pellets move on as one body: their forces press them together, and they would
+// otherwise collide again at once — equal speeds within `v_merge`, or a remaining chatter between
+// them shorter than `chatter_time` (its plastic limit).
+struct JoinCriteria {
+  double v_merge = 0.0;       // rad/s
+  double chatter_time = 0.0;  // s
+};
+
+// The bodies after an instant, members in +φ order (modes are left to the caller). Pairs on the
+// two sides of an armed limiter that acts on both never join.
+std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
+                                const std::vector<PairContact>& pairs,
+                                const std::vector<LimiterContact>& limiter_contacts,
+                                const std::vector<bool>& armed, const JoinCriteria& criteria);
+
+}  // namespace vibro
