@@ -98,7 +98,7 @@ std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
   }
   auto parsed_text = parse_scene_text(*text);
   if (auto* e = std::get_if<FieldError>(&parsed_text)) {
-    print_error(e->field, origin + " " + e->message);
+    print_error(e->field, e->field == "scene" ? origin + " " + e->message : e->message);
     return std::nullopt;
   }
   json j = std::get<json>(std::move(parsed_text));

@@ -1,6 +1,7 @@
 #include "io/scene_json.h"
 
 #include <cmath>
+#include <set>
 
 #include "io/json_fields.h"
 
@@ -223,6 +224,66 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
   }
 }
 
+namespace {
+
+// Follows the parser through the document to refuse a key given twice in one object (JSON
+// would silently keep the last value: a script that sets "R" twice means one of them), naming
+// it by its path.
+class DuplicateKeys {
+ public:
+  bool operator()(int, json::parse_event_t event, json& parsed) {
+    switch (event) {
+      case json::parse_event_t::object_start:
+      case json::parse_event_t::array_start:
+        frames_.push_back({event == json::parse_event_t::object_start, {}, {}, 0});
+        break;
+      case json::parse_event_t::key: {
+        Frame& f = frames_.back();
+        std::string key = parsed.get<std::string>();
+        if (!f.keys.insert(key).second) throw FieldException(path() + key, "appears twice");
+        f.key = std::move(key);
+        break;
+      }
+      case json::parse_event_t::object_end:
+      case json::parse_event_t::array_end:
+        frames_.pop_back();
+        element_done();
+        break;
+      case json::parse_event_t::value:
+        element_done();
+        break;
+    }
+    return true;
+  }
+
+ private:
+  struct Frame {
+    bool object;
+    std::set<std::string> keys;
+    std::string key;    // object: the key being read
+    std::size_t index;  // array: the element being read
+  };
+
+  void element_done() {
+    if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+  }
+
+  // The path of the innermost object, ready for a key to be appended ("model.pellets[1].").
+  std::string path() const {
+    std::string p;
+    for (std::size_t i = 0; i + 1 < frames_.size(); ++i) {
+      const Frame& f = frames_[i];
+      if (f.object) p += (p.empty() ? "" : ".") + f.key;
+      else p += "[" + std::to_string(f.index) + "]";
+    }
+    return p.empty() ? p : p + ".";
+  }
+
+  std::vector<Frame> frames_;
+};
+
+}  // namespace
+
 std::variant<json, FieldError> parse_scene_text(std::string_view text, const SceneLimits& limits) {
   // Checked before parsing, so a deep document costs no tree (and no deep recursion).
   if (text_depth(text) > limits.max_depth) {
@@ -236,7 +297,9 @@ std::variant<json, FieldError> parse_scene_text(std::string_view text, const Sce
     return why;
   };
   try {
-    return json::parse(text);
+    return json::parse(text, DuplicateKeys());
+  } catch (const FieldException& e) {
+    return FieldError{e.field, e.what()};
   } catch (const json::parse_error& e) {
     // Where it breaks helps a person find the typo: "at byte 57: ...".
     const std::string why = printable(e.what());

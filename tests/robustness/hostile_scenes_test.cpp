@@ -57,13 +57,14 @@ TEST(HostileScenes, EmptyAndNonObjectBodies) {
   expect_refused("empty and non-object bodies", empty_body_cases());
 }
 
-// JSON has one value per key; the reader takes the last, as nlohmann::json does. A duplicate
-// is not an error, so a scene cannot be read two ways.
-TEST(HostileScenes, DuplicateKeysTakeTheLastValue) {
+// A key given twice is refused, even when both values are good: JSON would keep the last
+// silently, and a script that sets "R" twice means one of them.
+TEST(HostileScenes, DuplicateKeysAreRefusedEvenWithGoodValues) {
   const SceneOrError r = scene_from_text(
-      R"({"model": {"R": -1, "R": 0.25, "pellets": [{"m": 1, "phi0": 0}]}, "t_end": 1})");
-  ASSERT_TRUE(std::holds_alternative<Scene>(r));
-  EXPECT_EQ(std::get<Scene>(r).model.R, 0.25);
+      R"({"model": {"R": 0.5, "R": 0.25, "pellets": [{"m": 1, "phi0": 0}]}, "t_end": 1})");
+  ASSERT_TRUE(std::holds_alternative<FieldError>(r));
+  EXPECT_EQ(std::get<FieldError>(r).field, "model.R");
+  EXPECT_EQ(std::get<FieldError>(r).message, "appears twice");
 }
 
 }  // namespace

@@ -126,7 +126,7 @@ std::vector<HostileCase> duplicate_key_cases() {
        R"({"model": {"R": 1, "pellets": [{"m": 1, "phi0": 0}]}, "t_end": 1, "t_end": "2"})", "t_end"},
       {"model twice, the last without pellets",
        R"({"model": {"R": 1, "pellets": [{"m": 1, "phi0": 0}]}, "model": {"R": 1}, "t_end": 1})",
-       "model.pellets"},
+       "model"},
       {"an unknown key twice", with_model_key(R"("zz": 1, "zz": 2)"), "model.zz"},
       {"kind twice, the last unknown",
        R"({"model": {"R": 1, "pellets": [{"m": 1, "phi0": 0}]}, "t_end": 1,
