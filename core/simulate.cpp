@@ -73,11 +73,14 @@ class Simulation {
                     const std::vector<PairContact>& pair_contacts,
                     const std::vector<int>& struck_limiter_of, const std::vector<bool>& reversed,
                     const std::vector<bool>& released, std::vector<bool>& touched);
+  void resolve_instant(double t, const std::vector<LimiterContact>& limiter_contacts,
+                       const std::vector<PairContact>& pair_contacts,
+                       const std::vector<bool>& reversed, const std::vector<bool>& released);
   void start_segment(double t);
   void add_event(Event e, double t);
   bool over_budget(double t);
   void fail(double t, const std::string& why);
-  void first_integral_check(double t, const Vec& y);
+  void first_integral_check(const Vec& y);
 
   const Model& model_;
   const SimOptions& opt_;
@@ -129,8 +132,7 @@ void Simulation::check_energy() {
   }
 }
 
-void Simulation::first_integral_check(double t, const Vec& y) {
-  (void)t;
+void Simulation::first_integral_check(const Vec& y) {
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     if (!first_integral_[b]) continue;
     const int L = bodies_[b].leader();
@@ -382,6 +384,14 @@ void Simulation::instant(double t, const std::vector<Crossing>& crossings) {
     }
   }
 
+  resolve_instant(t, limiter_contacts, pair_contacts, reversed, released);
+}
+
+// Impacts among the contacts of an instant, then the modes that follow; the events of both.
+void Simulation::resolve_instant(double t, const std::vector<LimiterContact>& limiter_contacts,
+                                 const std::vector<PairContact>& pair_contacts,
+                                 const std::vector<bool>& reversed,
+                                 const std::vector<bool>& released) {
   std::vector<double> v(n_), place(n_);
   for (int i = 0; i < n_; ++i) {
     v[i] = y_[dphi_index(i)];
@@ -432,25 +442,8 @@ void Simulation::initial_instant() {
       contacts.push_back({i, l, side});
     }
   }
-  std::vector<double> v(n_), place(n_);
-  for (int i = 0; i < n_; ++i) {
-    v[i] = y_[dphi_index(i)];
-    place[i] = y_[phi_index(i)];
-  }
-  const std::vector<double> v_before = v;
-  std::vector<Event> impacts = resolve_impacts(model_, v, armed_, contacts, {}, place);
-  std::vector<int> struck(n_, -1);
-  std::vector<bool> touched(n_, false), none(n_, false);
-  for (int i = 0; i < n_; ++i) {
-    impact_losses_ += 0.5 * model_.pellets[i].m * model_.R * model_.R *
-                      (v[i] * v[i] - v_before[i] * v_before[i]);
-    y_[dphi_index(i)] = v[i];
-  }
-  for (Event& e : impacts) {
-    if (e.kind == EventKind::limiter) struck[e.pellets[0]] = e.limiter;
-    add_event(std::move(e), 0.0);
-  }
-  assign_modes(0.0, contacts, {}, struck, none, none, touched);
+  const std::vector<bool> none(n_, false);
+  resolve_instant(0.0, contacts, {}, none, none);
 }
 
 void Simulation::start_segment(double t) {
@@ -572,7 +565,7 @@ RunResult Simulation::run() {
         t = found.front().t;
         stepper_->dense(t, y_event);
         y_ = y_event;
-        first_integral_check(t, y_);
+        first_integral_check(y_);
         recorder_.sample(t, y_);
         recorder_.check_normal_force(t, y_, bodies_);
         same_instant_ = std::abs(t - last_instant_) <= simultaneous ? same_instant_ + 1 : 0;
@@ -594,7 +587,7 @@ RunResult Simulation::run() {
   }
   if (!stopped_) {
     t = std::max(t, t_end);
-    first_integral_check(t, y_);
+    first_integral_check(y_);
     check_energy();
   }
   if (stopped_) {
