@@ -132,8 +132,7 @@ void Fields::done() const {
       }
     }
     if (!best.empty()) message += " (did you mean \"" + best + "\"?)";
-    // The empty key is spelled "" so that the refusal still names a field.
-    throw FieldException(path(it.key().empty() ? "\"\"" : it.key()), message);
+    throw FieldException(path(key_name(it.key())), message);
   }
 }
 

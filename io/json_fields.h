@@ -45,6 +45,9 @@ class Fields {
   std::set<std::string> read_;
 };
 
+// A key as a field path spells it: the empty key is `""`, so that a refusal still names a field.
+inline std::string key_name(const std::string& key) { return key.empty() ? "\"\"" : key; }
+
 // A number from a JSON value, naming `field` if it is not one.
 double as_number(const nlohmann::json& v, const std::string& field);
 long as_integer(const nlohmann::json& v, const std::string& field);

@@ -240,7 +240,7 @@ class DuplicateKeys {
       case json::parse_event_t::key: {
         Frame& f = frames_.back();
         std::string key = parsed.get<std::string>();
-        if (!f.keys.insert(key).second) throw FieldException(path() + key, "appears twice");
+        if (!f.keys.insert(key).second) throw FieldException(path() + key_name(key), "appears twice");
         f.key = std::move(key);
         break;
       }
@@ -273,7 +273,7 @@ class DuplicateKeys {
     std::string p;
     for (std::size_t i = 0; i + 1 < frames_.size(); ++i) {
       const Frame& f = frames_[i];
-      if (f.object) p += (p.empty() ? "" : ".") + f.key;
+      if (f.object) p += (p.empty() ? "" : ".") + key_name(f.key);
       else p += "[" + std::to_string(f.index) + "]";
     }
     return p.empty() ? p : p + ".";

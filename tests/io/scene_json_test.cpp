@@ -110,6 +110,18 @@ TEST(SceneJson, TextThatIsNotJsonOrTooDeepIsRefused) {
   EXPECT_EQ(field(""), "scene");
 }
 
+TEST(SceneJson, AnEmptyKeyGivenTwiceIsNamed) {
+  // Found by the fuzzer: the empty key twice at the top level was refused with an empty field.
+  for (const char* text : {R"({"": 1, "": 2})", R"({"model": {"": {"": 1, "": 2}}})"}) {
+    const SceneOrError r = scene_from_text(text);
+    ASSERT_TRUE(std::holds_alternative<FieldError>(r)) << text;
+    EXPECT_FALSE(std::get<FieldError>(r).field.empty()) << text;
+  }
+  EXPECT_EQ(std::get<FieldError>(scene_from_text(R"({"": 1, "": 2})")).field, "\"\"");
+  EXPECT_EQ(std::get<FieldError>(scene_from_text(R"({"model": {"": {"": 1, "": 2}}})")).field,
+            "model.\"\".\"\"");
+}
+
 TEST(SceneJson, ASyntaxErrorSaysWhereAndAnOverflowSaysWhat) {
   SceneOrError r = scene_from_text(R"({"model": {"R": 0.5,, }})");
   ASSERT_TRUE(std::holds_alternative<FieldError>(r));
