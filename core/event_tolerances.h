@@ -1,0 +1,46 @@
+// The small numbers of the event core, in one place, each with the reason for its value. They
+// depend on the model's scales only, never on the integrator's tolerance: runs at different
+// tolerances then make the same decisions (the same impacts listed, the same chatter summed), so
+// their event lists can be compared event by event.
+#pragma once
+
+#include <cmath>
+
+#include "core/model.h"
+
+namespace vibro {
+
+struct EventTolerances {
+  // sqrt(R/g), s: the model's natural time unit (a small swing's period over 2π).
+  double time_scale = 1.0;
+  // Chatter series that would last less than this are summed in closed form (MODEL.md, event 4):
+  // 1e-4·time_scale. Summing errs by about chatter_time²/time_scale (the accelerations change that
+  // little over the summed flights), 1e-8·time_scale, far below what a user resolves.
+  double chatter_time = 0.0;
+  // Speeds below this are zero, rad/s: 1e-13 of the speed scale, round-off of a speed snapped
+  // to zero and carried through an impact.
+  double v_eps = 0.0;
+  // Touching pellets closer in speed than this move on together, rad/s: 1e-9 of the speed
+  // scale. Closer speeds would give a next collision within round-off of the gap.
+  double v_merge = 0.0;
+  // Neighbours closer than this (relative to 1 + |φ|) touch at an instant, rad: an inelastic
+  // cascade closes gaps geometrically and ends only when the near-touching ones are treated
+  // together; 1e-10 stays far above the round-off of an unwrapped angle.
+  double contact_distance = 1e-10;
+  // A body at rest this close to an armed limiter (relative to 1 + |φ|) sits on it: the angle of
+  // a body snapped onto a limiter, up to round-off.
+  double on_limiter = 1e-14;
+  // At t = 0 a pellet this close to a limiter (relative) starts on it: a scene that writes the
+  // limiter's angle in decimals (0.7853981633974483) means that limiter.
+  double start_on_limiter = 1e-12;
+  // Roots this close in time are one instant (MODEL.md, event 5).
+  double simultaneous(double t) const { return 1e-12 * (1.0 + std::abs(t)); }
+  // Instants at one time before the run is stopped as an unresolved Zeno sequence: a cascade is
+  // resolved within one instant, so even a long chain of pellets needs far fewer.
+  int max_same_instant = 1000;
+};
+
+// The tolerances for a model, from its time scale and the pellets' initial speeds.
+EventTolerances event_tolerances(const Model& model);
+
+}  // namespace vibro

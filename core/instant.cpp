@@ -1,0 +1,290 @@
+#include "core/instant.h"
+
+#include <cmath>
+
+#include "core/chatter.h"
+#include "core/dynamics.h"
+
+namespace vibro {
+namespace {
+
+double kinetic(const Model& model, int i, double v) {
+  return 0.5 * model.pellets[i].m * model.R * model.R * v * v;
+}
+
+// The time of the event, and the angle of its first pellet.
+Event stamped(Event e, double t, const Vec& y) {
+  e.t = t;
+  if (!e.pellets.empty()) e.phi = y[phi_index(e.pellets[0])];
+  return e;
+}
+
+bool separates_at(const Crossing& c, const std::vector<Watch>& watches, int body, int split) {
+  const Watch& w = watches[c.watch];
+  return w.kind == WatchKind::separation && w.body == body && w.split == split;
+}
+
+// The limiter a body at speed zero is pressed against, if any: a contact of this instant, or a
+// limiter it sits on (a flight too short to leave it).
+struct Support {
+  int limiter = -1;
+  int side = 0;
+};
+
+Support support_of(const Model& model, const EventTolerances& tol, const Body& body,
+                   const std::vector<LimiterContact>& contacts, const std::vector<bool>& armed,
+                   double phi, double a_free, double v) {
+  Support s;
+  for (const LimiterContact& c : contacts)
+    for (int i : body.members)
+      if (c.pellet == i && armed[c.limiter]) s = {c.limiter, c.side};
+  if (s.limiter < 0 && std::abs(v) <= tol.v_eps) {
+    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
+      const double d = wrap_angle(phi - model.limiters[l].angle);
+      if (armed[l] && std::abs(d) <= tol.on_limiter * (1.0 + std::abs(phi)) &&
+          model.limiters[l].acts_on(body.leader())) {
+        s = {l, a_free > 0.0 ? -1 : 1};
+      }
+    }
+  }
+  return s;
+}
+
+// Phase 4: a lone pellet that leaves the fixed limiter it just struck, pressed back so hard that
+// the rest of its impacts would last less than the chatter time: one chatter event, at rest.
+bool sum_chatter(const Model& model, const EventTolerances& tol, double t, int pellet,
+                 int limiter, double& v, double a_free, Vec& y, InstantOutcome& out) {
+  const int side = v > 0.0 ? 1 : -1;
+  const Limiter& lim = model.limiters[limiter];
+  const auto series = chatter_series(model, t, lim.angle, side, std::abs(v), lim.k, a_free);
+  if (!series || series->t_next / (1.0 - series->r) > tol.chatter_time) return false;
+  Event e;
+  e.kind = EventKind::chatter;
+  e.pellets = {pellet};
+  e.limiter = limiter;
+  e.dphi_before = {v};
+  e.dphi_after = {0.0};
+  e.impacts_resolved = series->impacts;
+  e.t_accumulation = series->t_star;
+  out.kinetic_change -= kinetic(model, pellet, v);
+  y[dphi_index(pellet)] = 0.0;
+  v = 0.0;
+  out.events.push_back(stamped(std::move(e), series->t_star, y));
+  out.touched[pellet] = true;
+  return true;
+}
+
+// Phase 5 for one body moving at v: slide, stick or rest against `support`.
+void set_mode(Body& body, double v, const Support& support, double a_free, double capacity,
+              const EventTolerances& tol) {
+  if (std::abs(v) > tol.v_eps) {
+    body.mode = Mode::sliding;
+    body.s = v > 0.0 ? 1 : -1;
+  } else if (support.limiter >= 0 && !(support.side * a_free > capacity)) {
+    body.mode = Mode::resting;
+    body.limiter = support.limiter;
+    body.side = support.side;
+  } else if (support.limiter >= 0) {
+    body.mode = Mode::sliding;
+    body.s = support.side;
+  } else if (std::abs(a_free) <= capacity) {
+    body.mode = Mode::stuck;
+  } else {
+    body.mode = Mode::sliding;
+    body.s = a_free > 0.0 ? 1 : -1;
+  }
+}
+
+}  // namespace
+
+InstantContacts snap(const Model& model, const EventTolerances& tol,
+                     const MotionInterval& interval, const std::vector<Crossing>& crossings,
+                     const std::vector<Neighbours>& neighbours, Vec& y) {
+  const int n = model.size();
+  const std::vector<Body>& bodies = interval.bodies();
+  const std::vector<Watch>& watches = interval.watches();
+  InstantContacts c;
+  c.reversed.assign(n, false);
+  c.released.assign(n, false);
+  std::vector<bool> at_limiter(n, false);
+  for (const Crossing& crossing : crossings) {
+    const Watch& w = watches[crossing.watch];
+    switch (w.kind) {
+      case WatchKind::limiter: {
+        const Body& b = bodies[w.body];
+        const double shift = w.target - y[phi_index(w.pellet)];
+        for (int i : b.members) {
+          y[phi_index(i)] += shift;
+          at_limiter[i] = true;
+        }
+        y[phi_index(w.pellet)] = w.target;
+        const int front = b.s > 0 ? b.members.back() : b.members.front();
+        c.limiters.push_back({front, w.limiter, -b.s});
+        break;
+      }
+      case WatchKind::reversal:
+        for (int i : bodies[w.body].members) {
+          y[dphi_index(i)] = 0.0;
+          c.reversed[i] = true;
+        }
+        break;
+      case WatchKind::gap: {
+        // Onto one place: the pellet at a limiter stays put, else both meet halfway.
+        double& behind = y[phi_index(w.pellet)];
+        double& ahead = y[phi_index(w.other)];
+        if (at_limiter[w.pellet]) {
+          ahead = behind - w.target;
+        } else if (at_limiter[w.other]) {
+          behind = ahead + w.target;
+        } else {
+          const double mid = 0.5 * (behind + ahead + w.target);
+          behind = mid;
+          ahead = mid - w.target;
+        }
+        c.pairs.push_back({w.pellet, w.other});
+        break;
+      }
+      case WatchKind::release:
+      case WatchKind::separation:
+        for (int i : bodies[w.body].members) c.released[i] = true;
+        break;
+    }
+  }
+  snap_touching(y, neighbours, tol.contact_distance, at_limiter, c.pairs);
+  // Standing contacts: bodies resting on limiters, and pellets moving together.
+  for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
+    const Body& body = bodies[b];
+    if (body.mode == Mode::resting) {
+      const int nearest = body.side > 0 ? body.members.front() : body.members.back();
+      c.limiters.push_back({nearest, body.limiter, body.side});
+    }
+    for (int k = 0; k + 1 < static_cast<int>(body.members.size()); ++k) {
+      bool split = false;
+      for (const Crossing& crossing : crossings)
+        split = split || separates_at(crossing, watches, b, k + 1);
+      if (!split) c.pairs.push_back({body.members[k], body.members[k + 1]});
+    }
+  }
+  return c;
+}
+
+InstantContacts initial_contacts(const Model& model, const EventTolerances& tol, Vec& y) {
+  const int n = model.size();
+  InstantContacts c;
+  c.reversed.assign(n, false);
+  c.released.assign(n, false);
+  for (int i = 0; i < n; ++i) {
+    const double phi = y[phi_index(i)];
+    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
+      const double d = wrap_angle(phi - model.limiters[l].angle);
+      if (!model.limiters[l].acts_on(i) || std::abs(d) > tol.start_on_limiter * (1.0 + std::abs(phi)))
+        continue;
+      y[phi_index(i)] = phi - d;
+      const double v = y[dphi_index(i)];
+      const double a = free_acceleration(model, i, 0.0, phi);
+      const int side = v != 0.0 ? (v > 0.0 ? -1 : 1) : (a > 0.0 ? -1 : 1);
+      c.limiters.push_back({i, l, side});
+    }
+  }
+  return c;
+}
+
+std::vector<Body> initial_bodies(const Model& model, const Vec& y) {
+  std::vector<Body> bodies;
+  for (int i = 0; i < model.size(); ++i) {
+    Body b;
+    b.members = {i};
+    const double v = y[dphi_index(i)];
+    b.mode = v == 0.0 ? Mode::stuck : Mode::sliding;
+    b.s = v < 0.0 ? -1 : 1;
+    bodies.push_back(b);
+  }
+  return bodies;
+}
+
+InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, double t,
+                               const std::vector<Body>& before, const InstantContacts& contacts,
+                               Vec& y, std::vector<bool>& armed) {
+  const int n = model.size();
+  InstantOutcome out;
+  out.touched.assign(n, false);
+
+  // Phase 2: impacts.
+  std::vector<double> v(n), place(n);
+  for (int i = 0; i < n; ++i) {
+    v[i] = y[dphi_index(i)];
+    place[i] = y[phi_index(i)];
+  }
+  std::vector<Event> impacts =
+      resolve_impacts(model, v, armed, contacts.limiters, contacts.pairs, place);
+  std::vector<int> struck_limiter_of(n, -1);
+  for (int i = 0; i < n; ++i) {
+    out.kinetic_change += kinetic(model, i, v[i]) - kinetic(model, i, y[dphi_index(i)]);
+    y[dphi_index(i)] = v[i];
+  }
+  for (Event& e : impacts) {
+    for (int i : e.pellets) out.touched[i] = true;
+    if (e.kind == EventKind::limiter) struck_limiter_of[e.pellets[0]] = e.limiter;
+    out.events.push_back(stamped(std::move(e), t, y));
+  }
+
+  // Phase 3: joining.
+  std::vector<int> body_before(n);
+  for (std::size_t b = 0; b < before.size(); ++b)
+    for (int i : before[b].members) body_before[i] = static_cast<int>(b);
+  out.bodies = join_touching(model, t, y, contacts.pairs, contacts.limiters, armed,
+                             {tol.v_merge, tol.chatter_time});
+
+  for (Body& body : out.bodies) {
+    // A merge is plastic: the body moves with its momentum's speed.
+    double P = 0.0, M = 0.0;
+    for (int i : body.members) {
+      P += model.pellets[i].m * y[dphi_index(i)];
+      M += model.pellets[i].m;
+    }
+    double speed = P / M;
+    for (int i : body.members)
+      out.kinetic_change += kinetic(model, i, speed) - kinetic(model, i, y[dphi_index(i)]);
+
+    const int L = body.leader();
+    const double phi = y[phi_index(L)];
+    const double a_free = body_free_acceleration(model, body, t, phi);
+    Support support = support_of(model, tol, body, contacts.limiters, armed, phi, a_free, speed);
+
+    // Phase 4: chatter.
+    const int struck = struck_limiter_of[L];
+    if (std::abs(speed) > tol.v_eps && body.members.size() == 1 && struck >= 0 && armed[struck]) {
+      const int side = speed > 0.0 ? 1 : -1;
+      if (sum_chatter(model, tol, t, L, struck, speed, a_free, y, out)) support = {struck, side};
+    }
+
+    // Phase 5: modes, and the events that say how the motion changed.
+    const bool was_moving = before[body_before[L]].mode == Mode::sliding;
+    set_mode(body, speed, support, a_free, stick_capacity(model, phi), tol);
+    if (std::abs(speed) <= tol.v_eps) speed = 0.0;
+    for (int i : body.members) y[dphi_index(i)] = speed;
+
+    bool reversed = false, released = false;
+    for (int i : body.members) {
+      reversed = reversed || contacts.reversed[i];
+      released = released || contacts.released[i];
+    }
+    Event e;
+    if (reversed && was_moving) {
+      e.kind = body.mode == Mode::sliding ? EventKind::reversal : EventKind::stick;
+    } else if (released && body.mode == Mode::sliding && !was_moving) {
+      e.kind = EventKind::release;
+    } else {
+      continue;
+    }
+    e.pellets = body.members;
+    e.limiter = body.mode == Mode::resting ? body.limiter : -1;
+    e.dphi_before.assign(body.members.size(), 0.0);
+    e.dphi_after.assign(body.members.size(), speed);
+    out.events.push_back(stamped(std::move(e), t, y));
+    for (int i : body.members) out.touched[i] = true;
+  }
+  return out;
+}
+
+}  // namespace vibro

@@ -1,0 +1,85 @@
+#include "core/interval.h"
+
+#include <cmath>
+#include <limits>
+
+namespace vibro {
+namespace {
+
+bool any_forced(const Model& model, const Body& body) {
+  for (int i : body.members)
+    if (model.pellets[i].force.active()) return true;
+  return false;
+}
+
+}  // namespace
+
+MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
+                               const std::vector<bool>& armed,
+                               const std::vector<Neighbours>& neighbours, double t, const Vec& y,
+                               const EventTolerances& tol)
+    : model_(model),
+      bodies_(std::move(bodies)),
+      dynamics_(model, bodies_),
+      max_step_(std::numeric_limits<double>::infinity()) {
+  const bool paper = model.friction == FrictionLaw::paper;
+  for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
+    const Body& body = bodies_[b];
+    const int L = body.leader();
+    const bool forced = any_forced(model, body);
+    std::optional<FirstIntegral> fi;
+    if (body.mode == Mode::sliding) {
+      anything_moves_ = true;
+      watches_.push_back({WatchKind::reversal, b, L});
+      int lim;
+      double target;
+      if (next_limiter(model, armed, body, y[phi_index(L)], body.s, lim, target)) {
+        watches_.push_back({WatchKind::limiter, b, L, -1, lim, target});
+      }
+      if (paper && !forced && body.members.size() == 1) {
+        fi.emplace(model, body.s, y[phi_index(L)], y[dphi_index(L)]);
+      }
+    } else if (forced) {
+      forced_rest_ = true;
+      watches_.push_back({WatchKind::release, b, L});
+    }
+    first_integrals_.push_back(fi);
+    for (int k = 1; k < static_cast<int>(body.members.size()); ++k) {
+      Watch w{WatchKind::separation, b, L};
+      w.split = k;
+      watches_.push_back(w);
+    }
+  }
+  // Gaps between neighbours in different bodies.
+  std::vector<int> body_of(model.size());
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    for (int i : bodies_[b].members) body_of[i] = static_cast<int>(b);
+  for (const Neighbours& nb : neighbours) {
+    if (body_of[nb.behind] == body_of[nb.ahead]) continue;
+    Watch w{WatchKind::gap, -1, nb.behind, nb.ahead};
+    w.target = nb.offset;
+    const double gap = y[phi_index(nb.ahead)] - y[phi_index(nb.behind)] + nb.offset;
+    if (gap <= tol.contact_distance * (1.0 + std::abs(y[phi_index(nb.behind)]))) {
+      deflate(w, model, bodies_, t, y, y[dphi_index(nb.ahead)] - y[dphi_index(nb.behind)]);
+    }
+    watches_.push_back(w);
+  }
+  if (forced_rest_) {
+    for (const Pellet& p : model.pellets)
+      if (p.force.active() && p.force.Omega != 0.0)
+        max_step_ = std::min(max_step_, kTwoPi / std::abs(p.force.Omega) / 16.0);
+  }
+}
+
+double MotionInterval::first_integral_residual(const Vec& y) const {
+  double worst = 0.0;
+  for (std::size_t b = 0; b < bodies_.size(); ++b) {
+    if (!first_integrals_[b]) continue;
+    const int L = bodies_[b].leader();
+    const double r = first_integrals_[b]->residual(y[phi_index(L)], y[dphi_index(L)]);
+    if (std::isfinite(r)) worst = std::max(worst, std::abs(r));
+  }
+  return worst;
+}
+
+}  // namespace vibro
