@@ -1,5 +1,6 @@
 #include "core/instant.h"
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/chatter.h"
@@ -12,16 +13,17 @@ double kinetic(const Model& model, int i, double v) {
   return 0.5 * model.pellets[i].m * model.R * model.R * v * v;
 }
 
+bool contains(const std::vector<PairContact>& pairs, const PairContact& p) {
+  return std::any_of(pairs.begin(), pairs.end(), [&](const PairContact& q) {
+    return q.behind == p.behind && q.ahead == p.ahead;
+  });
+}
+
 // The time of the event, and the angle of its first pellet.
 Event stamped(Event e, double t, const Vec& y) {
   e.t = t;
   if (!e.pellets.empty()) e.phi = y[phi_index(e.pellets[0])];
   return e;
-}
-
-bool separates_at(const Crossing& c, const std::vector<Watch>& watches, int body, int split) {
-  const Watch& w = watches[c.watch];
-  return w.kind == WatchKind::separation && w.body == body && w.split == split;
 }
 
 // The limiter a body at speed zero is pressed against, if any: a contact of this instant, or a
@@ -74,12 +76,16 @@ bool sum_chatter(const Model& model, const EventTolerances& tol, double t, int p
   return true;
 }
 
-// Phase 5 for one body moving at v: slide, stick or rest against `support`.
+// Phase 5 for one body moving at v: slide, stick or rest against `support`. A body pulled free
+// by its release watch slides whatever the stick test says at the root.
 void set_mode(Body& body, double v, const Support& support, double a_free, double capacity,
-              const EventTolerances& tol) {
+              bool pulled_free, const EventTolerances& tol) {
   if (std::abs(v) > tol.v_eps) {
     body.mode = Mode::sliding;
     body.s = v > 0.0 ? 1 : -1;
+  } else if (pulled_free) {
+    body.mode = Mode::sliding;
+    body.s = support.limiter >= 0 ? support.side : (a_free < 0.0 ? -1 : 1);
   } else if (support.limiter >= 0 && !(support.side * a_free > capacity)) {
     body.mode = Mode::resting;
     body.limiter = support.limiter;
@@ -106,6 +112,7 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   InstantContacts c;
   c.reversed.assign(n, false);
   c.released.assign(n, false);
+  c.pulled_free.assign(n, false);
   std::vector<bool> at_limiter(n, false);
   for (const Crossing& crossing : crossings) {
     const Watch& w = watches[crossing.watch];
@@ -145,24 +152,26 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
         break;
       }
       case WatchKind::release:
-      case WatchKind::separation:
-        for (int i : bodies[w.body].members) c.released[i] = true;
+        for (int i : bodies[w.body].members) c.released[i] = c.pulled_free[i] = true;
         break;
+      case WatchKind::separation: {
+        const std::vector<int>& members = bodies[w.body].members;
+        for (int i : members) c.released[i] = true;
+        c.parting.push_back({members[w.split - 1], members[w.split]});
+        break;
+      }
     }
   }
   snap_touching(y, neighbours, tol.contact_distance, at_limiter, c.pairs);
   // Standing contacts: bodies resting on limiters, and pellets moving together.
-  for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
-    const Body& body = bodies[b];
+  for (const Body& body : bodies) {
     if (body.mode == Mode::resting) {
       const int nearest = body.side > 0 ? body.members.front() : body.members.back();
       c.limiters.push_back({nearest, body.limiter, body.side});
     }
     for (int k = 0; k + 1 < static_cast<int>(body.members.size()); ++k) {
-      bool split = false;
-      for (const Crossing& crossing : crossings)
-        split = split || separates_at(crossing, watches, b, k + 1);
-      if (!split) c.pairs.push_back({body.members[k], body.members[k + 1]});
+      const PairContact pair{body.members[k], body.members[k + 1]};
+      if (!contains(c.pairs, pair)) c.pairs.push_back(pair);
     }
   }
   return c;
@@ -173,6 +182,7 @@ InstantContacts initial_contacts(const Model& model, const EventTolerances& tol,
   InstantContacts c;
   c.reversed.assign(n, false);
   c.released.assign(n, false);
+  c.pulled_free.assign(n, false);
   for (int i = 0; i < n; ++i) {
     const double phi = y[phi_index(i)];
     for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
@@ -232,7 +242,9 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
   std::vector<int> body_before(n);
   for (std::size_t b = 0; b < before.size(); ++b)
     for (int i : before[b].members) body_before[i] = static_cast<int>(b);
-  out.bodies = join_touching(model, t, y, contacts.pairs, contacts.limiters, armed,
+  std::vector<PairContact> joinable = contacts.pairs;
+  std::erase_if(joinable, [&](const PairContact& p) { return contains(contacts.parting, p); });
+  out.bodies = join_touching(model, t, y, joinable, contacts.limiters, armed,
                              {tol.v_merge, tol.chatter_time});
 
   for (Body& body : out.bodies) {
@@ -259,8 +271,11 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
     }
 
     // Phase 5: modes, and the events that say how the motion changed.
-    const bool was_moving = before[body_before[L]].mode == Mode::sliding;
-    set_mode(body, speed, support, a_free, stick_capacity(model, phi), tol);
+    const Body& old = before[body_before[L]];
+    const bool was_moving = old.mode == Mode::sliding;
+    // The release watch spoke for the body it watched: the same pellets, not struck meanwhile.
+    const bool pulled_free = contacts.pulled_free[L] && old.members == body.members;
+    set_mode(body, speed, support, a_free, stick_capacity(model, phi), pulled_free, tol);
     if (std::abs(speed) <= tol.v_eps) speed = 0.0;
     for (int i : body.members) y[dphi_index(i)] = speed;
 

@@ -26,8 +26,13 @@ namespace vibro {
 struct InstantContacts {
   std::vector<LimiterContact> limiters;
   std::vector<PairContact> pairs;
-  std::vector<bool> reversed;  // per pellet
-  std::vector<bool> released;  // per pellet
+  std::vector<bool> reversed;  // per pellet: its body's speed reached zero
+  std::vector<bool> released;  // per pellet: its body's release or separation watch fired
+  // A release or separation fires at the root of a threshold (friction's capacity, the press
+  // between two parts), where a test of the same threshold is decided by round-off. The crossing
+  // has decided it: these bodies leave their hold, and these pairs part, whatever the test says.
+  std::vector<bool> pulled_free;     // per pellet: its body's release watch fired
+  std::vector<PairContact> parting;  // the pairs where a body's separation watch fired
 };
 
 // What an instant leaves behind.
