@@ -62,6 +62,7 @@ class Simulation {
   void open_interval(double t, std::vector<Body> bodies);
   // Integrates the open interval until its first event (true) or t_end or a stop (false).
   bool integrate_to_event(double& t, std::vector<Crossing>& found);
+  void polish(const Crossing& c, double a, double b, double& t);
   bool over_budget(double t);
   void fail(double t, Termination why, const std::string& message);
 
@@ -78,6 +79,7 @@ class Simulation {
   std::unique_ptr<Stepper> stepper_;
   std::vector<double> times_;  // the samples of each step's dense output: times and states
   std::vector<Vec> states_;
+  Vec scratch_;  // states and rates while polishing a root
   std::vector<Event> events_;
   Stats stats_;
   double max_fi_residual_ = 0.0;
@@ -133,6 +135,33 @@ void Simulation::open_interval(double t, std::vector<Body> bodies) {
   recorder_.check_normal_force(t, y_, interval_->bodies());
 }
 
+// A root found on a dense output of lower order than the steps (Radau IIA's collocation
+// polynomial) errs by that order. One Newton step on the watch evaluated at the precise state,
+// with the slope of the dense output, brings the time to the steps' accuracy; the state moves
+// along f by the same correction. Both then err by the correction's square, unless the watch
+// curves so much over the correction that a straight line does not describe it (a pellet that
+// turns back at the limiter): the dense root stands then.
+void Simulation::polish(const Crossing& c, double a, double b, double& t) {
+  const Watch& w = interval_->watches()[c.watch];
+  const std::vector<Body>& bodies = interval_->bodies();
+  Vec& y = scratch_;
+  auto g_dense = [&](double tt) {
+    stepper_->dense(tt, y);
+    return evaluate(w, model_, bodies, tt, y);
+  };
+  const double delta = 1e-3 * (b - a);
+  const double before = g_dense(t - delta), at = g_dense(t), after = g_dense(t + delta);
+  const double slope = (after - before) / (2.0 * delta);
+  const double curvature = (after - 2.0 * at + before) / (delta * delta);
+  stepper_->precise_state(t, y);
+  const double dt = -evaluate(w, model_, bodies, t, y) / slope;
+  if (!std::isfinite(dt) || std::abs(curvature * dt) > 1e-3 * std::abs(slope)) return;
+  y_ = y;
+  interval_->dynamics().rhs(t, y_, y);
+  y_ += dt * y;
+  t += dt;
+}
+
 bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
   const int m = static_cast<int>(times_.size()) - 1;
   std::vector<double>& times = times_;
@@ -167,6 +196,7 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     } else {
       t = t_stop;
       stepper_->dense(t, y_);
+      if (stepper_->dense_is_coarse()) polish(found.front(), a, b, t);
       max_fi_residual_ = std::max(max_fi_residual_, interval.first_integral_residual(y_));
       recorder_.sample(t, y_);
     }

@@ -60,6 +60,12 @@ class Stepper {
   // Dense output inside the last accepted step: out = y(t) for t in [t_prev(), t()].
   virtual void dense(double t, Vec& out) const = 0;
 
+  // The state at t in the last accepted step (or a little past its end), as accurate as a step's
+  // end. Where dense() is of lower order than the steps, event times and states are corrected
+  // with it; elsewhere it is dense().
+  virtual void precise_state(double t, Vec& out) { dense(t, out); }
+  virtual bool dense_is_coarse() const { return false; }
+
   virtual const StepperStats& stats() const = 0;
 };
 

@@ -41,6 +41,8 @@ class AutoSwitchWith final : public AutoSwitch {
   double t() const override { return active().t(); }
   const Vec& y() const override { return active().y(); }
   void dense(double t, Vec& out) const override { active().dense(t, out); }
+  void precise_state(double t, Vec& out) override { active().precise_state(t, out); }
+  bool dense_is_coarse() const override { return active().dense_is_coarse(); }
   const StepperStats& stats() const override;
   bool stiff() const override { return stiff_ != switch_pending_; }
 

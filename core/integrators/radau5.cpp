@@ -86,7 +86,7 @@ Radau5::Radau5(const StepperOptions& options) : options_(options) {
 void Radau5::reserve(int n) {
   if (n == n_) return;
   n_ = n;
-  for (Vec* v : {&y_, &f_, &y_new_, &scal_, &z1_, &z2_, &z3_, &w1_, &w2_, &w3_, &tmp_, &ftmp_, &f2_,
+  for (Vec* v : {&y_, &f_, &y_new_, &y_prev_, &scal_, &z1_, &z2_, &z3_, &w1_, &w2_, &w3_, &tmp_, &ftmp_, &f2_,
                  &err_, &cont1_, &cont2_, &cont3_, &dfdt_}) {
     v->resize(n);
   }
@@ -299,6 +299,7 @@ void Radau5::accept(double h, double t_new) {
     cont2_[i] = (ak - cont1_[i]) / kC1m1;
     cont3_[i] = cont2_[i] - acont3;
   }
+  y_prev_ = y_;
   y_.swap(y_new_);
   t_prev_ = t_;
   t_ = t_new;
@@ -409,6 +410,27 @@ StepStatus Radau5::advance(double t_limit) {
     h_ = (theta_ <= kThet && qt >= kQuot1 && qt <= kQuot2) ? h : h_new;
     if (theta_ > kThet) need_jac_ = true;
     return StepStatus::ok;
+  }
+}
+
+void Radau5::precise_state(double t, Vec& out) {
+  if (!(t > t_prev_) || first_) {  // no step taken since start()
+    dense(t, out);
+    return;
+  }
+  if (!probe_) probe_ = std::make_unique<Radau5>(options_);
+  const StepperStats before = probe_->stats();
+  probe_->resume(*sys_, t_prev_, y_prev_, t - t_prev_);
+  StepStatus status = StepStatus::ok;
+  while (status == StepStatus::ok && probe_->t() < t) status = probe_->step(t);
+  const StepperStats& after = probe_->stats();
+  stats_.rhs_evals += after.rhs_evals - before.rhs_evals;
+  stats_.jac_evals += after.jac_evals - before.jac_evals;
+  stats_.lu_decomps += after.lu_decomps - before.lu_decomps;
+  if (status == StepStatus::ok) {
+    out = probe_->y();
+  } else {
+    dense(t, out);  // the probe failed where the step succeeded: the polynomial is all there is
   }
 }
 

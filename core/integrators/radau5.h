@@ -5,6 +5,7 @@
 
 #include <Eigen/Dense>
 #include <complex>
+#include <memory>
 #include <string_view>
 
 #include "core/integrators/error_norm.h"
@@ -23,6 +24,11 @@ class Radau5 final : public Stepper {
   double t() const override { return t_; }
   const Vec& y() const override { return y_; }
   void dense(double t, Vec& out) const override;
+  // The collocation polynomial is of order 3 inside a step, where the step's end is of order 5
+  // (Hairer & Wanner IV.5): a fresh step from the last step's start to t is as accurate as a
+  // step's end. It costs a factorisation and a Newton iteration; the driver asks only at events.
+  void precise_state(double t, Vec& out) override;
+  bool dense_is_coarse() const override { return true; }
   const StepperStats& stats() const override { return stats_; }
 
   // Continues at (t0, y0) with the first step h0, without an initial step guess: the hand-over
@@ -81,6 +87,8 @@ class Radau5 final : public Stepper {
   bool f_valid_ = false;  // f_ = f(t_, y_) is up to date
 
   Vec y_, f_, y_new_, scal_;
+  Vec y_prev_;                     // the state at t_prev_ (precise_state steps from it)
+  std::unique_ptr<Radau5> probe_;  // takes the steps of precise_state, made on first use
   Vec z1_, z2_, z3_;  // stage increments Z = Y_i − y
   Vec w1_, w2_, w3_;  // transformed increments W = T⁻¹Z (F1..F3 in RADAU5)
   Vec tmp_, ftmp_, f2_, err_;
