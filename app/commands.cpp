@@ -80,6 +80,8 @@ std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
       }
     } else if (a == "--trajectories") {
       overrides["trajectories"] = true;
+    } else if (a == "--no-check") {
+      overrides["solver"]["check"] = false;
     } else if (!a.starts_with("--") || a == "-") {
       if (text) break;  // a later positional argument belongs to the command
       text = read_source(a);

@@ -63,6 +63,9 @@ struct Summary {
   int chatter_sequences = 0;  // chatter events, each summing infinitely many impacts
   std::vector<std::vector<int>> impacts_by_limiter;  // [limiter][pellet], listed impacts
   LastImpact last_impact;
+  // False while impacts still go on at the end of the run: the last impact is then no answer to
+  // the paper's question of when the system stops being vibro-impact.
+  bool ends_vibro_impact = true;
   std::vector<FinalState> final;
 };
 
@@ -80,11 +83,19 @@ struct Stats {
   double rtol = 0.0, atol = 0.0;
   long steps = 0, rejected = 0, rhs_evals = 0, jac_evals = 0, lu_decomps = 0, stiff_switches = 0;
   double wall_ms = 0.0;
-  // Relative error estimate: the larger of the energy-balance defect (E − E0 − work of the
-  // force and friction − impact losses, over the energy scale) and the first-integral residual.
+  // The largest of the estimates below in one unit: times over sqrt(R/g), angles in rad, the
+  // rest relative.
   double error_estimate = 0.0;
-  double energy_defect = 0.0;            // relative
+  double energy_defect = 0.0;            // relative: E − E0 − work − impact losses, over the scale
   double first_integral_residual = 0.0;  // relative, unforced paper-law intervals; 0 if none
+  // Trust (API.md): from the check against a shadow solution at a tenth of the tolerance, or,
+  // with the check off, from the run alone (which does not see event times).
+  bool check = true;             // the shadow ran
+  std::string check_method;      // the shadow's method and tolerance
+  double check_wall_ms = 0.0;    // the shadow's share of wall_ms
+  double event_time_error = 0.0; // s: largest error of the event times
+  double state_error = 0.0;      // rad, φ̇ scaled by sqrt(R/g): error of the final state
+  double trusted_until = 0.0;    // s: the events are judged converged up to here
   Termination termination = Termination::completed;
   std::string message;  // why the run stopped early, naming time and cause
   double t_reached = 0.0;

@@ -16,6 +16,7 @@
 #include "core/interval.h"
 #include "core/recorder.h"
 #include "core/summary.h"
+#include "core/trust.h"
 #include "core/watch.h"
 
 namespace vibro {
@@ -250,6 +251,10 @@ RunResult Simulation::run() {
   result.summary = summarize(model_, events_);
   // The bodies of the last instant, or of the interval that ran to the end.
   result.summary.final = final_states(model_, bodies.empty() ? interval_->bodies() : bodies, y_);
+  const bool at_rest = bodies.empty() && interval_->at_rest_for_good();
+  result.summary.ends_vibro_impact =
+      ends_vibro_impact(events_, std::min(t, opt_.t_end),
+                        stats_.termination == Termination::completed, at_rest);
   result.events = std::move(events_);
 
   const StepperStats& s = stepper_->stats();
@@ -275,11 +280,21 @@ RunResult Simulation::run() {
 }  // namespace
 
 RunResult simulate(const Model& model, const SimOptions& options) {
-  return Simulation(model, options, nullptr).run();
+  RunResult run = Simulation(model, options, nullptr).run();
+  if (!options.check) {
+    apply_unchecked(model, run);
+    return run;
+  }
+  SimOptions shadow = check_options(options);
+  shadow.deadline_ms = options.deadline_ms - run.stats.wall_ms;  // one deadline for both
+  apply_check(model, Simulation(model, shadow, nullptr).run(), run);
+  return run;
 }
 
 RunResult simulate(const Model& model, const SimOptions& options, std::unique_ptr<Stepper> stepper) {
-  return Simulation(model, options, std::move(stepper)).run();
+  RunResult run = Simulation(model, options, std::move(stepper)).run();
+  apply_unchecked(model, run);
+  return run;
 }
 
 }  // namespace vibro

@@ -65,23 +65,45 @@ std::string angle_text(double phi) {
   return s.str();
 }
 
+// What the check against a run at a tenth of the tolerance says, in words.
+std::string trust_sentence(const Stats& st) {
+  std::ostringstream s;
+  s.precision(3);
+  if (!st.check) {
+    s << "Events not checked (solver.check is off): the error estimate does not see event times.";
+  } else if (st.trusted_until < st.t_reached) {
+    s.precision(7);
+    s << "Events trusted until t = " << st.trusted_until
+      << " s only: after that they change with the tolerance.";
+  } else {
+    s << "Events trusted to the end, times within " << st.event_time_error << " s.";
+  }
+  return s.str();
+}
+
 }  // namespace
 
 std::string answer_sentence(const RunResult& run, const Model& model) {
   std::ostringstream s;
   s.precision(4);
-  const LastImpact& last = run.summary.last_impact;
+  const Summary& sm = run.summary;
+  const LastImpact& last = sm.last_impact;
+  std::ostringstream counts;
+  counts.precision(4);
+  counts << sm.limiter_impacts << " limiter impacts, " << sm.collisions << " collisions";
+  if (sm.chatter_sequences > 0) {
+    counts << ", " << sm.chatter_sequences << " chatter sequence"
+           << (sm.chatter_sequences > 1 ? "s" : "") << " summed to rest";
+  }
   if (last.index == 0) {
     s << "No impact happens before t = " << run.stats.t_reached << " s.";
-  } else {
+  } else if (sm.ends_vibro_impact) {
     s << "The system stops being vibro-impact after impact " << last.index << " at t = " << last.t
-      << " s (" << run.summary.limiter_impacts << " limiter impacts, " << run.summary.collisions
-      << " collisions";
-    if (run.summary.chatter_sequences > 0) {
-      s << ", " << run.summary.chatter_sequences << " chatter sequence"
-        << (run.summary.chatter_sequences > 1 ? "s" : "") << " summed to rest";
-    }
-    s << ").";
+      << " s (" << counts.str() << ").";
+  } else {
+    s << "The run ends at t = " << run.stats.t_reached
+      << " s while the system is still vibro-impact: " << last.index << " impacts ("
+      << counts.str() << "), the last at t = " << last.t << " s.";
   }
   for (std::size_t i = 0; i < run.summary.final.size(); ++i) {
     const FinalState& f = run.summary.final[i];
@@ -102,6 +124,7 @@ std::string answer_sentence(const RunResult& run, const Model& model) {
     }
   }
   if (run.stats.termination != Termination::completed) s << " The run stopped early: " << run.stats.message << ".";
+  s << " " << trust_sentence(run.stats);
   return s.str();
 }
 
@@ -123,6 +146,7 @@ json result_to_json(const RunResult& run, const Model& model) {
                   {"collisions", sm.collisions},
                   {"chatter_sequences", sm.chatter_sequences},
                   {"impacts_by_limiter", sm.impacts_by_limiter},
+                  {"ends_vibro_impact", sm.ends_vibro_impact},
                   {"final", finals},
                   {"answer", answer_sentence(run, model)}};
   summary["last_impact"] = sm.last_impact.index > 0
@@ -142,10 +166,16 @@ json result_to_json(const RunResult& run, const Model& model) {
                 {"error_estimate", num(st.error_estimate)},
                 {"energy_defect", num(st.energy_defect)},
                 {"first_integral_residual", num(st.first_integral_residual)},
+                {"event_time_error", num(st.event_time_error)},
+                {"state_error", num(st.state_error)},
+                {"trusted_until", num(st.trusted_until)},
+                {"check", st.check},
+                {"check_wall_ms", num(st.check_wall_ms)},
                 {"termination", termination_name(st.termination)},
                 {"t_reached", num(st.t_reached)},
                 {"events", run.events.size()}};
   if (!st.message.empty()) stats["message"] = st.message;
+  if (!st.check_method.empty()) stats["check_method"] = st.check_method;
   json warnings = json::array();
   for (const Warning& w : run.warnings) {
     warnings.push_back({{"code", w.code},

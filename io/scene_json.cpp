@@ -97,6 +97,7 @@ void read_solver(const json& j, SimOptions& o) {
   if (auto name = f.string("method", 32)) o.method = read_method(*name);
   o.rtol = f.number("rtol", o.rtol);
   o.atol = f.number("atol", o.atol);
+  o.check = f.boolean("check", o.check);
   f.done();
 }
 
@@ -378,7 +379,10 @@ json scene_to_json(const Scene& s) {
   if (!s.assumptions.empty()) j["assumptions"] = s.assumptions;
   j["model"] = model;
   j["t_end"] = s.sim.t_end;
-  j["solver"] = {{"method", method_name(s.sim.method)}, {"rtol", s.sim.rtol}, {"atol", s.sim.atol}};
+  j["solver"] = {{"method", method_name(s.sim.method)},
+                 {"rtol", s.sim.rtol},
+                 {"atol", s.sim.atol},
+                 {"check", s.sim.check}};
   if (s.trajectories) j["trajectories"] = true;
   j["plots"] = plots;
   j["width"] = s.figure.width;

@@ -1,0 +1,136 @@
+#include "core/trust.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/event_tolerances.h"
+
+namespace vibro {
+namespace {
+
+constexpr double kSmallestRtol = 1e-14;  // validate_options' lower bound
+constexpr double kSmallestAtol = 1e-16;
+
+bool listed_alike(const Event& a, const Event& b) {
+  return a.kind == b.kind && a.pellets == b.pellets && a.limiter == b.limiter;
+}
+
+std::string describe(const Event& e) {
+  std::ostringstream s;
+  s << event_kind_name(e.kind) << " of pellet";
+  if (e.pellets.size() > 1) s << "s";
+  for (std::size_t k = 0; k < e.pellets.size(); ++k) s << (k ? " and " : " ") << e.pellets[k] + 1;
+  if (e.limiter >= 0) s << " at limiter " << e.limiter + 1;
+  s.precision(7);
+  s << " at t = " << e.t << " s";
+  return s.str();
+}
+
+std::string describe_run_end(const RunResult& run) {
+  std::ostringstream s;
+  s.precision(7);
+  s << "ends at t = " << run.stats.t_reached << " s";
+  return s.str();
+}
+
+double largest_of_estimates(const Model& model, const Stats& st) {
+  const double time_scale = event_tolerances(model).time_scale;
+  return std::max({st.event_time_error / time_scale, st.state_error, st.energy_defect,
+                   st.first_integral_residual});
+}
+
+}  // namespace
+
+SimOptions check_options(const SimOptions& run) {
+  SimOptions o = run;
+  o.rtol = std::max(run.rtol / 10.0, kSmallestRtol);
+  o.atol = std::max(run.atol / 10.0, kSmallestAtol);
+  if (run.method == Method::dopri5) o.method = Method::dop853;
+  o.record.clear();
+  o.check = false;
+  return o;
+}
+
+TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow) {
+  TrustReport r;
+  const double t_common = std::min(run.stats.t_reached, shadow.stats.t_reached);
+  r.trusted_until = t_common;
+  const std::size_t n = std::min(run.events.size(), shadow.events.size());
+  std::size_t k = 0;
+  for (; k < n && listed_alike(run.events[k], shadow.events[k]); ++k) {
+    if (run.events[k].t > t_common) break;
+    r.event_time_error = std::max(r.event_time_error, std::abs(run.events[k].t - shadow.events[k].t));
+  }
+  // The first event one run lists and the other does not (or lists otherwise).
+  if (k < n && !listed_alike(run.events[k], shadow.events[k])) {
+    r.first_difference = static_cast<int>(k);
+    r.trusted_until = std::min({r.trusted_until, run.events[k].t, shadow.events[k].t});
+  } else if (k == n && run.events.size() != shadow.events.size()) {
+    const RunResult& longer = run.events.size() > n ? run : shadow;
+    if (longer.events[n].t <= t_common) {
+      r.first_difference = static_cast<int>(n);
+      r.trusted_until = std::min(r.trusted_until, longer.events[n].t);
+    }
+  }
+  const double time_scale = event_tolerances(model).time_scale;
+  if (run.stats.t_reached == shadow.stats.t_reached) {
+    for (std::size_t i = 0; i < run.summary.final.size() && i < shadow.summary.final.size(); ++i) {
+      const FinalState& a = run.summary.final[i];
+      const FinalState& b = shadow.summary.final[i];
+      r.state_error = std::max({r.state_error, std::abs(a.phi - b.phi),
+                                time_scale * std::abs(a.dphi - b.dphi)});
+    }
+  } else {
+    r.state_error = std::numeric_limits<double>::infinity();  // not comparable: no estimate
+  }
+  return r;
+}
+
+void apply_check(const Model& model, const RunResult& shadow, RunResult& run) {
+  const TrustReport r = compare_runs(model, run, shadow);
+  Stats& st = run.stats;
+  st.check = true;
+  std::ostringstream method;
+  method << shadow.stats.method << " at rtol " << shadow.stats.rtol;
+  st.check_method = method.str();
+  st.check_wall_ms = shadow.stats.wall_ms;
+  st.wall_ms += shadow.stats.wall_ms;
+  st.event_time_error = r.event_time_error;
+  st.state_error = r.state_error;
+  st.trusted_until = r.trusted_until;
+  st.error_estimate = largest_of_estimates(model, st);
+
+  std::ostringstream why;
+  why.precision(7);
+  if (r.first_difference >= 0) {
+    const auto k = static_cast<std::size_t>(r.first_difference);
+    why << "events are trusted until t = " << r.trusted_until << " s: there this run lists ";
+    why << (k < run.events.size() ? describe(run.events[k]) : "no more events");
+    why << ", and a run at a tenth of the tolerance lists ";
+    why << (k < shadow.events.size() ? describe(shadow.events[k]) : "no more events");
+    why << ". The events from there on depend on differences below the tolerance (a grazing "
+           "impact, a stick test at its threshold, or sensitive dynamics); tighten rtol to see "
+           "whether they converge";
+    run.warnings.push_back({"not_trusted", why.str(), -1, r.trusted_until, st.t_reached});
+  } else if (shadow.stats.t_reached < st.t_reached) {
+    why << "events are trusted until t = " << r.trusted_until << " s: the check run at a tenth "
+        << "of the tolerance " << describe_run_end(shadow) << " (" << shadow.stats.message
+        << "), so later events are not checked";
+    run.warnings.push_back({"not_trusted", why.str(), -1, r.trusted_until, st.t_reached});
+  }
+}
+
+void apply_unchecked(const Model& model, RunResult& run) {
+  Stats& st = run.stats;
+  st.check = false;
+  st.check_method.clear();
+  const double consistency = std::max(st.energy_defect, st.first_integral_residual);
+  st.event_time_error = consistency * event_tolerances(model).time_scale;
+  st.state_error = consistency;
+  st.trusted_until = st.t_reached;
+  st.error_estimate = largest_of_estimates(model, st);
+}
+
+}  // namespace vibro

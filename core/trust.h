@@ -1,0 +1,39 @@
+// Whether a run can vouch for its events (API.md, "Trust fields"). The run is checked against a
+// shadow solution of the same scene at a tenth of its tolerances, compared event by event: where
+// both list the same events, their differences estimate the run's error (the shadow's own error
+// is about ten times smaller); where they list different events, the sequence depends on
+// differences below the tolerance, and the run is not trusted from there on.
+#pragma once
+
+#include "core/model.h"
+#include "core/result.h"
+#include "core/sim_options.h"
+
+namespace vibro {
+
+// The shadow's options: the same scene, limits and deadline, tolerances divided by ten (down to
+// the smallest the integrators accept), nothing recorded, not checked itself. DOPRI5 is checked
+// by DOP853, which is cheaper at the tighter tolerance and errs independently of it.
+SimOptions check_options(const SimOptions& run);
+
+struct TrustReport {
+  double event_time_error = 0.0;  // s: the largest time difference of the events listed alike
+  double state_error = 0.0;       // rad: the final states' difference, φ̇ scaled by sqrt(R/g)
+  double trusted_until = 0.0;     // s: where the runs first list different events, or the end
+  int first_difference = -1;      // index of the first event listed differently; -1: none
+};
+
+// Compares a run with its shadow. The runs agree on an event when kind, pellets and limiter are
+// the same; trust ends at the earlier of the first two events that are not, or where either run
+// stopped.
+TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow);
+
+// Fills the trust fields of `run` (stats and a warning a person reads) from the comparison with
+// its shadow, and error_estimate as the largest of the estimates in one unit.
+void apply_check(const Model& model, const RunResult& shadow, RunResult& run);
+
+// Fills them from the run alone, when the check is turned off: the energy balance and the first
+// integral only, which do not see event times.
+void apply_unchecked(const Model& model, RunResult& run);
+
+}  // namespace vibro

@@ -1,0 +1,83 @@
+// The trust fields of API.md: the event-time error estimate against the true error, the trust
+// horizon of an ill-conditioned scene, the check turned off, and whether a run ends while
+// impacts still go on.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/simulate.h"
+#include "scenes.h"
+
+namespace vibro {
+namespace {
+
+double largest_time_difference(const RunResult& run, const RunResult& ref) {
+  double worst = 0.0;
+  for (std::size_t k = 0; k < run.events.size() && k < ref.events.size(); ++k)
+    worst = std::max(worst, std::abs(run.events[k].t - ref.events[k].t));
+  return worst;
+}
+
+// The paper scene is well conditioned: trusted to its end, and the estimate within a factor of
+// ten of the true error (against DOP853 at rtol 1e-13) either way, for every method.
+TEST(Trust, TheEventTimeEstimateTracksTheTrueError) {
+  const Scene scene = testing::preset("paper");
+  SimOptions tight = scene.sim;
+  tight.method = Method::dop853;
+  tight.rtol = 1e-13;
+  tight.atol = 1e-15;
+  tight.check = false;
+  const RunResult ref = simulate(scene.model, tight);
+  for (Method m : {Method::dopri5, Method::dop853, Method::radau5, Method::automatic}) {
+    for (double rtol : {1e-6, 1e-8, 1e-10}) {
+      SimOptions o = scene.sim;
+      o.method = m;
+      o.rtol = rtol;
+      o.atol = rtol * 1e-3;
+      const RunResult run = simulate(scene.model, o);
+      const std::string what = std::string(method_name(m)) + " at rtol " + std::to_string(rtol);
+      ASSERT_EQ(run.events.size(), ref.events.size()) << what;
+      EXPECT_TRUE(run.stats.check) << what;
+      EXPECT_EQ(run.stats.trusted_until, run.stats.t_reached) << what;
+      const double truth = largest_time_difference(run, ref);
+      EXPECT_GE(run.stats.event_time_error, 0.1 * truth) << what;
+      EXPECT_LE(run.stats.event_time_error, 10.0 * truth) << what;
+      EXPECT_GE(run.stats.error_estimate, run.stats.state_error) << what;
+    }
+  }
+}
+
+// The grazing preset reaches its limiter with zero speed: whether it strikes or turns back
+// depends on round-off. The run says from when its events are not trusted, and why.
+TEST(Trust, AGrazingApproachEndsTheTrust) {
+  const Scene scene = testing::preset("grazing");
+  const RunResult run = simulate(scene.model, scene.sim);
+  EXPECT_LT(run.stats.trusted_until, 0.4);
+  EXPECT_GT(run.stats.trusted_until, 0.36);  // the first approach, at t = 0.3688 s
+  bool said = false;
+  for (const Warning& w : run.warnings) said = said || w.code == "not_trusted";
+  EXPECT_TRUE(said);
+}
+
+TEST(Trust, TheCheckCanBeTurnedOff) {
+  Scene scene = testing::preset("paper");
+  scene.sim.check = false;
+  const RunResult run = simulate(scene.model, scene.sim);
+  EXPECT_FALSE(run.stats.check);
+  EXPECT_EQ(run.stats.check_wall_ms, 0.0);
+  EXPECT_EQ(run.stats.trusted_until, run.stats.t_reached);
+  EXPECT_GT(run.stats.event_time_error, 0.0);
+  EXPECT_TRUE(std::isfinite(run.stats.error_estimate));
+}
+
+TEST(Trust, ARunEndingWhileImpactsGoOnSaysSo) {
+  Scene scene = testing::preset("paper");
+  EXPECT_TRUE(simulate(scene.model, scene.sim).summary.ends_vibro_impact);  // rests at 7.26 s
+  scene.model.pellets[0].force.Omega = 10.0;  // impacts every second or so until t_end
+  EXPECT_FALSE(simulate(scene.model, scene.sim).summary.ends_vibro_impact);
+  Model free = testing::one_pellet(0.05, 0.1, 0.0);  // no limiter, no other pellet
+  EXPECT_TRUE(simulate(free, testing::recorded(free, 2.0)).summary.ends_vibro_impact);
+}
+
+}  // namespace
+}  // namespace vibro
