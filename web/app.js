@@ -140,7 +140,7 @@ function showRun(scene, { result, text }, image, format) {
 
   showSummary(ui.summary, result);
   showWarnings(ui.warnings, result.warnings);
-  showEvents(ui.events, result.events ?? [], result.summary?.last_impact);
+  showEvents(ui.events, result.events ?? [], result.summary?.last_impact, result.stats?.trusted_until);
 
   const base = (scene.name ?? "scene").replace(/[^\w.-]/g, "_");
   setDownload(ui.downloads.png, state.run.images.png, `${base}.png`);

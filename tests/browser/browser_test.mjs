@@ -184,7 +184,9 @@ try {
     const answer = await page.textContent("#summary .answer");
     expect(/impact/.test(answer ?? ""), `no answer sentence in the summary: ${answer}`);
     expect((await page.locator("table.final tbody tr").count()) === 2, "final states are not listed for both pellets");
-    expect(/error estimate/.test(await page.textContent("#summary .stats")), "no error estimate in the summary");
+    const stats = await page.textContent("#summary .stats");
+    expect(/error estimate/.test(stats), "no error estimate in the summary");
+    expect(/trusted to the end/.test(stats) && /event times ± /.test(stats), `no trust beside the run time: ${stats}`);
     expect((await page.getAttribute("#dl-json", "href"))?.startsWith("blob:"), "no result JSON download");
     expect((await page.inputValue("#curl")).includes("/api/render?format=png"), "no curl command");
     await page.screenshot({ path: join(shots, "paper.png") });

@@ -15,8 +15,9 @@ const KIND_LABELS = {
   chatter: "chatter",
 };
 
-// Fills `container` with kind filters and the table; `lastImpact` is summary.last_impact.
-export function showEvents(container, events, lastImpact) {
+// Fills `container` with kind filters and the table; `lastImpact` is summary.last_impact, and
+// events after `trustedUntil` (stats.trusted_until) are marked as not trusted.
+export function showEvents(container, events, lastImpact, trustedUntil = Infinity) {
   if (!events.length) {
     fill(container, h("p", { class: "muted" }, "No events: every pellet moved freely for the whole run."));
     return;
@@ -50,7 +51,7 @@ export function showEvents(container, events, lastImpact) {
     const isImpact = IMPACT_KINDS.has(e.kind);
     if (isImpact) impact += 1;
     const last = isImpact && lastImpact && impact === lastImpact.index;
-    body.append(row(e, i, isImpact ? impact : null, last));
+    body.append(row(e, i, isImpact ? impact : null, last, e.t > trustedUntil));
   });
   table.append(body);
 
@@ -77,7 +78,7 @@ export function showEvents(container, events, lastImpact) {
   fill(container, filters, h("div", { class: "scroll", tabindex: "0", role: "region", "aria-label": "Event table (scrolls)" }, table));
 }
 
-function row(e, i, impactNo, isLast) {
+function row(e, i, impactNo, isLast, untrusted) {
   const pellets = e.pellets ?? [];
   const velocities = pellets.map((p, j) => {
     const change = `${formatValue(e.dphi_before?.[j], 5)} → ${formatValue(e.dphi_after?.[j], 5)}`;
@@ -87,7 +88,10 @@ function row(e, i, impactNo, isLast) {
   if (e.kind === "chatter" && e.impacts_resolved) kind += ` (${e.impacts_resolved} impacts summed)`;
   return h(
     "tr",
-    { class: `k-${e.kind}${isLast ? " last-impact" : ""}`, title: isLast ? "the last impact" : null },
+    {
+      class: `k-${e.kind}${isLast ? " last-impact" : ""}${untrusted ? " untrusted" : ""}`,
+      title: untrusted ? "after the time the events are trusted until: it changes with the tolerance" : isLast ? "the last impact" : null,
+    },
     h("td", { class: "n muted" }, String(i + 1)),
     h("td", { class: "n" }, impactNo ?? ""),
     h("td", { class: "n", title: String(e.t) }, formatValue(e.t, 7)),

@@ -71,15 +71,16 @@ export function selectField({ path, label, options, value, kind = "string", hint
   return wrap(select, label, { hint });
 }
 
-// A boolean that is sent only when true (every such scene key defaults to false).
-export function checkField({ path, label, checked, onChange, wide = false }) {
+// A boolean that is sent only when it differs from its default: when true for keys that default
+// to false, when false for those that default to true (defaultOn).
+export function checkField({ path, label, checked, onChange, wide = false, defaultOn = false }) {
   const errorId = uniqueId("err");
   const input = h("input", {
     type: "checkbox",
     id: uniqueId("f"),
     checked: Boolean(checked),
     "aria-describedby": errorId,
-    dataset: { field: path, kind: "bool", errorId },
+    dataset: { field: path, kind: defaultOn ? "bool-on" : "bool", errorId },
     onChange,
   });
   return h(

@@ -74,11 +74,16 @@ function angle(x) {
 
 function statsLine(st) {
   const parts = [];
-  const add = (label, value, title) => {
-    if (value !== undefined && value !== null) parts.push(h("span", { title }, h("span", { class: "k" }, label), " ", value));
+  const add = (label, value, title, cls) => {
+    if (value !== undefined && value !== null) parts.push(h("span", { title, class: cls }, h("span", { class: "k" }, label), " ", value));
   };
-  add("error estimate", st.error_estimate !== undefined ? formatValue(st.error_estimate, 2) : undefined, "largest residual of the exact references (first integral, energy) over the run");
-  add("run time", st.wall_ms !== undefined ? `${formatValue(st.wall_ms, 3)} ms` : undefined);
+  add("events", trustText(st), st.check === false
+    ? "not checked: the error estimate comes from the energy balance and the first integral, which do not see event times"
+    : `checked against ${st.check_method ?? "a run at a tenth of the tolerance"}, event by event`,
+    st.check === false || st.trusted_until < st.t_reached ? "warn" : undefined);
+  add("event times", st.event_time_error !== undefined ? `± ${formatValue(st.event_time_error, 2)} s` : undefined, "estimated largest error of the event times");
+  add("error estimate", st.error_estimate !== undefined ? formatValue(st.error_estimate, 2) : undefined, "largest of: event-time error over √(R/g), final-state error (rad), energy-balance defect, first-integral residual");
+  add("run time", st.wall_ms !== undefined ? `${formatValue(st.wall_ms, 3)} ms` + (st.check_wall_ms ? ` (check ${formatValue(st.check_wall_ms, 2)} ms)` : "") : undefined);
   add("steps", st.steps !== undefined ? `${st.steps}${st.rejected !== undefined ? ` (${st.rejected} rejected)` : ""}` : undefined);
   add("RHS evaluations", st.rhs_evals);
   add("method", st.method);
@@ -92,6 +97,13 @@ function statsLine(st) {
     h("p", {}, parts),
     st.message ? h("p", { class: st.termination === "completed" ? "muted" : "warn" }, st.message) : null,
   );
+}
+
+function trustText(st) {
+  if (st.check === false) return "not checked";
+  if (st.trusted_until === undefined) return undefined;
+  if (st.trusted_until < st.t_reached) return `trusted until t = ${formatValue(st.trusted_until)} s`;
+  return "trusted to the end";
 }
 
 // Warnings are objects {code, message, ...} or plain strings; many of one code fold together.
