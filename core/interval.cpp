@@ -1,7 +1,6 @@
 #include "core/interval.h"
 
 #include <cmath>
-#include <limits>
 
 namespace vibro {
 namespace {
@@ -20,8 +19,7 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
                                const EventTolerances& tol)
     : model_(model),
       bodies_(std::move(bodies)),
-      dynamics_(model, bodies_),
-      max_step_(std::numeric_limits<double>::infinity()) {
+      dynamics_(model, bodies_) {
   const bool paper = model.friction == FrictionLaw::paper;
   for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
     const Body& body = bodies_[b];
@@ -63,11 +61,6 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
       deflate(w, model, bodies_, t, y, y[dphi_index(nb.ahead)] - y[dphi_index(nb.behind)]);
     }
     watches_.push_back(w);
-  }
-  if (forced_rest_) {
-    for (const Pellet& p : model.pellets)
-      if (p.force.active() && p.force.Omega != 0.0)
-        max_step_ = std::min(max_step_, kTwoPi / std::abs(p.force.Omega) / 16.0);
   }
 }
 

@@ -32,9 +32,6 @@ class MotionInterval {
 
   // Everything rests and nothing can pull it away: the rest of the run is known.
   bool at_rest_for_good() const { return !anything_moves_ && !forced_rest_; }
-  // The longest step the integrator may take. A body held by friction under forcing is released
-  // at a root of a function of time alone, which the samples of each step must resolve.
-  double max_step() const { return max_step_; }
   // The largest residual of the exact first integral (unforced paper-law bodies of one pellet)
   // at the state y, relative; 0 where none applies.
   double first_integral_residual(const Vec& y) const;
@@ -47,7 +44,6 @@ class MotionInterval {
   SegmentDynamics dynamics_;  // reads bodies_, declared before it
   bool anything_moves_ = false;
   bool forced_rest_ = false;
-  double max_step_;
 };
 
 }  // namespace vibro

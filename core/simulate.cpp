@@ -169,8 +169,7 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
   std::vector<Vec>& states = states_;
   const MotionInterval& interval = *interval_;
   while (!stopped_ && t < opt_.t_end) {
-    const double limit = std::min(opt_.t_end, stepper_->t() + interval.max_step());
-    const StepStatus status = stepper_->step(limit);
+    const StepStatus status = stepper_->step(opt_.t_end);
     if (status != StepStatus::ok) {
       t = stepper_->t();
       fail(t, Termination::numerical_failure,

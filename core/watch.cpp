@@ -42,6 +42,37 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
 
 }  // namespace
 
+bool depends_on_time_alone(const Watch& w) {
+  return w.kind == WatchKind::release || w.kind == WatchKind::separation;
+}
+
+TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Body>& bodies,
+                       double t) {
+  const Body& b = bodies[w.body];
+  // Per member: its force's rate and the bound of its second derivative, each over the mass
+  // that shares it.
+  double rate = 0.0, curvature = 0.0;
+  if (w.kind == WatchKind::release) {
+    const double MR = body_mass(model, b) * model.R;
+    for (int i : b.members) {
+      const Forcing& f = model.pellets[i].force;
+      rate += f.rate(t) / MR;
+      curvature += std::abs(f.F0) * f.Omega * f.Omega / MR;
+    }
+  } else {
+    double m_behind = 0.0, m_ahead = 0.0;
+    for (int k = 0; k < static_cast<int>(b.members.size()); ++k)
+      (k < w.split ? m_behind : m_ahead) += model.pellets[b.members[k]].m;
+    for (int k = 0; k < static_cast<int>(b.members.size()); ++k) {
+      const Forcing& f = model.pellets[b.members[k]].force;
+      const double m = k < w.split ? m_behind : -m_ahead;
+      rate += f.rate(t) / m;
+      curvature += std::abs(f.F0) * f.Omega * f.Omega / std::abs(m);
+    }
+  }
+  return {std::abs(rate), curvature};
+}
+
 double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                 const Vec& y) {
   const double g = raw_value(w, model, bodies, t, y);
@@ -83,6 +114,36 @@ bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body
     }
   }
   return found;
+}
+
+bool CrossingFinder::scan_between(const Watch& w, const Model& model,
+                                  const std::vector<Body>& bodies, const Vec& y, double t_a,
+                                  double g_a, double t_b, double& lo, double& hi, double& g_lo,
+                                  double& g_hi) const {
+  // Each step is the largest the bounds allow without a root; near a tangency the steps shrink
+  // geometrically, and past it they grow again, so a few dozen steps cover any interval.
+  constexpr int kMaxSteps = 1000;
+  double t = t_a, g = g_a;
+  for (int k = 0; k < kMaxSteps; ++k) {
+    const TimeBounds b = time_bounds(w, model, bodies, t);
+    const double root = std::sqrt(b.rate * b.rate + 2.0 * b.curvature * g);
+    double step = b.rate + root > 0.0 ? 2.0 * g / (b.rate + root)
+                                      : std::numeric_limits<double>::infinity();
+    step = std::max(step, 4.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(t)));
+    const double next = t + step;
+    if (!(next < t_b)) return false;
+    const double g_next = evaluate(w, model, bodies, next, y);
+    if (g_next <= 0.0) {
+      lo = t;
+      hi = next;
+      g_lo = g;
+      g_hi = g_next;
+      return true;
+    }
+    t = next;
+    g = g_next;
+  }
+  return false;  // a touch without a crossing, to round-off
 }
 
 void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model,

@@ -36,6 +36,17 @@ struct Watch {
 
 double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                 const Vec& y);
+// A watch of time alone: release and separation follow the forces on a body whose place does not
+// change (held, or moving as one), so g(t) is a sum of cosines. At t, `rate` is |dg/dt| and
+// `curvature` bounds |d²g/dt²| everywhere: g(t + Δ) ≥ g(t) − rate·Δ − curvature·Δ²/2.
+struct TimeBounds {
+  double rate = 0.0;
+  double curvature = 0.0;
+};
+bool depends_on_time_alone(const Watch& w);
+TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Body>& bodies,
+                       double t);
+
 // Makes w watch its deflated form from (t0, y0); `rate` is dg/dt there.
 void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, double t0,
              const Vec& y0, double rate);
@@ -70,6 +81,12 @@ class CrossingFinder {
                              double simultaneous, Dense&& dense);
 
  private:
+  // A root of a watch of time alone between two samples (t_a, g_a > 0) and t_b, found by steps
+  // that its bounds prove safe; false when there is none.
+  bool scan_between(const Watch& w, const Model& model, const std::vector<Body>& bodies,
+                    const Vec& y, double t_a, double g_a, double t_b, double& lo, double& hi,
+                    double& g_lo, double& g_hi) const;
+
   std::vector<double> last_;
   std::vector<bool> armed_;
   Vec scratch_, scratch_left_;  // dense states while refining roots, kept to avoid allocation

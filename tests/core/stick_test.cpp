@@ -60,6 +60,23 @@ TEST(Stick, ForcingReleasesAStuckPelletWhenItBeatsStaticFriction) {
   EXPECT_LT(run.events[1].phi, 0.0);
 }
 
+// The force beats static friction by 1e-8 of its capacity at its peak: for 1e-4 s of each 2 s
+// period, far shorter than the integrator's step (the pellet is held, nothing limits the step).
+// The release is a root of a function of time alone, found without relying on the steps.
+TEST(Stick, AForceThatBarelyBeatsFrictionForAnInstantReleases) {
+  Model m = testing::one_pellet(0.05, 0.0, 0.0);
+  const double capacity = m.mu() * m.g / m.R;  // at phi = 0
+  const double F0 = capacity * m.pellets[0].m * m.R * (1.0 + 1e-8);
+  m.pellets[0].force = {F0, 3.0, M_PI / 2};  // F = −F0 sin(3t): the first peak at t = π/6
+  for (Method method : {Method::dopri5, Method::dop853, Method::radau5, Method::automatic}) {
+    const RunResult run = simulate(m, testing::recorded(m, 1.0, method));
+    ASSERT_FALSE(run.events.empty()) << method_name(method);
+    EXPECT_EQ(run.events[0].kind, EventKind::release) << method_name(method);
+    const double expected = std::asin(capacity * m.pellets[0].m * m.R / F0) / 3.0;
+    EXPECT_NEAR(run.events[0].t, expected, 1e-10) << method_name(method);
+  }
+}
+
 TEST(Stick, AStaticCoefficientAboveMuHoldsWhereMuAloneWouldNot) {
   Model m = testing::one_pellet(0.05, 0.07, 0.0);  // outside the kinetic cone
   m.mu_s = 0.08;                                   // tan(0.07) ≈ 0.0701 < 0.08
