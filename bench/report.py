@@ -169,6 +169,27 @@ def event_peer_table(m):
               f"{fmt_ms(b['real_ms'])} | {fmt_ms(b['cpu_ms'])} |")
 
 
+def trust_table(m):
+    print("| preset | events | unchecked (ms) | checked (ms) | checked / unchecked |")
+    print("|---|---:|---:|---:|---:|")
+    ratios = []
+    for name, b in m.items():
+        parts = name.split("/")
+        if len(parts) != 3 or parts[2] != "unchecked" or "skipped" in b:
+            continue
+        c = m.get(f"Trust/{parts[1]}/checked")
+        if not c or "skipped" in c:
+            continue
+        r = c["cpu_ms"] / b["cpu_ms"]
+        ratios.append(r)
+        print(f"| {parts[1]} | {b.get('events', 0):.0f} | {fmt_ms(b['cpu_ms'])} | "
+              f"{fmt_ms(c['cpu_ms'])} | {r:.2f} |")
+    if ratios:
+        ratios.sort()
+        print(f"\nMedian ratio {ratios[len(ratios) // 2]:.2f}, largest {ratios[-1]:.2f} "
+              f"(CPU time of the benchmark thread).")
+
+
 def main():
     results = sys.argv[1] if len(sys.argv) > 1 else "build-bench/results"
     print("### Engine (paper scene, 1200×800; 3-D panel 1024×1024)\n")
@@ -178,6 +199,10 @@ def main():
     print("\n### Work-precision, integrators behind vibro's driver (same events)")
     work_precision_tables(medians(os.path.join(results, "work_precision_bench.json")),
                           "WorkPrecision/", "Work-precision")
+    tr = medians(os.path.join(results, "trust_bench.json"))
+    if tr:
+        print("\n### The trust check: each preset with and without it\n")
+        trust_table(tr)
     ev = medians(os.path.join(results, "event_peer_bench.json"))
     if ev:
         print("\n### Peers with their own event location (forced pellet between two limiters)\n")

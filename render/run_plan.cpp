@@ -8,6 +8,8 @@ RunPlan plan_run(const FigureSpec& figure, const SimOptions& base, int pellets) 
   RunPlan plan;
   plan.options = base;
   plan.options.record.assign(pellets, false);
+  // The trust check's fields are answered by a run's JSON; nothing drawn reads them yet.
+  plan.options.check = false;
   double until = 0.0;
   for (const PlotSpec& p : figure.plots) {
     if (p.kind == PlotKind::work_precision) {

@@ -1,5 +1,6 @@
 // What a figure needs from a run, so a scene computes only what its plots draw: branches kept
-// only for the pellets drawn, and the simulation stopped at the end of the latest window drawn.
+// only for the pellets drawn, the simulation stopped at the end of the latest window drawn, and
+// no trust check (its fields are not drawn).
 #pragma once
 
 #include <vector>
