@@ -20,6 +20,9 @@ std::optional<ChatterSeries> chatter_series(const Model& model, double t, double
   }
   ChatterSeries c;
   c.r = k * std::sqrt(a_toward / a_away);
+  // Near the top the paper law's friction pushes along (a_away < a_toward), and the series
+  // need not shrink: summed, it would accumulate before it starts.
+  if (!(c.r < 1.0)) return std::nullopt;
   c.t_next = u / a_away + u / std::sqrt(a_away * a_toward);
   c.t_star = t + c.t_next / (1.0 - c.r);
   c.impacts = static_cast<int>(

@@ -71,6 +71,23 @@ TEST(Chatter, RestingPelletIsReleasedWhenTheForcePullsItAway) {
   EXPECT_GT(next->phi, theta);
 }
 
+// A limiter near the top, under the paper law: there the normal force is negative, friction
+// pushes the pellet along, flights away are longer than flights back (r = k·sqrt(a_toward /
+// a_away) > 1), and the impacts do not shrink. Summed anyway, the series accumulated at
+// t* = −3.4 s, before the run began (found by the independent reference simulator).
+TEST(Chatter, ASeriesThatDoesNotShrinkIsNotSummed) {
+  Model m = testing::one_pellet(0.2, -1.66, -7.45);
+  m.R = 0.5;
+  m.pellets[0].m = 1.0;
+  m.limiters = {{2.55838754912412, 0.9, false, -1, {}}};
+  const RunResult run = simulate(m, testing::recorded(m, 3.0));
+  ASSERT_FALSE(run.events.empty());
+  for (const Event& e : run.events) {
+    EXPECT_GE(e.t, 0.0) << event_kind_name(e.kind);
+    EXPECT_NE(e.kind, EventKind::chatter) << "at t = " << e.t;
+  }
+}
+
 TEST(Chatter, PlasticLimiterStopsThePelletAtTheFirstImpact) {
   const Scene scene = testing::preset("plastic-limiter");
   const RunResult run = simulate(scene.model, testing::recorded(scene.model, scene.sim.t_end));
