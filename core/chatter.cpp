@@ -7,7 +7,7 @@ namespace vibro {
 
 std::optional<ChatterSeries> chatter_series(const Model& model, double t, double theta, int side,
                                             double u, double k, double a_free) {
-  if (!(u > 0.0) || !(k > 0.0) || !(k < 1.0)) return std::nullopt;
+  if (!(u > 0.0) || !(k > 0.0) || !(k <= 1.0)) return std::nullopt;
   const double press = -side * a_free;  // toward the limiter
   double friction = model.mu() * model.g / model.R * std::cos(theta);
   if (model.friction == FrictionLaw::bilateral) friction = std::abs(friction);

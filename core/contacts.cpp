@@ -26,10 +26,15 @@ std::vector<Neighbours> circular_neighbours(const Vec& y, int n) {
 }
 
 void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact_distance,
-                   const std::vector<bool>& at_limiter, std::vector<PairContact>& pairs) {
+                   const std::vector<bool>& at_limiter, const std::vector<PairContact>& apart,
+                   std::vector<PairContact>& pairs) {
   for (std::size_t pass = 0; pass < neighbours.size(); ++pass) {
     bool changed = false;
     for (const Neighbours& nb : neighbours) {
+      if (std::any_of(apart.begin(), apart.end(), [&](const PairContact& c) {
+            return c.behind == nb.behind && c.ahead == nb.ahead;
+          }))
+        continue;
       double& pb = y[phi_index(nb.behind)];
       double& pa = y[phi_index(nb.ahead)];
       const double gap = pa - pb + nb.offset;
@@ -67,14 +72,17 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
     grew = false;
     for (const PairContact& p : pairs) {
       if (next[p.behind] >= 0 || prev[p.ahead] >= 0) continue;
-      if (separated_by_limiter(limiter_contacts, armed, p)) continue;
+      if (separated_by_limiter(model, limiter_contacts, armed, p)) continue;
       double Fb, Mb, Pb, Fa, Ma, Pa;
       chain(p.behind, prev, Fb, Mb, Pb);
       chain(p.ahead, next, Fa, Ma, Pa);
       const double press = (Fb / Mb - Fa / Ma) / model.R;  // relative acceleration, rad/s²
       const double approach = Pb / Mb - Pa / Ma;
+      // Parting at w and pressed back at p, they meet again after 2w/p, and at k_c·w after
+      // that: the whole chatter lasts 2w/(p(1 − k_c)).
+      const double chatter = 2.0 * std::abs(approach) / (press * (1.0 - model.k_c));
       if (press >= 0.0 &&
-          std::abs(approach) <= std::max(criteria.v_merge, press * criteria.chatter_time)) {
+          (std::abs(approach) <= criteria.v_merge || chatter <= criteria.chatter_time)) {
         next[p.behind] = p.ahead;
         prev[p.ahead] = p.behind;
         grew = true;

@@ -2,7 +2,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <numeric>
 
 namespace vibro {
 
@@ -13,13 +12,13 @@ void collide(double m_i, double m_j, double k_c, double& v_i, double& v_j) {
   v_j = ((m_j - k_c * m_i) * vj + m_i * (1.0 + k_c) * vi) / M;
 }
 
-bool separated_by_limiter(const std::vector<LimiterContact>& lc, const std::vector<bool>& armed,
-                          const PairContact& p) {
-  for (const LimiterContact& a : lc) {
-    if (a.pellet != p.behind || a.side != -1 || !armed[a.limiter]) continue;
-    for (const LimiterContact& b : lc) {
-      if (b.pellet == p.ahead && b.limiter == a.limiter && b.side == +1) return true;
-    }
+bool separated_by_limiter(const Model& model, const std::vector<LimiterContact>& lc,
+                          const std::vector<bool>& armed, const PairContact& p) {
+  for (const LimiterContact& c : lc) {
+    if (!armed[c.limiter]) continue;
+    const Limiter& l = model.limiters[c.limiter];
+    if (c.pellet == p.behind && c.side == -1 && l.acts_on(p.ahead)) return true;
+    if (c.pellet == p.ahead && c.side == +1 && l.acts_on(p.behind)) return true;
   }
   return false;
 }
@@ -43,40 +42,44 @@ std::vector<Event> plastic_limit(const Model& model, std::vector<double>& v,
   const int n = model.size();
   v = v0;
   armed = armed0;
-  std::vector<int> group(n);
-  std::iota(group.begin(), group.end(), 0);
-  auto find = [&](int i) {
-    while (group[i] != i) i = group[i] = group[group[i]];
-    return i;
-  };
-  for (const PairContact& p : pc) group[find(p.behind)] = find(p.ahead);
-
+  // Each group's members in their order around the circle, behind to ahead; a limiter between
+  // two pellets keeps them in two groups.
+  std::vector<int> next(n, -1), prev(n, -1);
+  for (const PairContact& p : pc) {
+    if (separated_by_limiter(model, lc, armed0, p)) continue;
+    next[p.behind] = p.ahead;
+    prev[p.ahead] = p.behind;
+  }
   std::vector<Event> events;
   std::vector<bool> done(n, false);
-  for (int root_pellet = 0; root_pellet < n; ++root_pellet) {
-    const int root = find(root_pellet);
-    if (done[root]) continue;
-    done[root] = true;
+  for (int start = 0; start < n; ++start) {
+    if (done[start]) continue;
+    int first = start;
+    for (int guard = 0; prev[first] >= 0 && prev[first] != start && guard < n; ++guard)
+      first = prev[first];
     std::vector<int> members;
     double P = 0.0, M = 0.0;
-    for (int i = 0; i < n; ++i) {
-      if (find(i) != root) continue;
+    for (int i = first, guard = 0; i >= 0 && !done[i] && guard < n; i = next[i], ++guard) {
       members.push_back(i);
+      done[i] = true;
       P += model.pellets[i].m * v0[i];
       M += model.pellets[i].m;
     }
     double V = P / M;
     int limiter = -1;
     for (const LimiterContact& c : lc) {
-      if (find(c.pellet) != root || !armed[c.limiter]) continue;
+      if (std::find(members.begin(), members.end(), c.pellet) == members.end() ||
+          !armed[c.limiter])
+        continue;
       if (limiter < 0) limiter = c.limiter;
       if (V * c.side < 0.0) {
         V = 0.0;
         limiter = c.limiter;
       }
     }
-    bool touched = members.size() > 1 || limiter >= 0;
-    if (!touched) continue;
+    // A group the cascade did not move (a pellet resting elsewhere) has no impact to list.
+    const bool struck = std::any_of(members.begin(), members.end(), [&](int i) { return v0[i] != V; });
+    if (!struck) continue;
     Event e;
     e.kind = members.size() > 1 ? EventKind::collision : EventKind::limiter;
     e.pellets = members;
@@ -136,7 +139,7 @@ std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
       ++impacts;
     }
     for (const PairContact& p : pc) {
-      if (v[p.behind] <= v[p.ahead] || separated_by_limiter(lc, armed, p)) continue;
+      if (v[p.behind] <= v[p.ahead] || separated_by_limiter(model, lc, armed, p)) continue;
       Event e;
       e.kind = EventKind::collision;
       e.pellets = {p.behind, p.ahead};

@@ -19,6 +19,29 @@ bool contains(const std::vector<PairContact>& pairs, const PairContact& p) {
   });
 }
 
+// Whether another pellet lies between contact c's pellet and its limiter: walking the chain of
+// touching neighbours on the limiter's side, one that touches the limiter from the same side
+// (resting there, or arriving with it). The pellet then meets that chain, not the limiter.
+// Members of a body that touches the limiter through another member, and pellets the limiter
+// does not act on, are walked past; one on the limiter's other side ends the walk.
+bool shadowed(const LimiterContact& c, const InstantContacts& contacts, const Model& model) {
+  int q = c.pellet;
+  for (int guard = 0; guard < model.size(); ++guard) {
+    int next = -1;
+    for (const PairContact& p : contacts.pairs) {
+      if (c.side > 0 && p.ahead == q) next = p.behind;
+      if (c.side < 0 && p.behind == q) next = p.ahead;
+    }
+    if (next < 0 || next == c.pellet) return false;
+    if (model.limiters[c.limiter].acts_on(next)) {
+      for (const LimiterContact& d : contacts.limiters)
+        if (d.pellet == next && d.limiter == c.limiter) return d.side == c.side;
+    }
+    q = next;
+  }
+  return false;
+}
+
 // The time of the event, and the angle of its first pellet.
 Event stamped(Event e, double t, const Vec& y) {
   e.t = t;
@@ -26,30 +49,39 @@ Event stamped(Event e, double t, const Vec& y) {
   return e;
 }
 
-// The limiter a body at speed zero is pressed against, if any: a contact of this instant, or a
-// limiter it sits on (a flight too short to leave it).
+// The limiter a body is pressed against, if any: a contact of this instant.
 struct Support {
   int limiter = -1;
   int side = 0;
 };
 
-Support support_of(const Model& model, const EventTolerances& tol, const Body& body,
-                   const std::vector<LimiterContact>& contacts, const std::vector<bool>& armed,
-                   double phi, double a_free, double v) {
-  Support s;
-  for (const LimiterContact& c : contacts)
+Support support_of(const Body& body, const InstantContacts& contacts,
+                   const std::vector<bool>& armed) {
+  for (const LimiterContact& c : contacts.limiters)
     for (int i : body.members)
-      if (c.pellet == i && armed[c.limiter]) s = {c.limiter, c.side};
-  if (s.limiter < 0 && std::abs(v) <= tol.v_eps) {
-    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
-      const double d = wrap_angle(phi - model.limiters[l].angle);
-      if (armed[l] && std::abs(d) <= tol.on_limiter * (1.0 + std::abs(phi)) &&
-          model.limiters[l].acts_on(body.leader())) {
-        s = {l, a_free > 0.0 ? -1 : 1};
-      }
-    }
+      if (c.pellet == i && armed[c.limiter]) return {c.limiter, c.side};
+  return {};
+}
+
+// A body that stops within round-off of a limiter's angle touches that limiter without having
+// crossed it: arriving (its limiter watch aimed there: it lies on the side it came from, −s) or
+// after a rebound too small to leave it (on the side it moved into, s).
+void touch_where_stopped(const Model& model, const EventTolerances& tol,
+                         const MotionInterval& interval, int b, const Vec& y,
+                         std::vector<LimiterContact>& contacts) {
+  const Body& body = interval.bodies()[b];
+  const double phi = y[phi_index(body.leader())];
+  const double near = tol.on_limiter * (1.0 + std::abs(phi));
+  int arriving = -1;
+  for (const Watch& w : interval.watches())
+    if (w.kind == WatchKind::limiter && w.body == b && std::abs(w.target - phi) <= near)
+      arriving = w.limiter;
+  for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
+    if (std::abs(wrap_angle(phi - model.limiters[l].angle)) > near) continue;
+    const int side = l == arriving ? -body.s : body.s;
+    const int nearest = side > 0 ? body.members.front() : body.members.back();
+    if (model.limiters[l].acts_on(nearest)) contacts.push_back({nearest, l, side});
   }
-  return s;
 }
 
 // Phase 4: a lone pellet that leaves the fixed limiter it just struck, pressed back so hard that
@@ -105,7 +137,8 @@ void set_mode(Body& body, double v, const Support& support, double a_free, doubl
 
 InstantContacts snap(const Model& model, const EventTolerances& tol,
                      const MotionInterval& interval, const std::vector<Crossing>& crossings,
-                     const std::vector<Neighbours>& neighbours, Vec& y) {
+                     const std::vector<Neighbours>& neighbours, const std::vector<bool>& armed,
+                     Vec& y) {
   const int n = model.size();
   const std::vector<Body>& bodies = interval.bodies();
   const std::vector<Watch>& watches = interval.watches();
@@ -134,6 +167,7 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
           y[dphi_index(i)] = 0.0;
           c.reversed[i] = true;
         }
+        touch_where_stopped(model, tol, interval, w.body, y, c.limiters);
         break;
       case WatchKind::gap: {
         // Onto one place: the pellet at a limiter stays put, else both meet halfway.
@@ -158,22 +192,37 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
         const std::vector<int>& members = bodies[w.body].members;
         for (int i : members) c.released[i] = true;
         c.parting.push_back({members[w.split - 1], members[w.split]});
+        const int part = pulled_off(w, model, bodies, crossing.t, y);
+        const int n_members = static_cast<int>(members.size());
+        for (int k = 0; k < n_members; ++k)
+          if ((part > 0 && k >= w.split) || (part < 0 && k < w.split)) c.pulled_free[members[k]] = true;
         break;
       }
     }
   }
-  snap_touching(y, neighbours, tol.contact_distance, at_limiter, c.pairs);
   // Standing contacts: bodies resting on limiters, and pellets moving together.
   for (const Body& body : bodies) {
     if (body.mode == Mode::resting) {
       const int nearest = body.side > 0 ? body.members.front() : body.members.back();
       c.limiters.push_back({nearest, body.limiter, body.side});
     }
+  }
+  std::vector<PairContact> apart;
+  for (const Neighbours& nb : neighbours) {
+    const PairContact pair{nb.behind, nb.ahead};
+    if (separated_by_limiter(model, c.limiters, armed, pair)) apart.push_back(pair);
+  }
+  snap_touching(y, neighbours, tol.contact_distance, at_limiter, apart, c.pairs);
+  for (const Body& body : bodies) {
     for (int k = 0; k + 1 < static_cast<int>(body.members.size()); ++k) {
       const PairContact pair{body.members[k], body.members[k + 1]};
       if (!contains(c.pairs, pair)) c.pairs.push_back(pair);
     }
   }
+  std::vector<bool> drop(c.limiters.size());
+  for (std::size_t k = 0; k < c.limiters.size(); ++k) drop[k] = shadowed(c.limiters[k], c, model);
+  std::size_t k = 0;
+  std::erase_if(c.limiters, [&](const LimiterContact&) { return drop[k++]; });
   return c;
 }
 
@@ -261,7 +310,7 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
     const int L = body.leader();
     const double phi = y[phi_index(L)];
     const double a_free = body_free_acceleration(model, body, t, phi);
-    Support support = support_of(model, tol, body, contacts.limiters, armed, phi, a_free, speed);
+    Support support = support_of(body, contacts, armed);
 
     // Phase 4: chatter.
     const int struck = struck_limiter_of[L];
@@ -271,29 +320,35 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
     }
 
     // Phase 5: modes, and the events that say how the motion changed.
-    const Body& old = before[body_before[L]];
-    const bool was_moving = old.mode == Mode::sliding;
-    // The release watch spoke for the body it watched: the same pellets, not struck meanwhile.
-    const bool pulled_free = contacts.pulled_free[L] && old.members == body.members;
+    // The crossing spoke for the pellets it pulled free, as long as no other pellet joined them.
+    const bool pulled_free = std::all_of(body.members.begin(), body.members.end(),
+                                         [&](int i) { return contacts.pulled_free[i]; });
     set_mode(body, speed, support, a_free, stick_capacity(model, phi), pulled_free, tol);
     if (std::abs(speed) <= tol.v_eps) speed = 0.0;
     for (int i : body.members) y[dphi_index(i)] = speed;
 
+    // A member that reached zero speed (its body was sliding), or one let go from a hold.
     bool reversed = false, released = false;
+    int left = -1;  // the limiter a released member rested against
     for (int i : body.members) {
+      const Body& held = before[body_before[i]];
       reversed = reversed || contacts.reversed[i];
-      released = released || contacts.released[i];
+      if (contacts.released[i] && held.mode != Mode::sliding) {
+        released = true;
+        if (held.mode == Mode::resting) left = held.limiter;
+      }
     }
     Event e;
-    if (reversed && was_moving) {
+    if (reversed) {
       e.kind = body.mode == Mode::sliding ? EventKind::reversal : EventKind::stick;
-    } else if (released && body.mode == Mode::sliding && !was_moving) {
+      e.limiter = body.mode == Mode::resting ? body.limiter : -1;
+    } else if (released && body.mode == Mode::sliding) {
       e.kind = EventKind::release;
+      e.limiter = left;
     } else {
       continue;
     }
     e.pellets = body.members;
-    e.limiter = body.mode == Mode::resting ? body.limiter : -1;
     e.dphi_before.assign(body.members.size(), 0.0);
     e.dphi_after.assign(body.members.size(), speed);
     out.events.push_back(stamped(std::move(e), t, y));

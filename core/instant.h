@@ -30,8 +30,8 @@ struct InstantContacts {
   std::vector<bool> released;  // per pellet: its body's release or separation watch fired
   // A release or separation fires at the root of a threshold (friction's capacity, the press
   // between two parts), where a test of the same threshold is decided by round-off. The crossing
-  // has decided it: these bodies leave their hold, and these pairs part, whatever the test says.
-  std::vector<bool> pulled_free;     // per pellet: its body's release watch fired
+  // has decided it: these pellets leave their hold, and these pairs part, whatever the test says.
+  std::vector<bool> pulled_free;     // per pellet: released, or in the part pulled off a held body
   std::vector<PairContact> parting;  // the pairs where a body's separation watch fired
 };
 
@@ -44,10 +44,11 @@ struct InstantOutcome {
 };
 
 // Phase 1 at the end of an interval: the crossings (sorted by time, within one instant) of the
-// interval's watches, snapped in y.
+// interval's watches, snapped in y. `armed` says which limiters act.
 InstantContacts snap(const Model& model, const EventTolerances& tol,
                      const MotionInterval& interval, const std::vector<Crossing>& crossings,
-                     const std::vector<Neighbours>& neighbours, Vec& y);
+                     const std::vector<Neighbours>& neighbours, const std::vector<bool>& armed,
+                     Vec& y);
 
 // Phase 1 at t = 0: pellets that start on an armed limiter strike it if they move, or rest on it.
 InstantContacts initial_contacts(const Model& model, const EventTolerances& tol, Vec& y);

@@ -231,7 +231,7 @@ RunResult Simulation::run() {
            "events do not advance in time (an unresolved Zeno sequence)");
       break;
     }
-    const InstantContacts contacts = snap(model_, tol_, *interval_, found, neighbours_, y_);
+    const InstantContacts contacts = snap(model_, tol_, *interval_, found, neighbours_, armed_, y_);
     bodies = instant(t, interval_->bodies(), contacts);
     if (!stopped_) over_budget(t);
   }

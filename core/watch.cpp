@@ -9,6 +9,52 @@ namespace vibro {
 
 namespace {
 
+// The forces on some members of a body: their sum, its rate, and a bound of its second derivative.
+struct PartForces {
+  double F = 0.0, rate = 0.0, curvature = 0.0, m = 0.0;
+};
+
+PartForces part_forces(const Model& model, const Body& b, int from, int to, double t) {
+  PartForces p;
+  for (int k = from; k < to; ++k) {
+    const Pellet& pellet = model.pellets[b.members[k]];
+    p.F += pellet.force.at(t);
+    p.rate += pellet.force.rate(t);
+    p.curvature += std::abs(pellet.force.F0) * pellet.force.Omega * pellet.force.Omega;
+    p.m += pellet.m;
+  }
+  return p;
+}
+
+// The parts of a body on either side of a separation watch's cut.
+struct Parts {
+  PartForces behind, ahead;
+};
+
+Parts parts(const Model& model, const Body& b, int split, double t) {
+  const int n = static_cast<int>(b.members.size());
+  return {part_forces(model, b, 0, split, t), part_forces(model, b, split, n, t)};
+}
+
+// A held body (stuck, or resting on a limiter) comes apart where a part at its end is pulled off
+// harder than friction holds it: the part ahead forward, the part behind backward; against a
+// limiter only the part away from it. The margins, in rad/s²: pulled off when one reaches 0.
+struct HeldMargins {
+  double ahead = std::numeric_limits<double>::infinity();
+  double behind = std::numeric_limits<double>::infinity();
+};
+
+HeldMargins held_margins(const Model& model, const Body& b, const Parts& p, double phi) {
+  const double c = stick_capacity(model, phi);
+  const double gravity = model.g / model.R * std::sin(phi);
+  const double a_ahead = p.ahead.F / (p.ahead.m * model.R) - gravity;
+  const double a_behind = p.behind.F / (p.behind.m * model.R) - gravity;
+  HeldMargins m;
+  if (!(b.mode == Mode::resting && b.side < 0)) m.ahead = c - a_ahead;
+  if (!(b.mode == Mode::resting && b.side > 0)) m.behind = c + a_behind;
+  return m;
+}
+
 double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                  const Vec& y) {
   switch (w.kind) {
@@ -27,14 +73,14 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
     }
     case WatchKind::separation: {
       const Body& b = bodies[w.body];
-      double F_behind = 0.0, m_behind = 0.0, F_ahead = 0.0, m_ahead = 0.0;
-      for (int k = 0; k < static_cast<int>(b.members.size()); ++k) {
-        const Pellet& p = model.pellets[b.members[k]];
-        (k < w.split ? F_behind : F_ahead) += p.force.at(t);
-        (k < w.split ? m_behind : m_ahead) += p.m;
+      const Parts p = parts(model, b, w.split, t);
+      if (b.mode != Mode::sliding) {
+        const HeldMargins m = held_margins(model, b, p, y[phi_index(w.pellet)]);
+        return std::min(m.ahead, m.behind);
       }
-      // The part behind pushes the part ahead while it would accelerate faster on its own.
-      return F_behind / m_behind - F_ahead / m_ahead;
+      // Sliding, friction and gravity per unit mass are the same for every part: the part
+      // behind pushes the part ahead while its force per mass is larger.
+      return p.behind.F / p.behind.m - p.ahead.F / p.ahead.m;
     }
   }
   return 1.0;
@@ -49,28 +95,28 @@ bool depends_on_time_alone(const Watch& w) {
 TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Body>& bodies,
                        double t) {
   const Body& b = bodies[w.body];
-  // Per member: its force's rate and the bound of its second derivative, each over the mass
-  // that shares it.
-  double rate = 0.0, curvature = 0.0;
   if (w.kind == WatchKind::release) {
-    const double MR = body_mass(model, b) * model.R;
-    for (int i : b.members) {
-      const Forcing& f = model.pellets[i].force;
-      rate += f.rate(t) / MR;
-      curvature += std::abs(f.F0) * f.Omega * f.Omega / MR;
-    }
-  } else {
-    double m_behind = 0.0, m_ahead = 0.0;
-    for (int k = 0; k < static_cast<int>(b.members.size()); ++k)
-      (k < w.split ? m_behind : m_ahead) += model.pellets[b.members[k]].m;
-    for (int k = 0; k < static_cast<int>(b.members.size()); ++k) {
-      const Forcing& f = model.pellets[b.members[k]].force;
-      const double m = k < w.split ? m_behind : -m_ahead;
-      rate += f.rate(t) / m;
-      curvature += std::abs(f.F0) * f.Omega * f.Omega / std::abs(m);
-    }
+    const PartForces f = part_forces(model, b, 0, static_cast<int>(b.members.size()), t);
+    const double MR = f.m * model.R;
+    return {std::abs(f.rate) / MR, f.curvature / MR};
   }
-  return {std::abs(rate), curvature};
+  const Parts p = parts(model, b, w.split, t);
+  if (b.mode == Mode::sliding) {
+    return {std::abs(p.behind.rate / p.behind.m - p.ahead.rate / p.ahead.m),
+            p.behind.curvature / p.behind.m + p.ahead.curvature / p.ahead.m};
+  }
+  // A minimum of the two margins is bounded by the larger of their bounds.
+  const double R = model.R;
+  return {std::max(std::abs(p.ahead.rate) / (p.ahead.m * R), std::abs(p.behind.rate) / (p.behind.m * R)),
+          std::max(p.ahead.curvature / (p.ahead.m * R), p.behind.curvature / (p.behind.m * R))};
+}
+
+int pulled_off(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+               const Vec& y) {
+  const Body& b = bodies[w.body];
+  if (w.kind != WatchKind::separation || b.mode == Mode::sliding) return 0;
+  const HeldMargins m = held_margins(model, b, parts(model, b, w.split, t), y[phi_index(w.pellet)]);
+  return m.ahead <= m.behind ? 1 : -1;
 }
 
 double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,

@@ -16,7 +16,8 @@ enum class WatchKind {
   limiter,     // s·(target − phi): the next armed limiter angle ahead of a sliding body
   gap,         // distance from one body's leading pellet to the next body's trailing pellet
   release,     // static capacity − |free acceleration| of a stuck body (or, resting: pull away)
-  separation,  // compression between two parts of a body
+  separation,  // sliding: compression between two parts; held: the margin before a part is
+               // pulled off
 };
 
 struct Watch {
@@ -44,6 +45,10 @@ struct TimeBounds {
   double curvature = 0.0;
 };
 bool depends_on_time_alone(const Watch& w);
+// For the separation watch of a held body, at its crossing: the part pulled off, +1 the part
+// ahead of the cut, −1 the part behind; 0 for a sliding body (its parts slide on apart).
+int pulled_off(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+               const Vec& y);
 TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Body>& bodies,
                        double t);
 
