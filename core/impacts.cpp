@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 
 namespace vibro {
 
@@ -77,9 +78,12 @@ std::vector<Event> plastic_limit(const Model& model, std::vector<double>& v,
         limiter = c.limiter;
       }
     }
-    // A group the cascade did not move (a pellet resting elsewhere) has no impact to list.
-    const bool struck = std::any_of(members.begin(), members.end(), [&](int i) { return v0[i] != V; });
-    if (!struck) continue;
+    // A group the cascade did not move (a pellet resting elsewhere, pellets moving together: their
+    // momentum's speed is theirs up to round-off) has no impact to list.
+    const bool struck = std::any_of(members.begin(), members.end(), [&](int i) {
+      return std::abs(v0[i] - V) > 8.0 * std::numeric_limits<double>::epsilon() * std::abs(V);
+    });
+    if (!struck || (members.size() == 1 && limiter < 0)) continue;
     Event e;
     e.kind = members.size() > 1 ? EventKind::collision : EventKind::limiter;
     e.pellets = members;

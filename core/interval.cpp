@@ -48,6 +48,16 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
       watches_.push_back(w);
     }
   }
+  // A body that starts from rest starts on its reversal watch's root: watched in its deflated form,
+  // which starts at the acceleration s·φ̈ > 0, a turn back within the first step is found.
+  Vec dydt(y.size());
+  bool rates = false;
+  for (Watch& w : watches_) {
+    if (w.kind != WatchKind::reversal || y[dphi_index(w.pellet)] != 0.0) continue;
+    if (!rates) dynamics_.rhs(t, y, dydt);
+    rates = true;
+    deflate(w, model, bodies_, t, y, bodies_[w.body].s * dydt[dphi_index(w.pellet)]);
+  }
   // Gaps between neighbours in different bodies.
   std::vector<int> body_of(model.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b)

@@ -164,8 +164,8 @@ bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body
 
 bool CrossingFinder::scan_between(const Watch& w, const Model& model,
                                   const std::vector<Body>& bodies, const Vec& y, double t_a,
-                                  double g_a, double t_b, double& lo, double& hi, double& g_lo,
-                                  double& g_hi) const {
+                                  double g_a, double t_b, double g_b, double& lo, double& hi,
+                                  double& g_lo, double& g_hi) const {
   // Each step is the largest the bounds allow without a root; near a tangency the steps shrink
   // geometrically, and past it they grow again, so a few dozen steps cover any interval.
   constexpr int kMaxSteps = 1000;
@@ -177,19 +177,26 @@ bool CrossingFinder::scan_between(const Watch& w, const Model& model,
                                       : std::numeric_limits<double>::infinity();
     step = std::max(step, 4.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(t)));
     const double next = t + step;
-    if (!(next < t_b)) return false;
-    const double g_next = evaluate(w, model, bodies, next, y);
+    const bool last = !(next < t_b);
+    const double g_next = last ? g_b : evaluate(w, model, bodies, next, y);
     if (g_next <= 0.0) {
       lo = t;
-      hi = next;
+      hi = last ? t_b : next;
       g_lo = g;
       g_hi = g_next;
       return true;
     }
+    if (last) return false;
     t = next;
     g = g_next;
   }
-  return false;  // a touch without a crossing, to round-off
+  // A touch without a crossing, to round-off; a root at the end is still the first.
+  if (!(g_b <= 0.0)) return false;
+  lo = t;
+  hi = t_b;
+  g_lo = g;
+  g_hi = g_b;
+  return true;
 }
 
 void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model,

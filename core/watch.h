@@ -86,11 +86,12 @@ class CrossingFinder {
                              double simultaneous, Dense&& dense);
 
  private:
-  // A root of a watch of time alone between two samples (t_a, g_a > 0) and t_b, found by steps
-  // that its bounds prove safe; false when there is none.
+  // The first root of a watch of time alone between two samples (t_a, g_a > 0) and (t_b, g_b),
+  // bracketed by steps that its bounds prove safe: a force may beat friction for less than a
+  // sample's spacing, or several times between two samples. False when there is none.
   bool scan_between(const Watch& w, const Model& model, const std::vector<Body>& bodies,
-                    const Vec& y, double t_a, double g_a, double t_b, double& lo, double& hi,
-                    double& g_lo, double& g_hi) const;
+                    const Vec& y, double t_a, double g_a, double t_b, double g_b, double& lo,
+                    double& hi, double& g_lo, double& g_hi) const;
 
   std::vector<double> last_;
   std::vector<bool> armed_;

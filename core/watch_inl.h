@@ -74,17 +74,15 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
     for (std::size_t k = 0; k < times.size(); ++k) {
       const double t_before = k == 0 ? t_prev : times[k - 1];
       const double g = evaluate(watches[w], model, bodies, times[k], states[k]);
-      if (armed_[w] && g <= 0.0) {
+      if (armed_[w] && of_time) {
+        Bracket first{static_cast<int>(w), 0.0, 0.0, 0.0, 0.0};
+        if (scan_between(watches[w], model, bodies, states[k], t_before, last_[w], times[k], g,
+                         first.a, first.b, first.fa, first.fb)) {
+          brackets.push_back(first);
+          break;
+        }
+      } else if (armed_[w] && g <= 0.0) {
         brackets.push_back({static_cast<int>(w), t_before, times[k], last_[w], g});
-        break;
-      }
-      // A force can pull harder than friction holds for less than a sample's spacing: between
-      // two positive samples, a watch of time alone is scanned by steps its bounds prove safe.
-      Bracket dip{static_cast<int>(w), 0.0, 0.0, 0.0, 0.0};
-      if (of_time && armed_[w] &&
-          scan_between(watches[w], model, bodies, states[k], t_before, last_[w], times[k], dip.a,
-                       dip.b, dip.fa, dip.fb)) {
-        brackets.push_back(dip);
         break;
       }
       if (g > 0.0) armed_[w] = true;
