@@ -31,7 +31,7 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
       watches_.push_back({WatchKind::reversal, b, L});
       int lim;
       double target;
-      if (next_limiter(model, armed, body, y[phi_index(L)], body.s, lim, target)) {
+      if (next_limiter(model, armed, body, y[phi_index(L)], body.s, tol.on_limiter, lim, target)) {
         watches_.push_back({WatchKind::limiter, b, L, -1, lim, target});
       }
       if (paper && !forced && body.members.size() == 1) {

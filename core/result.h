@@ -20,7 +20,7 @@ struct Event {
   std::vector<double> dphi_before;  // per pellet in `pellets`
   std::vector<double> dphi_after;
   int impacts_resolved = 0;         // chatter: impacts summed in closed form after the listed ones
-  double t_accumulation = 0.0;      // chatter: the accumulation time t* (= t)
+  double t_accumulation = 0.0;      // chatter: the accumulation time t* (= t, or past t_end)
 };
 
 // One point of a phase trajectory.

@@ -120,7 +120,12 @@ bool Simulation::over_budget(double t) {
 std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
                                       const InstantContacts& contacts) {
   InstantOutcome out = resolve_instant(model_, tol_, t, before, contacts, y_, armed_);
-  for (Event& e : out.events) events_.push_back(std::move(e));
+  for (Event& e : out.events) {
+    // A chatter that accumulates after the run's end is listed at the end; its t_accumulation
+    // says when it would come to rest.
+    e.t = std::min(e.t, opt_.t_end);
+    events_.push_back(std::move(e));
+  }
   for (int i = 0; i < model_.size(); ++i)
     if (out.touched[i]) recorder_.end_branch(i);
   energy_.add_instant(out.kinetic_change);

@@ -136,7 +136,10 @@ void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, doub
 }
 
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,
-                  double phi, int s, int& limiter, double& target) {
+                  double phi, int s, double on_limiter, int& limiter, double& target) {
+  // A limiter the body sits on, within round-off, is behind it: any impact on it was resolved at
+  // the instant the body got there.
+  const double near = on_limiter * (1.0 + std::abs(phi));
   bool found = false;
   for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
     if (!armed[l]) continue;
@@ -151,7 +154,7 @@ bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body
                      : -std::numeric_limits<double>::infinity();
     for (double k = n - 1.0; k <= n + 2.0; k += 1.0) {
       const double c = theta + kTwoPi * k;
-      if (s > 0 ? (c > phi && c < x) : (c < phi && c > x)) x = c;
+      if (s > 0 ? (c > phi + near && c < x) : (c < phi - near && c > x)) x = c;
     }
     if (!found || (s > 0 ? x < target : x > target)) {
       found = true;

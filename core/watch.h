@@ -56,10 +56,10 @@ TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Bod
 void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, double t0,
              const Vec& y0, double rate);
 
-// The next armed limiter angle strictly ahead of phi in direction s that acts on any of the
-// body's members; returns false if there is none.
+// The next armed limiter angle ahead of phi in direction s that acts on any of the body's
+// members, farther than on_limiter·(1 + |phi|); returns false if there is none.
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,
-                  double phi, int s, int& limiter, double& target);
+                  double phi, int s, double on_limiter, int& limiter, double& target);
 
 // A root of one watch inside a step.
 struct Crossing {
