@@ -129,7 +129,8 @@ std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
     bool changed = false;
     for (const LimiterContact& c : lc) {
       const Limiter& lim = model.limiters[c.limiter];
-      if (!armed[c.limiter] || !lim.acts_on(c.pellet) || v[c.pellet] * c.side >= 0.0) continue;
+      if (!armed[c.limiter] || !lim.acts_on(c.pellet) || v[c.pellet] * c.side >= -options.v_eps)
+        continue;
       Event e;
       e.kind = EventKind::limiter;
       e.pellets = {c.pellet};
@@ -143,7 +144,8 @@ std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
       ++impacts;
     }
     for (const PairContact& p : pc) {
-      if (v[p.behind] <= v[p.ahead] || separated_by_limiter(model, lc, armed, p)) continue;
+      if (v[p.behind] - v[p.ahead] <= options.v_eps || separated_by_limiter(model, lc, armed, p))
+        continue;
       Event e;
       e.kind = EventKind::collision;
       e.pellets = {p.behind, p.ahead};

@@ -35,6 +35,9 @@ void collide(double m_i, double m_j, double k_c, double& v_i, double& v_j);
 
 struct ImpactOptions {
   int max_sweeps = 16;  // beyond this a cascade is taken to its plastic limit
+  // Approach speeds up to this are resting contacts, not impacts, rad/s: pellets that touch
+  // after a plastic impact approach at round-off (1e-22 rad/s), which is no event.
+  double v_eps = 0.0;
 };
 
 // Resolves the impacts among the contacts. `v` holds every pellet's dphi and is updated in place;

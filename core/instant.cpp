@@ -275,7 +275,8 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
     place[i] = y[phi_index(i)];
   }
   std::vector<Event> impacts =
-      resolve_impacts(model, v, armed, contacts.limiters, contacts.pairs, place);
+      resolve_impacts(model, v, armed, contacts.limiters, contacts.pairs, place,
+                      ImpactOptions{.v_eps = tol.v_eps});
   std::vector<int> struck_limiter_of(n, -1);
   for (int i = 0; i < n; ++i) {
     out.kinetic_change += kinetic(model, i, v[i]) - kinetic(model, i, y[dphi_index(i)]);
