@@ -58,14 +58,30 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
                                 const std::vector<bool>& armed, const JoinCriteria& criteria) {
   const int n = model.size();
   std::vector<int> next(n, -1), prev(n, -1);
-  // Force, mass and momentum of the chain that `link` leads to from `from`.
-  auto chain = [&](int from, const std::vector<int>& link, double& F, double& M, double& P) {
-    F = M = P = 0.0;
+  // Force, mass and momentum of the chain that `link` leads to from `from`, and the side of an
+  // armed limiter one of its pellets touches (0: none).
+  struct Chain {
+    double F = 0.0, M = 0.0, P = 0.0;
+    int limiter_side = 0;
+  };
+  auto chain = [&](int from, const std::vector<int>& link) {
+    Chain c;
     for (int i = from, guard = 0; i >= 0 && guard < n; i = link[i], ++guard) {
-      F += model.pellets[i].force.at(t);
-      M += model.pellets[i].m;
-      P += model.pellets[i].m * y[dphi_index(i)];
+      c.F += model.pellets[i].force.at(t);
+      c.M += model.pellets[i].m;
+      c.P += model.pellets[i].m * y[dphi_index(i)];
+      for (const LimiterContact& l : limiter_contacts)
+        if (l.pellet == i && armed[l.limiter]) c.limiter_side = l.side;
     }
+    return c;
+  };
+  // The acceleration of a chain at rest, given what holds it: static friction up to its
+  // capacity, and a limiter at its back (side +1 stops it going down, −1 going up).
+  auto held = [&](const Chain& c, double phi) {
+    const double a = c.F / (c.M * model.R) - model.g / model.R * std::sin(phi);
+    const double capacity = stick_capacity(model, phi);
+    const double up = std::max(a - capacity, 0.0), down = std::min(a + capacity, 0.0);
+    return (c.limiter_side > 0 ? 0.0 : down) + (c.limiter_side < 0 ? 0.0 : up);
   };
   // Chains grow until nothing more joins: a pair's press depends on the chains behind and ahead.
   for (bool grew = true; grew;) {
@@ -73,11 +89,15 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
     for (const PairContact& p : pairs) {
       if (next[p.behind] >= 0 || prev[p.ahead] >= 0) continue;
       if (separated_by_limiter(model, limiter_contacts, armed, p)) continue;
-      double Fb, Mb, Pb, Fa, Ma, Pa;
-      chain(p.behind, prev, Fb, Mb, Pb);
-      chain(p.ahead, next, Fa, Ma, Pa);
-      const double press = (Fb / Mb - Fa / Ma) / model.R;  // relative acceleration, rad/s²
-      const double approach = Pb / Mb - Pa / Ma;
+      const Chain b = chain(p.behind, prev), a = chain(p.ahead, next);
+      const double approach = b.P / b.M - a.P / a.M;
+      // The relative acceleration, rad/s². Moving at one speed, friction and gravity per mass
+      // are the same for both: the forces per mass decide. At rest, what holds each decides.
+      const bool at_rest = std::abs(b.P / b.M) <= criteria.v_merge &&
+                           std::abs(a.P / a.M) <= criteria.v_merge;
+      const double phi = y[phi_index(p.behind)];
+      const double press =
+          at_rest ? held(b, phi) - held(a, phi) : (b.F / b.M - a.F / a.M) / model.R;
       // Parting at w and pressed back at p, they meet again after 2w/p, and at k_c·w after
       // that: the whole chatter lasts 2w/(p(1 − k_c)).
       const double chatter = 2.0 * std::abs(approach) / (press * (1.0 - model.k_c));

@@ -158,8 +158,16 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
           at_limiter[i] = true;
         }
         y[phi_index(w.pellet)] = w.target;
-        const int front = b.s > 0 ? b.members.back() : b.members.front();
-        c.limiters.push_back({front, w.limiter, -b.s});
+        // The first member in the direction of motion that the limiter stops; members it does
+        // not act on pass through it.
+        const int n_members = static_cast<int>(b.members.size());
+        for (int k = 0; k < n_members; ++k) {
+          const int i = b.members[b.s > 0 ? n_members - 1 - k : k];
+          if (model.limiters[w.limiter].acts_on(i)) {
+            c.limiters.push_back({i, w.limiter, -b.s});
+            break;
+          }
+        }
         break;
       }
       case WatchKind::reversal:
