@@ -15,11 +15,20 @@ void collide(double m_i, double m_j, double k_c, double& v_i, double& v_j) {
 
 bool separated_by_limiter(const Model& model, const std::vector<LimiterContact>& lc,
                           const std::vector<bool>& armed, const PairContact& p) {
+  auto touches = [&](int pellet, int limiter, int side) {
+    return std::any_of(lc.begin(), lc.end(), [&](const LimiterContact& c) {
+      return c.pellet == pellet && c.limiter == limiter && c.side == side;
+    });
+  };
   for (const LimiterContact& c : lc) {
     if (!armed[c.limiter]) continue;
     const Limiter& l = model.limiters[c.limiter];
-    if (c.pellet == p.behind && c.side == -1 && l.acts_on(p.ahead)) return true;
-    if (c.pellet == p.ahead && c.side == +1 && l.acts_on(p.behind)) return true;
+    if (c.pellet == p.behind && c.side == -1 && l.acts_on(p.ahead) &&
+        !touches(p.ahead, c.limiter, -1))
+      return true;
+    if (c.pellet == p.ahead && c.side == +1 && l.acts_on(p.behind) &&
+        !touches(p.behind, c.limiter, +1))
+      return true;
   }
   return false;
 }

@@ -26,7 +26,8 @@ struct PairContact {
 
 // Two pellets on the two sides of an armed limiter that acts on both do not touch each other:
 // one of them touches the limiter from its own side (the one behind from below, −1, or the one
-// ahead from above, +1), so the other, next to it across the limiter's angle, is on the far side.
+// ahead from above, +1), so the other, next to it across the limiter's angle, is on the far side
+// unless it touches the limiter from that same side too.
 bool separated_by_limiter(const Model& model, const std::vector<LimiterContact>& limiter_contacts,
                           const std::vector<bool>& armed, const PairContact& pair);
 

@@ -109,15 +109,15 @@ bool sum_chatter(const Model& model, const EventTolerances& tol, double t, int p
 }
 
 // Phase 5 for one body moving at v: slide, stick or rest against `support`. A body pulled free
-// by its release watch slides whatever the stick test says at the root.
+// (±1) by a crossing slides that way whatever the stick test says at the root.
 void set_mode(Body& body, double v, const Support& support, double a_free, double capacity,
-              bool pulled_free, const EventTolerances& tol) {
+              int pulled, const EventTolerances& tol) {
   if (std::abs(v) > tol.v_eps) {
     body.mode = Mode::sliding;
     body.s = v > 0.0 ? 1 : -1;
-  } else if (pulled_free) {
+  } else if (pulled != 0) {
     body.mode = Mode::sliding;
-    body.s = support.limiter >= 0 ? support.side : (a_free < 0.0 ? -1 : 1);
+    body.s = pulled;
   } else if (support.limiter >= 0 && !(support.side * a_free > capacity)) {
     body.mode = Mode::resting;
     body.limiter = support.limiter;
@@ -145,7 +145,7 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   InstantContacts c;
   c.reversed.assign(n, false);
   c.released.assign(n, false);
-  c.pulled_free.assign(n, false);
+  c.pulled.assign(n, 0);
   std::vector<bool> at_limiter(n, false);
   for (const Crossing& crossing : crossings) {
     const Watch& w = watches[crossing.watch];
@@ -193,9 +193,14 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
         c.pairs.push_back({w.pellet, w.other});
         break;
       }
-      case WatchKind::release:
-        for (int i : bodies[w.body].members) c.released[i] = c.pulled_free[i] = true;
+      case WatchKind::release: {
+        const int way = release_direction(w, model, bodies, crossing.t, y);
+        for (int i : bodies[w.body].members) {
+          c.released[i] = true;
+          c.pulled[i] = way;
+        }
         break;
+      }
       case WatchKind::separation: {
         const std::vector<int>& members = bodies[w.body].members;
         for (int i : members) c.released[i] = true;
@@ -203,7 +208,7 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
         const int part = pulled_off(w, model, bodies, crossing.t, y);
         const int n_members = static_cast<int>(members.size());
         for (int k = 0; k < n_members; ++k)
-          if ((part > 0 && k >= w.split) || (part < 0 && k < w.split)) c.pulled_free[members[k]] = true;
+          if ((part > 0 && k >= w.split) || (part < 0 && k < w.split)) c.pulled[members[k]] = part;
         break;
       }
     }
@@ -239,7 +244,7 @@ InstantContacts initial_contacts(const Model& model, const EventTolerances& tol,
   InstantContacts c;
   c.reversed.assign(n, false);
   c.released.assign(n, false);
-  c.pulled_free.assign(n, false);
+  c.pulled.assign(n, 0);
   for (int i = 0; i < n; ++i) {
     const double phi = y[phi_index(i)];
     for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
@@ -330,9 +335,12 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
 
     // Phase 5: modes, and the events that say how the motion changed.
     // The crossing spoke for the pellets it pulled free, as long as no other pellet joined them.
-    const bool pulled_free = std::all_of(body.members.begin(), body.members.end(),
-                                         [&](int i) { return contacts.pulled_free[i]; });
-    set_mode(body, speed, support, a_free, stick_capacity(model, phi), pulled_free, tol);
+    const int way = contacts.pulled[L];
+    const int pulled = std::all_of(body.members.begin(), body.members.end(),
+                                   [&](int i) { return contacts.pulled[i] == way; })
+                           ? way
+                           : 0;
+    set_mode(body, speed, support, a_free, stick_capacity(model, phi), pulled, tol);
     if (std::abs(speed) <= tol.v_eps) speed = 0.0;
     for (int i : body.members) y[dphi_index(i)] = speed;
 

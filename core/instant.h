@@ -31,7 +31,7 @@ struct InstantContacts {
   // A release or separation fires at the root of a threshold (friction's capacity, the press
   // between two parts), where a test of the same threshold is decided by round-off. The crossing
   // has decided it: these pellets leave their hold, and these pairs part, whatever the test says.
-  std::vector<bool> pulled_free;     // per pellet: released, or in the part pulled off a held body
+  std::vector<int> pulled;           // per pellet: the way it was pulled free (±1), or 0
   std::vector<PairContact> parting;  // the pairs where a body's separation watch fired
 };
 

@@ -119,6 +119,20 @@ int pulled_off(const Watch& w, const Model& model, const std::vector<Body>& bodi
   return m.ahead <= m.behind ? 1 : -1;
 }
 
+int release_direction(const Watch& w, const Model& model, const std::vector<Body>& bodies,
+                      double t, const Vec& y) {
+  const Body& b = bodies[w.body];
+  if (b.mode == Mode::resting) return b.side;
+  const double phi = y[phi_index(w.pellet)];
+  const double a = body_free_acceleration(model, b, t, phi);
+  // At the root |a_free| = capacity: its sign is firm unless the capacity is nil (no static
+  // friction), where a_free crosses zero and only its rate says which way.
+  if (std::abs(a) >= 0.5 * stick_capacity(model, phi) && stick_capacity(model, phi) > 0.0)
+    return a < 0.0 ? -1 : 1;
+  const PartForces f = part_forces(model, b, 0, static_cast<int>(b.members.size()), t);
+  return f.rate < 0.0 ? -1 : 1;
+}
+
 double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                 const Vec& y) {
   const double g = raw_value(w, model, bodies, t, y);

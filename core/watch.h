@@ -49,6 +49,10 @@ bool depends_on_time_alone(const Watch& w);
 // ahead of the cut, −1 the part behind; 0 for a sliding body (its parts slide on apart).
 int pulled_off(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                const Vec& y);
+// For a release watch at its crossing: the way the body goes, ±1 (away from the limiter it rests
+// on; the way the force pulls a stuck body).
+int release_direction(const Watch& w, const Model& model, const std::vector<Body>& bodies,
+                      double t, const Vec& y);
 TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Body>& bodies,
                        double t);
 
