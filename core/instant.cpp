@@ -193,6 +193,8 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
         c.pairs.push_back({w.pellet, w.other});
         break;
       }
+      case WatchKind::normal:
+        break;  // a kink of the equations, not an event: the next interval starts here
       case WatchKind::release: {
         const int way = release_direction(w, model, bodies, crossing.t, y);
         for (int i : bodies[w.body].members) {

@@ -51,12 +51,26 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
   // A body that starts from rest starts on its reversal watch's root: watched in its deflated form,
   // which starts at the acceleration s·φ̈ > 0, a turn back within the first step is found.
   Vec dydt(y.size());
-  bool rates = false;
+  dynamics_.rhs(t, y, dydt);
   for (Watch& w : watches_) {
     if (w.kind != WatchKind::reversal || y[dphi_index(w.pellet)] != 0.0) continue;
-    if (!rates) dynamics_.rhs(t, y, dydt);
-    rates = true;
-    deflate(w, model, bodies_, t, y, bodies_[w.body].s * dydt[dphi_index(w.pellet)]);
+    deflate(w, model, bodies_, t, y, bodies_[w.body].s * dydt[dphi_index(w.pellet)], 0.0);
+  }
+  // The bilateral law's kink: the normal force's sign, watched from the side it starts on, or,
+  // starting on its root (the kink just passed), from the side it moves to.
+  if (!paper) {
+    for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
+      if (bodies_[b].mode != Mode::sliding) continue;
+      const int L = bodies_[b].leader();
+      const double phi = y[phi_index(L)], dphi = y[dphi_index(L)];
+      const double n = normal_per_mass(model, phi, dphi);
+      const double rate = dphi * (2.0 * model.R * dydt[dphi_index(L)] - model.g * std::sin(phi));
+      const bool on_root = std::abs(n) <= 1e-12 * (model.g + model.R * dphi * dphi);
+      Watch w{WatchKind::normal, b, L};
+      w.target = (on_root ? rate : n) < 0.0 ? -1.0 : 1.0;
+      if (on_root) deflate(w, model, bodies_, t, y, w.target * rate, 0.0);
+      watches_.push_back(w);
+    }
   }
   // Gaps between neighbours in different bodies.
   std::vector<int> body_of(model.size());
@@ -68,7 +82,11 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
     w.target = nb.offset;
     const double gap = y[phi_index(nb.ahead)] - y[phi_index(nb.behind)] + nb.offset;
     if (gap <= tol.contact_distance * (1.0 + std::abs(y[phi_index(nb.behind)]))) {
-      deflate(w, model, bodies_, t, y, y[dphi_index(nb.ahead)] - y[dphi_index(nb.behind)]);
+      // Parting at a speed below round-off is not parting: they start at one speed.
+      double rate = y[dphi_index(nb.ahead)] - y[dphi_index(nb.behind)];
+      if (std::abs(rate) <= tol.v_eps) rate = 0.0;
+      deflate(w, model, bodies_, t, y, rate,
+              dydt[dphi_index(nb.ahead)] - dydt[dphi_index(nb.behind)]);
     }
     watches_.push_back(w);
   }

@@ -71,6 +71,8 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
       const double pull = b.mode == Mode::resting ? b.side * a : std::abs(a);
       return stick_capacity(model, phi) - pull;
     }
+    case WatchKind::normal:
+      return w.target * normal_per_mass(model, y[phi_index(w.pellet)], y[dphi_index(w.pellet)]);
     case WatchKind::separation: {
       const Body& b = bodies[w.body];
       const Parts p = parts(model, b, w.split, t);
@@ -136,17 +138,18 @@ int release_direction(const Watch& w, const Model& model, const std::vector<Body
 double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                 const Vec& y) {
   const double g = raw_value(w, model, bodies, t, y);
-  if (!w.deflated) return g;
-  return t > w.t0 ? (g - w.g0) / (t - w.t0) : w.rate0;
+  if (w.deflation == 0) return g;
+  if (!(t > w.t0)) return w.start;
+  const double dt = t - w.t0;
+  return w.deflation == 1 ? (g - w.g0) / dt : (g - w.g0) / (dt * dt);
 }
 
 void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, double t0,
-             const Vec& y0, double rate) {
-  w.deflated = false;
+             const Vec& y0, double rate, double accel) {
   w.g0 = raw_value(w, model, bodies, t0, y0);
   w.t0 = t0;
-  w.rate0 = rate;
-  w.deflated = true;
+  w.deflation = rate != 0.0 ? 1 : 2;
+  w.start = rate != 0.0 ? rate : 0.5 * accel;
 }
 
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,

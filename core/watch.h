@@ -18,6 +18,8 @@ enum class WatchKind {
   release,     // static capacity − |free acceleration| of a stuck body (or, resting: pull away)
   separation,  // sliding: compression between two parts; held: the margin before a part is
                // pulled off
+  normal,      // bilateral law: the normal force's sign times its value at the start; where
+               // it crosses zero, friction's |N| has a kink, at which the integration restarts
 };
 
 struct Watch {
@@ -26,13 +28,15 @@ struct Watch {
   int pellet = -1;     // the pellet whose state is read (a body's leader; gap: the one behind)
   int other = -1;      // gap: the pellet ahead
   int limiter = -1;    // limiter: the limiter hit
-  double target = 0.0; // limiter: angle to reach; gap: the constant winding offset
+  double target = 0.0; // limiter: angle to reach; gap: the constant winding offset; normal: ±1
   int split = 0;       // separation: members [0, split) behind, [split, n) ahead
-  // A watch that starts on its own root (two pellets that just collided touch): it is watched
-  // as (g(t) − g(t0)) / (t − t0), which starts at g'(t0) > 0 when they separate, so a quick
-  // return within one step is still found.
-  bool deflated = false;
-  double t0 = 0.0, g0 = 0.0, rate0 = 0.0;
+  // A watch that starts on its own root (two pellets that just collided touch) is watched
+  // deflated: order 1, (g(t) − g(t0)) / (t − t0), which starts at g'(t0) > 0 when they part;
+  // order 2, where it also starts flat (a plastic collision leaves them at one speed),
+  // (g(t) − g(t0)) / (t − t0)², which starts at g''(t0)/2. A quick return within one step is
+  // then still found.
+  int deflation = 0;
+  double t0 = 0.0, g0 = 0.0, start = 0.0;
 };
 
 double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
@@ -56,9 +60,10 @@ int release_direction(const Watch& w, const Model& model, const std::vector<Body
 TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Body>& bodies,
                        double t);
 
-// Makes w watch its deflated form from (t0, y0); `rate` is dg/dt there.
+// Makes w watch its deflated form from (t0, y0), where dg/dt is `rate` and d²g/dt² `accel`:
+// of order 1, or of order 2 where the rate is 0.
 void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, double t0,
-             const Vec& y0, double rate);
+             const Vec& y0, double rate, double accel);
 
 // The next armed limiter angle ahead of phi in direction s that acts on any of the body's
 // members, farther than on_limiter·(1 + |phi|); returns false if there is none.
