@@ -162,6 +162,7 @@ void Simulation::polish(const Crossing& c, double a, double b, double& t) {
   stepper_->precise_state(t, y);
   const double dt = -evaluate(w, model_, bodies, t, y) / slope;
   if (!std::isfinite(dt) || std::abs(curvature * dt) > 1e-3 * std::abs(slope)) return;
+  if (!(t + dt >= a && t + dt <= b)) return;  // the root lies in this step: no correction leaves it
   y_ = y;
   interval_->dynamics().rhs(t, y_, y);
   y_ += dt * y;

@@ -79,6 +79,12 @@ Finding mismatch(const Model& model, const RunResult& a, const RunResult& b, con
   return f;
 }
 
+// The event-time errors two checked runs state, with the factor of ten the trust contract
+// allows an estimate to fall short by.
+double stated(const RunResult& a, const RunResult& b) {
+  return 10.0 * (a.stats.event_time_error + b.stats.event_time_error);
+}
+
 }  // namespace
 
 const RunResult& SceneRuns::run(Method method, double rtol) {
@@ -125,6 +131,7 @@ std::optional<Finding> methods_disagree(SceneRuns& runs, double rtol) {
   for (int i = 0; i < n; ++i) {
     const RunResult& full = runs.run(kMethods[i], rtol);
     run[i].events = full.events;
+    run[i].stats = full.stats;
     std::erase_if(run[i].events, [&](const Event& e) { return e.t >= t_end; });
   }
   // cmp[i][j], i < j: methods i and j compared.
@@ -132,7 +139,9 @@ std::optional<Finding> methods_disagree(SceneRuns& runs, double rtol) {
   bool all_agree = true;
   for (int i = 0; i < n; ++i)
     for (int j = i + 1; j < n; ++j) {
-      cmp[i][j] = compare_runs(run[i], run[j], tol, t_end);
+      TimeTolerance pair = tol;
+      if (runs.trust_horizon()) pair.stated = stated(run[i], run[j]);
+      cmp[i][j] = compare_runs(run[i], run[j], pair, t_end);
       all_agree = all_agree && cmp[i][j].verdict == Verdict::agree;
     }
   if (all_agree) return std::nullopt;
@@ -184,9 +193,17 @@ std::optional<Finding> methods_disagree(SceneRuns& runs, double rtol) {
 
 std::optional<Finding> rtol_disagrees(SceneRuns& runs, Method method, double rtol) {
   const Model& model = runs.scene().model;
-  const RunResult& a = runs.run(method, rtol);
-  const RunResult& b = runs.run(method, rtol / 10.0);
-  const Comparison c = compare_runs(a, b, {rtol, time_scale(model)}, runs.scene().t_end);
+  RunResult a = runs.run(method, rtol);
+  RunResult b = runs.run(method, rtol / 10.0);
+  double t_end = runs.scene().t_end;
+  if (runs.trust_horizon()) {
+    t_end = std::min({t_end, a.stats.trusted_until, b.stats.trusted_until});
+    for (RunResult* r : {&a, &b})
+      std::erase_if(r->events, [&](const Event& e) { return e.t >= t_end; });
+  }
+  TimeTolerance tol{rtol, time_scale(model)};
+  if (runs.trust_horizon()) tol.stated = stated(a, b);
+  const Comparison c = compare_runs(a, b, tol, t_end);
   if (c.verdict == Verdict::agree) return std::nullopt;
   Finding f =
       mismatch(model, a, b, c, run_name(method, rtol), run_name(method, rtol / 10.0), false);

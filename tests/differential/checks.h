@@ -24,8 +24,8 @@ inline constexpr std::array kMethods = {Method::dopri5, Method::dop853, Method::
 class SceneRuns {
  public:
   // `trust_horizon`: run with the engine's trust check (a shadow run, SimOptions::check) and
-  // let methods_disagree compare only the events before the earliest stats.trusted_until, as
-  // for an ill-conditioned scene whose events the engine must say it no longer trusts.
+  // compare only the events before the earliest stats.trusted_until of the runs compared: the
+  // events a run vouches for must agree; an ill-conditioned scene's later ones need not.
   explicit SceneRuns(RandomScene scene, bool trust_horizon = false)
       : scene_(std::move(scene)), trust_horizon_(trust_horizon) {}
   const RandomScene& scene() const { return scene_; }

@@ -180,8 +180,9 @@ Comparison compare_runs(const RunResult& a, const RunResult& b, const TimeTolera
     const Event& eb = bs[i];
     const double dt = std::abs(ea.t - eb.t);
     const double t = std::max(ea.t, eb.t);
-    const double allowed =
-        tol.at(t) * std::max(conditioning(ea, tol.time_scale), conditioning(eb, tol.time_scale));
+    const double allowed = std::max(
+        tol.at(t) * std::max(conditioning(ea, tol.time_scale), conditioning(eb, tol.time_scale)),
+        tol.stated);
     if (!same_identity(ea, eb) || dt > allowed) {
       c.verdict = same_identity(ea, eb) ? Verdict::time : Verdict::sequence;
       c.index = i;

@@ -21,6 +21,10 @@ struct TimeTolerance {
   static constexpr double kFactor = 1e3;
   double rtol = 1e-9;
   double time_scale = 1.0;
+  // What the runs state themselves (stats.event_time_error, with the factor of ten the trust
+  // contract allows it to fall short by): a run that vouches for its events is held to the
+  // errors it states, however ill-conditioned an event is. 0 when the runs are not checked.
+  double stated = 0.0;
   double at(double t) const { return kFactor * rtol * (time_scale + std::abs(t)); }
 };
 

@@ -40,11 +40,12 @@ struct Args {
   std::string out;
   int jobs = 1;
   bool shrink = false;  // shrink the first scene of each signature (needs --out)
+  bool trust = false;   // compare only what the runs vouch for (before stats.trusted_until)
 };
 
 [[noreturn]] void usage() {
   std::cerr << "usage: differential_scan --count N [--seed S] [--first I] [--out DIR [--shrink]] "
-               "[--jobs J]\n";
+               "[--jobs J] [--trust]\n";
   std::exit(2);
 }
 
@@ -52,8 +53,8 @@ Args parse(int argc, char** argv) {
   Args a;
   for (int k = 1; k < argc; ++k) {
     const std::string key = argv[k];
-    if (key == "--shrink") {
-      a.shrink = true;
+    if (key == "--shrink" || key == "--trust") {
+      (key == "--shrink" ? a.shrink : a.trust) = true;
       continue;
     }
     if (k + 1 >= argc) usage();
@@ -100,15 +101,16 @@ struct Outcome {
     double ratio;
   };
   std::vector<Spread> spreads;
+  int runs = 0, trusted_to_end = 0;  // with --trust: runs that vouch for all their events
 };
 
-Outcome check_scene(const RandomScene& scene) {
+Outcome check_scene(const RandomScene& scene, bool trust) {
   Outcome o;
   if (validate_model(scene.model)) {
     o.invalid = true;
     return o;
   }
-  SceneRuns runs(scene);
+  SceneRuns runs(scene, trust);
   for (double rtol : {1e-9, 1e-10, 1e-11, 1e-12}) {
     if (incomplete(runs, rtol)) {
       o.incomplete = true;
@@ -116,8 +118,12 @@ Outcome check_scene(const RandomScene& scene) {
     }
   }
   for (Method m : kMethods)
-    for (double rtol : {1e-9, 1e-10, 1e-11, 1e-12})
+    for (double rtol : {1e-9, 1e-10, 1e-11, 1e-12}) {
       if (auto f = physics_fails(runs, m, rtol)) o.findings.push_back(*f);
+      const Stats& st = runs.run(m, rtol).stats;
+      ++o.runs;
+      o.trusted_to_end += st.trusted_until >= st.t_reached;
+    }
   for (double rtol : {1e-11, 1e-12}) {
     if (auto f = methods_disagree(runs, rtol)) o.findings.push_back(*f);
     const TimeTolerance tol{rtol, time_scale(scene.model)};
@@ -188,7 +194,7 @@ int main(int argc, char** argv) {
     for (long k = next++; k < args.count; k = next++) {
       const long i = args.first + k;
       const RandomScene scene = scene_at(args.seed, i);
-      outcomes[k] = check_scene(scene);
+      outcomes[k] = check_scene(scene, args.trust);
       const long d = ++done;
       std::lock_guard lock(io);
       if (!outcomes[k].findings.empty() && !args.out.empty()) {
@@ -215,7 +221,7 @@ int main(int argc, char** argv) {
       std::chrono::duration<double>(std::chrono::steady_clock::now() - started).count();
 
   // Scenes per class and per signature (a scene counts once in each), with the first example.
-  long invalid = 0, incomplete_count = 0, failing = 0;
+  long invalid = 0, incomplete_count = 0, failing = 0, runs = 0, trusted_to_end = 0;
   std::map<std::string_view, long> by_class;
   std::map<std::string, std::pair<long, long>> by_signature;  // count, first scene index
   std::vector<double> method_ratios, rtol_ratios;
@@ -228,6 +234,8 @@ int main(int argc, char** argv) {
     const Outcome& o = outcomes[k];
     invalid += o.invalid;
     incomplete_count += o.incomplete;
+    runs += o.runs;
+    trusted_to_end += o.trusted_to_end;
     failing += !o.findings.empty();
     std::set<std::string_view> classes;
     std::set<std::string> signatures;
@@ -252,6 +260,8 @@ int main(int argc, char** argv) {
             << "invalid (refused by validate_model) " << invalid
             << "\nincomplete (stopped at their bounds on work, not checked) " << incomplete_count
             << "\nfailing " << failing << "\n";
+  if (args.trust)
+    std::cout << "runs trusted to their end " << trusted_to_end << " of " << runs << "\n";
   for (const auto& [c, n] : by_class) std::cout << "  " << c << ": " << n << "\n";
   std::cout << "by signature (scenes, first scene):\n";
   for (const auto& [sig, n] : by_signature)
