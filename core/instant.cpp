@@ -19,27 +19,31 @@ bool contains(const std::vector<PairContact>& pairs, const PairContact& p) {
   });
 }
 
-// Whether another pellet lies between contact c's pellet and its limiter: walking the chain of
-// touching neighbours on the limiter's side, one that touches the limiter from the same side
-// (resting there, or arriving with it). The pellet then meets that chain, not the limiter.
-// Members of a body that touches the limiter through another member, and pellets the limiter
-// does not act on, are walked past; one on the limiter's other side ends the walk.
-bool shadowed(const LimiterContact& c, const InstantContacts& contacts, const Model& model) {
-  int q = c.pellet;
+// The pellet that contact c's limiter actually meets: walking the chain of touching neighbours
+// on the limiter's side, the last one the limiter acts on (they all lie at its angle, between c's
+// pellet and the limiter); pellets it does not act on are walked past, one touching the limiter
+// from its other side ends the walk. −1 when one in between touches the limiter from c's side
+// already: c adds nothing.
+int meets_limiter(const LimiterContact& c, const InstantContacts& contacts, const Model& model) {
+  int q = c.pellet, nearest = c.pellet;
   for (int guard = 0; guard < model.size(); ++guard) {
     int next = -1;
     for (const PairContact& p : contacts.pairs) {
       if (c.side > 0 && p.ahead == q) next = p.behind;
       if (c.side < 0 && p.behind == q) next = p.ahead;
     }
-    if (next < 0 || next == c.pellet) return false;
+    if (next < 0 || next == c.pellet) break;
     if (model.limiters[c.limiter].acts_on(next)) {
-      for (const LimiterContact& d : contacts.limiters)
-        if (d.pellet == next && d.limiter == c.limiter) return d.side == c.side;
+      const auto d = std::find_if(contacts.limiters.begin(), contacts.limiters.end(),
+                                  [&](const LimiterContact& l) {
+                                    return l.pellet == next && l.limiter == c.limiter;
+                                  });
+      if (d != contacts.limiters.end()) return d->side == c.side ? -1 : nearest;
+      nearest = next;
     }
     q = next;
   }
-  return false;
+  return nearest;
 }
 
 // The time of the event, and the angle of its first pellet.
@@ -234,10 +238,17 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
       if (!contains(c.pairs, pair)) c.pairs.push_back(pair);
     }
   }
-  std::vector<bool> drop(c.limiters.size());
-  for (std::size_t k = 0; k < c.limiters.size(); ++k) drop[k] = shadowed(c.limiters[k], c, model);
-  std::size_t k = 0;
-  std::erase_if(c.limiters, [&](const LimiterContact&) { return drop[k++]; });
+  // A pellet meets a limiter only if no pellet lies between them.
+  std::vector<LimiterContact> met;
+  for (const LimiterContact& contact : c.limiters) {
+    const int pellet = meets_limiter(contact, c, model);
+    const LimiterContact m{pellet, contact.limiter, contact.side};
+    if (pellet >= 0 && std::none_of(met.begin(), met.end(), [&](const LimiterContact& x) {
+          return x.pellet == m.pellet && x.limiter == m.limiter && x.side == m.side;
+        }))
+      met.push_back(m);
+  }
+  c.limiters = std::move(met);
   return c;
 }
 
