@@ -21,7 +21,7 @@ import sys
 
 HERE = os.path.dirname(os.path.abspath(__file__))
 ROOT = os.path.normpath(os.path.join(HERE, "..", ".."))
-ENGINE = os.path.join(ROOT, "build", "vibro")
+ENGINE = os.environ.get("VIBRO", os.path.join(ROOT, "build", "vibro"))
 sys.path.insert(0, HERE)
 import vibro_ref  # noqa: E402
 
