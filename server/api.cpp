@@ -123,7 +123,7 @@ void Api::simulate_post(const httplib::Request& req, httplib::Response& res) {
 
 void Api::simulate_get(const httplib::Request& req, httplib::Response& res) {
   SceneOrApiError scene =
-      scene_from_query(req, scene_limits_, {"t_end", "method", "rtol", "atol", "trajectories"});
+      scene_from_query(req, scene_limits_, {"t_end", "method", "rtol", "atol", "trajectories", "check"});
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   simulate(std::get<Scene>(scene), req, res);
 }

@@ -65,9 +65,9 @@ std::optional<ApiError> apply_override(json& scene, const std::string& name,
     }
   } else if (name == "method") {
     scene["solver"]["method"] = value;
-  } else if (name == "trajectories") {
+  } else if (name == "trajectories" || name == "check") {
     if (value != "true" && value != "false") return bad("true or false");
-    scene["trajectories"] = value == "true";
+    (name == "check" ? scene["solver"]["check"] : scene["trajectories"]) = value == "true";
   }
   return std::nullopt;
 }

@@ -59,6 +59,12 @@ TEST_F(Endpoints, PostSimulateGivesTheRun) {
   EXPECT_EQ(run["summary"]["final"].size(), 2u);
   EXPECT_EQ(run["stats"]["termination"], "completed");
   EXPECT_FALSE(run.contains("trajectories"));
+  // API.md's trust fields, from the check against a run at a tenth of the tolerance.
+  EXPECT_TRUE(run["stats"]["check"].get<bool>());
+  EXPECT_DOUBLE_EQ(run["stats"]["trusted_until"].get<double>(), 12.0);
+  EXPECT_GT(run["stats"]["event_time_error"].get<double>(), 0.0);
+  EXPECT_GE(run["stats"]["state_error"].get<double>(), 0.0);
+  EXPECT_TRUE(run["summary"]["ends_vibro_impact"].get<bool>());
 }
 
 TEST_F(Endpoints, TrajectoriesOnlyWhenAsked) {
@@ -80,6 +86,10 @@ TEST_F(Endpoints, GetSimulateReadsAPresetWithOverrides) {
   const json run = json::parse(res->body);
   EXPECT_DOUBLE_EQ(run["stats"]["t_reached"].get<double>(), 3.0);
   EXPECT_EQ(run["stats"]["method"], "dopri5");
+  auto unchecked = server->client().Get("/api/simulate?preset=paper&t_end=3&check=false");
+  ASSERT_TRUE(unchecked);
+  ASSERT_EQ(unchecked->status, 200) << unchecked->body;
+  EXPECT_FALSE(json::parse(unchecked->body)["stats"]["check"].get<bool>());
 }
 
 TEST_F(Endpoints, PostRenderDrawsPngAndSvg) {
