@@ -94,9 +94,11 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
   TrustReport r;
   const double t_common = std::min(run.stats.t_reached, shadow.stats.t_reached);
   r.trusted_until = t_common;
-  const double time_scale = event_tolerances(model).time_scale;
+  const EventTolerances tol = event_tolerances(model);
+  const double time_scale = tol.time_scale;
   const std::size_t n = std::min(run.events.size(), shadow.events.size());
   std::size_t k = 0;
+  bool summed = false;  // a chatter series was summed at or before event k
   for (; k < n && listed_alike(run.events[k], shadow.events[k]); ++k) {
     const double t = run.events[k].t;
     if (t > t_common) break;
@@ -112,7 +114,15 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
       r.trusted_until = std::min({r.trusted_until, t, shadow.events[k].t});
       return finish(model, run, shadow, r);
     }
-    r.event_time_error = std::max(r.event_time_error, dt);
+    // A run at rtol does not resolve event times finer than a tenth of what its tolerance asks
+    // (rtol over the time scale and the time run): where the shadow agrees closer, by luck or by
+    // errors both runs share, the estimate is that resolution, not the closer agreement. From a
+    // summed chatter on, the summation's own error (chatter_time²/T0, docs/MODEL.md) stands too:
+    // the shadow sums the same way and cannot see it.
+    summed = summed || run.events[k].kind == EventKind::chatter;
+    const double chatter = tol.chatter_time * tol.chatter_time / time_scale;
+    r.event_time_error = std::max({r.event_time_error, dt,
+                                   0.1 * run.stats.rtol * (time_scale + t), summed ? chatter : 0.0});
   }
   // The first event one run lists and the other does not (or lists otherwise).
   if (k < n && !listed_alike(run.events[k], shadow.events[k])) {
