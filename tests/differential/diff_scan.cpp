@@ -75,19 +75,6 @@ Args parse(int argc, char** argv) {
   return a;
 }
 
-// Scene i of a seed: its own random stream (splitmix64 of the pair), independent of the order
-// in which threads take the scenes. RapidCheck's generation context is global, not per thread:
-// one scene is generated at a time.
-RandomScene scene_at(std::uint64_t seed, long i) {
-  static std::mutex generating;
-  std::lock_guard lock(generating);
-  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(i);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return gen_scene()(rc::Random(z), rc::kNominalSize).value();
-}
-
 struct Outcome {
   bool invalid = false;  // refused by validate_model (never, by construction)
   bool incomplete = false;

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <initializer_list>
+#include <mutex>
 #include <numbers>
 #include <optional>
 #include <ostream>
@@ -132,6 +133,16 @@ void separate(Model& m) {
 }
 
 }  // namespace
+
+RandomScene scene_at(std::uint64_t seed, long i) {
+  static std::mutex generating;
+  std::lock_guard lock(generating);
+  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(i);
+  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
+  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
+  z ^= z >> 31;
+  return gen_scene()(rc::Random(z), rc::kNominalSize).value();
+}
 
 double time_scale(const Model& model) { return std::sqrt(model.R / model.g); }
 

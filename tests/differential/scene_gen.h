@@ -8,6 +8,7 @@
 
 #include <rapidcheck.h>
 
+#include <cstdint>
 #include <iosfwd>
 #include <string>
 
@@ -26,6 +27,11 @@ struct RandomScene {
 // pellets and limiters, no forcing, no friction, the first option of a list), so a failing
 // scene shrinks to a small one.
 rc::Gen<RandomScene> gen_scene();
+
+// Scene i of a seed, from its own random stream (splitmix64 of the pair): the same scene whatever
+// order threads take the indices in, so a scan's failure is re-run alone by its index.
+// Thread-safe (RapidCheck's generation context is global: one scene is generated at a time).
+RandomScene scene_at(std::uint64_t seed, long i);
 
 // The scene's time scale sqrt(R/g), s: event-time tolerances and run lengths scale with it.
 double time_scale(const Model& model);

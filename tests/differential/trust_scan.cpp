@@ -20,7 +20,6 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
-#include <mutex>
 #include <string>
 #include <thread>
 #include <vector>
@@ -62,16 +61,6 @@ double agreement(const RunResult& a, const RunResult& b) {
   if (a.events.size() != b.events.size())
     return (a.events.size() > n ? a : b).events[n].t;
   return std::min(a.stats.t_reached, b.stats.t_reached);
-}
-
-RandomScene scene_at(std::uint64_t seed, long i) {
-  static std::mutex generating;
-  std::lock_guard lock(generating);
-  std::uint64_t z = seed * 0x9E3779B97F4A7C15ull + static_cast<std::uint64_t>(i);
-  z = (z ^ (z >> 30)) * 0xBF58476D1CE4E5B9ull;
-  z = (z ^ (z >> 27)) * 0x94D049BB133111EBull;
-  z ^= z >> 31;
-  return gen_scene()(rc::Random(z), rc::kNominalSize).value();
 }
 
 bool complete(const RunResult& r) { return r.stats.termination == Termination::completed; }
