@@ -26,8 +26,10 @@ class SceneRuns {
   // `trust_horizon`: run with the engine's trust check (a shadow run, SimOptions::check) and
   // compare only the events before the earliest stats.trusted_until of the runs compared: the
   // events a run vouches for must agree; an ill-conditioned scene's later ones need not.
-  explicit SceneRuns(RandomScene scene, bool trust_horizon = false)
-      : scene_(std::move(scene)), trust_horizon_(trust_horizon) {}
+  // `bounded`: the runs stop at a wall-clock deadline (a random scene may be costly); a known
+  // scene (the corpus) is run to its end however slow the build (a sanitizer's).
+  explicit SceneRuns(RandomScene scene, bool trust_horizon = false, bool bounded = true)
+      : scene_(std::move(scene)), trust_horizon_(trust_horizon), bounded_(bounded) {}
   const RandomScene& scene() const { return scene_; }
   bool trust_horizon() const { return trust_horizon_; }
   const RunResult& run(Method method, double rtol);
@@ -35,6 +37,7 @@ class SceneRuns {
  private:
   RandomScene scene_;
   bool trust_horizon_;
+  bool bounded_;
   std::map<std::pair<Method, double>, RunResult> runs_;
 };
 
