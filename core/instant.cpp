@@ -67,12 +67,28 @@ Support support_of(const Body& body, const InstantContacts& contacts,
   return {};
 }
 
-// A body that stops within round-off of a limiter's angle touches that limiter without having
-// crossed it: arriving (its limiter watch aimed there: it lies on the side it came from, −s) or
-// after a rebound too small to leave it (on the side it moved into, s).
-void touch_where_stopped(const Model& model, const EventTolerances& tol,
-                         const MotionInterval& interval, int b, const Vec& y,
-                         std::vector<LimiterContact>& contacts) {
+// Whether another pellet the limiter acts on touches `pellet` on the limiter's `side`: it then
+// lies between them.
+bool pellet_between(const Model& model, const EventTolerances& tol,
+                    const std::vector<Neighbours>& neighbours, int pellet, int limiter, int side,
+                    const Vec& y) {
+  for (const Neighbours& nb : neighbours) {
+    const int other = side < 0 ? nb.ahead : nb.behind;
+    if ((side < 0 ? nb.behind : nb.ahead) != pellet || !model.limiters[limiter].acts_on(other))
+      continue;
+    const double gap = y[phi_index(nb.ahead)] - y[phi_index(nb.behind)] + nb.offset;
+    if (gap <= tol.contact_distance * (1.0 + std::abs(y[phi_index(pellet)]))) return true;
+  }
+  return false;
+}
+
+// A sliding body within round-off of a limiter's angle touches that limiter without having
+// crossed it: stopping as it arrives (its limiter watch aimed there: it lies on the side it came
+// from, −s), or leaving it (a rebound too small to leave it yet: on the side it moves into, s);
+// unless another pellet lies between. A cascade at this instant must find it there.
+void touch_on_angle(const Model& model, const EventTolerances& tol, const MotionInterval& interval,
+                    int b, const std::vector<Neighbours>& neighbours, const Vec& y,
+                    std::vector<LimiterContact>& contacts) {
   const Body& body = interval.bodies()[b];
   const double phi = y[phi_index(body.leader())];
   const double near = tol.on_limiter * (1.0 + std::abs(phi));
@@ -84,7 +100,9 @@ void touch_where_stopped(const Model& model, const EventTolerances& tol,
     if (std::abs(wrap_angle(phi - model.limiters[l].angle)) > near) continue;
     const int side = l == arriving ? -body.s : body.s;
     const int nearest = side > 0 ? body.members.front() : body.members.back();
-    if (model.limiters[l].acts_on(nearest)) contacts.push_back({nearest, l, side});
+    if (model.limiters[l].acts_on(nearest) &&
+        !pellet_between(model, tol, neighbours, nearest, l, side, y))
+      contacts.push_back({nearest, l, side});
   }
 }
 
@@ -179,7 +197,6 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
           y[dphi_index(i)] = 0.0;
           c.reversed[i] = true;
         }
-        touch_where_stopped(model, tol, interval, w.body, y, c.limiters);
         break;
       case WatchKind::gap: {
         // Onto one place: the pellet at a limiter stays put, else both meet halfway.
@@ -219,11 +236,15 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
       }
     }
   }
-  // Standing contacts: bodies resting on limiters, and pellets moving together.
-  for (const Body& body : bodies) {
+  // Standing contacts: bodies resting on limiters, sliding ones on a limiter's angle, and pellets
+  // moving together.
+  for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
+    const Body& body = bodies[b];
     if (body.mode == Mode::resting) {
       const int nearest = body.side > 0 ? body.members.front() : body.members.back();
       c.limiters.push_back({nearest, body.limiter, body.side});
+    } else if (body.mode == Mode::sliding) {
+      touch_on_angle(model, tol, interval, b, neighbours, y, c.limiters);
     }
   }
   std::vector<PairContact> apart;

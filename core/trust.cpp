@@ -114,15 +114,13 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
       r.trusted_until = std::min({r.trusted_until, t, shadow.events[k].t});
       return finish(model, run, shadow, r);
     }
-    // A run at rtol does not resolve event times finer than a tenth of what its tolerance asks
-    // (rtol over the time scale and the time run): where the shadow agrees closer, by luck or by
-    // errors both runs share, the estimate is that resolution, not the closer agreement. From a
-    // summed chatter on, the summation's own error (chatter_time²/T0, docs/MODEL.md) stands too:
-    // the shadow sums the same way and cannot see it.
+    // Errors the run and its shadow share, the shadow cannot see: the round-off of event times
+    // (a thousand ulps of the time scale and the time run), and from a summed chatter on, the
+    // summation's own error (chatter_time²/T0, docs/MODEL.md: both sum the same way).
     summed = summed || run.events[k].kind == EventKind::chatter;
-    const double chatter = tol.chatter_time * tol.chatter_time / time_scale;
-    r.event_time_error = std::max({r.event_time_error, dt,
-                                   0.1 * run.stats.rtol * (time_scale + t), summed ? chatter : 0.0});
+    const double round_off = 1e3 * std::numeric_limits<double>::epsilon() * (time_scale + t);
+    const double chatter = summed ? tol.chatter_time * tol.chatter_time / time_scale : 0.0;
+    r.event_time_error = std::max({r.event_time_error, dt, round_off, chatter});
   }
   // The first event one run lists and the other does not (or lists otherwise).
   if (k < n && !listed_alike(run.events[k], shadow.events[k])) {
