@@ -84,7 +84,11 @@ SimOptions check_options(const SimOptions& run) {
   SimOptions o = run;
   o.rtol = std::max(run.rtol / 10.0, kSmallestRtol);
   o.atol = std::max(run.atol / 10.0, kSmallestAtol);
+  // Another method errs independently where the same one at a tighter tolerance may take the
+  // same steps: DOP853 checks DOPRI5 always (it is the cheaper at the tighter tolerance), and
+  // DOPRI5 checks DOP853 above rtol 1e-8 (where it costs no more).
   if (run.method == Method::dopri5) o.method = Method::dop853;
+  if (run.method == Method::dop853 && run.rtol > 1e-8) o.method = Method::dopri5;
   o.record.clear();
   o.check = false;
   return o;

@@ -41,11 +41,12 @@ struct Args {
   int jobs = 1;
   bool shrink = false;  // shrink the first scene of each signature (needs --out)
   bool trust = false;   // compare only what the runs vouch for (before stats.trusted_until)
+  bool dump = false;    // write every scene to --out, failing or not (to look at one by index)
 };
 
 [[noreturn]] void usage() {
   std::cerr << "usage: differential_scan --count N [--seed S] [--first I] [--out DIR [--shrink]] "
-               "[--jobs J] [--trust]\n";
+               "[--jobs J] [--trust] [--dump]\n";
   std::exit(2);
 }
 
@@ -53,8 +54,8 @@ Args parse(int argc, char** argv) {
   Args a;
   for (int k = 1; k < argc; ++k) {
     const std::string key = argv[k];
-    if (key == "--shrink" || key == "--trust") {
-      (key == "--shrink" ? a.shrink : a.trust) = true;
+    if (key == "--shrink" || key == "--trust" || key == "--dump") {
+      (key == "--shrink" ? a.shrink : key == "--trust" ? a.trust : a.dump) = true;
       continue;
     }
     if (k + 1 >= argc) usage();
@@ -184,7 +185,7 @@ int main(int argc, char** argv) {
       outcomes[k] = check_scene(scene, args.trust);
       const long d = ++done;
       std::lock_guard lock(io);
-      if (!outcomes[k].findings.empty() && !args.out.empty()) {
+      if ((!outcomes[k].findings.empty() || args.dump) && !args.out.empty()) {
         for (const Finding& f : outcomes[k].findings)
           jsonl << nlohmann::json{{"scene", i},
                                   {"signature", f.signature},
