@@ -67,15 +67,20 @@ Support support_of(const Body& body, const InstantContacts& contacts,
   return {};
 }
 
-// Whether another pellet the limiter acts on touches `pellet` on the limiter's `side`: it then
-// lies between them.
+// Whether another pellet the limiter acts on touches `pellet` on the limiter's `side`, and not
+// from the limiter's other side (its contact says so): it then lies between them.
 bool pellet_between(const Model& model, const EventTolerances& tol,
-                    const std::vector<Neighbours>& neighbours, int pellet, int limiter, int side,
+                    const std::vector<Neighbours>& neighbours,
+                    const std::vector<LimiterContact>& contacts, int pellet, int limiter, int side,
                     const Vec& y) {
   for (const Neighbours& nb : neighbours) {
     const int other = side < 0 ? nb.ahead : nb.behind;
     if ((side < 0 ? nb.behind : nb.ahead) != pellet || !model.limiters[limiter].acts_on(other))
       continue;
+    const bool across = std::any_of(contacts.begin(), contacts.end(), [&](const LimiterContact& c) {
+      return c.pellet == other && c.limiter == limiter && c.side == -side;
+    });
+    if (across) continue;
     const double gap = y[phi_index(nb.ahead)] - y[phi_index(nb.behind)] + nb.offset;
     if (gap <= tol.contact_distance * (1.0 + std::abs(y[phi_index(pellet)]))) return true;
   }
@@ -101,7 +106,7 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const Motion
     const int side = l == arriving ? -body.s : body.s;
     const int nearest = side > 0 ? body.members.front() : body.members.back();
     if (model.limiters[l].acts_on(nearest) &&
-        !pellet_between(model, tol, neighbours, nearest, l, side, y))
+        !pellet_between(model, tol, neighbours, contacts, nearest, l, side, y))
       contacts.push_back({nearest, l, side});
   }
 }
@@ -238,14 +243,15 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   }
   // Standing contacts: bodies resting on limiters, sliding ones on a limiter's angle, and pellets
   // moving together.
-  for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
-    const Body& body = bodies[b];
+  for (const Body& body : bodies) {
     if (body.mode == Mode::resting) {
       const int nearest = body.side > 0 ? body.members.front() : body.members.back();
       c.limiters.push_back({nearest, body.limiter, body.side});
-    } else if (body.mode == Mode::sliding) {
-      touch_on_angle(model, tol, interval, b, neighbours, y, c.limiters);
     }
+  }
+  for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
+    if (bodies[b].mode == Mode::sliding)
+      touch_on_angle(model, tol, interval, b, neighbours, y, c.limiters);
   }
   std::vector<PairContact> apart;
   for (const Neighbours& nb : neighbours) {
