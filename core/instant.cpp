@@ -102,7 +102,7 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const Motion
     if (w.kind == WatchKind::limiter && w.body == b && std::abs(w.target - phi) <= near)
       arriving = w.limiter;
   for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
-    if (std::abs(wrap_angle(phi - model.limiters[l].angle)) > near) continue;
+    if (!on_limiter_angle(model.limiters[l].angle, phi, near)) continue;
     const int side = l == arriving ? -body.s : body.s;
     const int nearest = side > 0 ? body.members.front() : body.members.back();
     if (model.limiters[l].acts_on(nearest) &&

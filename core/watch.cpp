@@ -152,6 +152,25 @@ void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, doub
   w.start = rate != 0.0 ? rate : 0.5 * accel;
 }
 
+namespace {
+
+// The angles theta + 2πk about phi, each computed the same way as the angle an impact snaps to,
+// so a pellet that sits on the limiter never finds it again a hair ahead.
+template <class F>
+void for_each_limiter_angle(double theta, double phi, F f) {
+  const double n = std::floor((phi - theta) / kTwoPi);
+  for (double k = n - 1.0; k <= n + 2.0; k += 1.0) f(theta + kTwoPi * k);
+}
+
+}  // namespace
+
+bool on_limiter_angle(double theta, double phi, double near) {
+  bool on = false;
+  // c − phi is exact for close values (Sterbenz), so this is the one test every caller shares.
+  for_each_limiter_angle(theta, phi, [&](double c) { on = on || std::abs(c - phi) <= near; });
+  return on;
+}
+
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,
                   double phi, int s, double on_limiter, int& limiter, double& target) {
   // A limiter the body sits on, within round-off, is behind it: any impact on it was resolved at
@@ -163,16 +182,12 @@ bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body
     bool acts = false;
     for (int i : body.members) acts = acts || model.limiters[l].acts_on(i);
     if (!acts) continue;
-    const double theta = model.limiters[l].angle;
-    // Candidates theta + 2πk near phi, each computed the same way as the angle an impact snaps
-    // to, so a pellet that sits on the limiter never finds it again a hair ahead.
-    const double n = std::floor((phi - theta) / kTwoPi);
     double x = s > 0 ? std::numeric_limits<double>::infinity()
                      : -std::numeric_limits<double>::infinity();
-    for (double k = n - 1.0; k <= n + 2.0; k += 1.0) {
-      const double c = theta + kTwoPi * k;
-      if (s > 0 ? (c > phi + near && c < x) : (c < phi - near && c > x)) x = c;
-    }
+    for_each_limiter_angle(model.limiters[l].angle, phi, [&](double c) {
+      const bool ahead = s > 0 ? c > phi : c < phi;
+      if (ahead && !(std::abs(c - phi) <= near) && (s > 0 ? c < x : c > x)) x = c;
+    });
     if (!found || (s > 0 ? x < target : x > target)) {
       found = true;
       limiter = l;

@@ -65,6 +65,10 @@ TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Bod
 void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, double t0,
              const Vec& y0, double rate, double accel);
 
+// Whether phi lies within near of the limiter angle theta (mod 2π): the test next_limiter
+// excludes a limiter by, so a body either touches a limiter or watches it, never neither.
+bool on_limiter_angle(double theta, double phi, double near);
+
 // The next armed limiter angle ahead of phi in direction s that acts on any of the body's
 // members, farther than on_limiter·(1 + |phi|); returns false if there is none.
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,
