@@ -97,13 +97,14 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const Motion
   const Body& body = interval.bodies()[b];
   const double phi = y[phi_index(body.leader())];
   const double near = tol.on_limiter * (1.0 + std::abs(phi));
-  int arriving = -1;
+  // Arriving at the angle it watched, it arrives at every limiter there (two at one angle).
+  bool arriving = false;
   for (const Watch& w : interval.watches())
-    if (w.kind == WatchKind::limiter && w.body == b && std::abs(w.target - phi) <= near)
-      arriving = w.limiter;
+    arriving = arriving ||
+               (w.kind == WatchKind::limiter && w.body == b && std::abs(w.target - phi) <= near);
   for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
     if (!on_limiter_angle(model.limiters[l].angle, phi, near)) continue;
-    const int side = l == arriving ? -body.s : body.s;
+    const int side = arriving ? -body.s : body.s;
     const int nearest = side > 0 ? body.members.front() : body.members.back();
     if (model.limiters[l].acts_on(nearest) &&
         !pellet_between(model, tol, neighbours, contacts, nearest, l, side, y))

@@ -87,7 +87,7 @@ void Radau5::reserve(int n) {
   if (n == n_) return;
   n_ = n;
   for (Vec* v : {&y_, &f_, &y_new_, &y_prev_, &scal_, &z1_, &z2_, &z3_, &w1_, &w2_, &w3_, &tmp_, &ftmp_, &f2_,
-                 &err_, &cont1_, &cont2_, &cont3_, &dfdt_}) {
+                 &err_, &cont1_, &cont2_, &cont3_, &start_fix_, &dfdt_}) {
     v->resize(n);
   }
   jac_.resize(n, n);
@@ -299,6 +299,19 @@ void Radau5::accept(double h, double t_new) {
     cont2_[i] = (ak - cont1_[i]) / kC1m1;
     cont3_[i] = cont2_[i] - acont3;
   }
+  // The polynomial's slope at the step's start errs by O(h³) (its interior order is the stage
+  // order, 3): a watch deflated at an event, (g(t) − g(t0))/(t − t0), would read that error in
+  // place of g'(t0) and see a turn that is not there (a pellet starting from rest with a
+  // round-off acceleration). Adding θ(1 − θ)⁸ times the slope's error takes the slope to
+  // f(t0, y0), the right-hand side's own, keeps both ends, and fades within the first tenth of
+  // the step: it moves no value by more than 4 % of the slope's error times h, less than the
+  // polynomial's own error.
+  for (int i = 0; i < n_; ++i) {
+    const double r = cont2_[i] - kC1 * cont3_[i];  // R(−1), R(s) = cont2 + (s − c1 + 1)·cont3
+    const double q = cont1_[i] - kC2 * r;            // Q(−1), Q(s) = cont1 + (s − c2 + 1)·R(s)
+    const double slope = q - (r - kC2 * cont3_[i]);  // dP/ds at s = −1, P(s) = y + s·Q(s)
+    start_fix_[i] = (t_new - t_) * f_[i] - slope;
+  }
   y_prev_ = y_;
   y_.swap(y_new_);
   t_prev_ = t_;
@@ -442,8 +455,12 @@ void Radau5::dense(double t, Vec& out) const {
   }
   out.resize(n_);
   const double s = (t - t_) / h;
+  const double theta = s + 1.0;
+  const double u = (1.0 - theta) * (1.0 - theta), u2 = u * u;
+  const double bump = theta * u2 * u2;  // θ(1 − θ)⁸
   for (int i = 0; i < n_; ++i) {
-    out[i] = y_[i] + s * (cont1_[i] + (s - kC2m1) * (cont2_[i] + (s - kC1m1) * cont3_[i]));
+    out[i] = y_[i] + s * (cont1_[i] + (s - kC2m1) * (cont2_[i] + (s - kC1m1) * cont3_[i])) +
+             bump * start_fix_[i];
   }
 }
 

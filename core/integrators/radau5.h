@@ -93,6 +93,7 @@ class Radau5 final : public Stepper {
   Vec w1_, w2_, w3_;  // transformed increments W = T⁻¹Z (F1..F3 in RADAU5)
   Vec tmp_, ftmp_, f2_, err_;
   Vec cont1_, cont2_, cont3_;  // collocation polynomial of the last step about y_ (CONTR5)
+  Vec start_fix_;              // h·f(y_prev) − the polynomial's slope there (dense())
   Mat jac_;
   Vec dfdt_;
   Mat e1_;

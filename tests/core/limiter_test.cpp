@@ -95,7 +95,7 @@ TEST(Limiter, AnOvershootInsideOneStepIsFound) {
       ASSERT_FALSE(impacts.empty()) << method_name(method) << " rtol " << rtol;
       EXPECT_EQ(impacts[0]->phi, theta);
       for (const Branch& b : run.tracks[0].branches)
-        for (const Sample& s : b.samples) ASSERT_LE(s.phi, theta) << method_name(method);
+        for (const Sample& s : b.samples) ASSERT_LE(s.phi, theta) << method_name(method) << " rtol " << rtol << " t " << s.t << " impact t " << impacts[0]->t;
     }
   }
 }
