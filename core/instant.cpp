@@ -174,7 +174,13 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   c.reversed.assign(n, false);
   c.released.assign(n, false);
   c.pulled.assign(n, 0);
+  // Pellets on a limiter's angle stay there when others meet them: those arriving at it, and
+  // bodies resting against one (moved halfway to meet a pellet the limiter does not stop, a
+  // resting pellet came off its limiter's angle and later struck the limiter from behind).
   std::vector<bool> at_limiter(n, false);
+  for (const Body& body : bodies)
+    if (body.mode == Mode::resting)
+      for (int i : body.members) at_limiter[i] = true;
   for (const Crossing& crossing : crossings) {
     const Watch& w = watches[crossing.watch];
     switch (w.kind) {
