@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numeric>
 
+#include "core/dynamics.h"
+
 namespace vibro {
 
 std::vector<Neighbours> circular_neighbours(const Vec& y, int n) {
@@ -83,6 +85,21 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
     const double up = std::max(a - capacity, 0.0), down = std::min(a + capacity, 0.0);
     return (c.limiter_side > 0 ? 0.0 : down) + (c.limiter_side < 0 ? 0.0 : up);
   };
+  // How fast the chain behind closes on the chain ahead, rad/s². Moving at one speed, friction
+  // and gravity per mass are the same for both: the forces per mass decide. At rest, what holds
+  // each decides; one at rest and one moving (parting from a pellet that a limiter stopped):
+  // each one's own acceleration.
+  auto relative_acceleration = [&](const Chain& b, const Chain& a, double phi) {
+    const double vb = b.P / b.M, va = a.P / a.M;
+    const bool rest_b = std::abs(vb) <= criteria.v_merge, rest_a = std::abs(va) <= criteria.v_merge;
+    if (!rest_b && !rest_a) return (b.F / b.M - a.F / a.M) / model.R;
+    auto own = [&](const Chain& c, double v, bool rest) {
+      return rest ? held(c, phi)
+                  : sliding_acceleration(model, c.F, c.M, std::cos(phi), std::sin(phi), v,
+                                         v > 0.0 ? 1 : -1);
+    };
+    return own(b, vb, rest_b) - own(a, va, rest_a);
+  };
   // Chains grow until nothing more joins: a pair's press depends on the chains behind and ahead.
   for (bool grew = true; grew;) {
     grew = false;
@@ -91,13 +108,8 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
       if (separated_by_limiter(model, limiter_contacts, armed, p)) continue;
       const Chain b = chain(p.behind, prev), a = chain(p.ahead, next);
       const double approach = b.P / b.M - a.P / a.M;
-      // The relative acceleration, rad/s². Moving at one speed, friction and gravity per mass
-      // are the same for both: the forces per mass decide. At rest, what holds each decides.
-      const bool at_rest = std::abs(b.P / b.M) <= criteria.v_merge &&
-                           std::abs(a.P / a.M) <= criteria.v_merge;
       const double phi = y[phi_index(p.behind)];
-      const double press =
-          at_rest ? held(b, phi) - held(a, phi) : (b.F / b.M - a.F / a.M) / model.R;
+      const double press = relative_acceleration(b, a, phi);
       // Parting at w and pressed back at p, they meet again after 2w/p, and at k_c·w after
       // that: the whole chatter lasts 2w/(p(1 − k_c)).
       const double chatter = 2.0 * std::abs(approach) / (press * (1.0 - model.k_c));

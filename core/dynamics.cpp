@@ -25,6 +25,14 @@ double body_free_acceleration(const Model& model, const Body& body, double t, do
          model.g / model.R * std::sin(phi);
 }
 
+double sliding_acceleration(const Model& model, double F, double M, double c, double sn,
+                            double dphi, int s) {
+  const double gR = model.g / model.R, mu = model.mu();
+  return model.friction == FrictionLaw::paper
+             ? F / (M * model.R) - s * mu * dphi * dphi - gR * (sn + s * mu * c)
+             : F / (M * model.R) - gR * sn - s * mu * std::abs(dphi * dphi + gR * c);
+}
+
 SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bodies)
     : model_(model), bodies_(bodies), mu_(model.mu()), gR_(model.g / model.R) {
   mass_.reserve(bodies.size());
@@ -58,8 +66,7 @@ void SegmentDynamics::rhs(double t, const Vec& y, Vec& dydt) const {
     if (!alone)
       for (int i : body.members) F += force(i);
     const double q = dphi * dphi + gR_ * c;  // normal force per unit mass, over R
-    const double acc = paper ? F / (mass_[b] * R) - s * mu_ * dphi * dphi - gR_ * (sn + s * mu_ * c)
-                             : F / (mass_[b] * R) - gR_ * sn - s * mu_ * std::abs(q);
+    const double acc = sliding_acceleration(model_, F, mass_[b], c, sn, dphi, s);
     const double n = R * (paper ? q : std::abs(q));  // g cos phi + R dphi², or its magnitude
     for (int i : body.members) {
       const double m = model_.pellets[i].m;

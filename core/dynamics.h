@@ -21,6 +21,12 @@ double body_mass(const Model& model, const Body& body);
 // Free acceleration of a body at rest at phi: forcing and gravity, no friction.
 double body_free_acceleration(const Model& model, const Body& body, double t, double phi);
 
+// Acceleration of a body of total force F (N) and mass M (kg) sliding at phi (its cosine and
+// sine given) with speed dphi in direction s: forcing, gravity and kinetic friction under the
+// model's law.
+double sliding_acceleration(const Model& model, double F, double M, double cos_phi,
+                            double sin_phi, double dphi, int s);
+
 class SegmentDynamics final : public OdeSystem {
  public:
   SegmentDynamics(const Model& model, const std::vector<Body>& bodies);
