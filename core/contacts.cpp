@@ -28,9 +28,9 @@ std::vector<Neighbours> circular_neighbours(const Vec& y, int n) {
 }
 
 void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact_distance,
-                   const std::vector<bool>& at_limiter, const std::vector<PairContact>& apart,
+                   std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
                    std::vector<PairContact>& pairs) {
-  for (std::size_t pass = 0; pass < neighbours.size(); ++pass) {
+  for (std::size_t pass = 0; pass <= neighbours.size(); ++pass) {
     bool changed = false;
     for (const Neighbours& nb : neighbours) {
       if (std::any_of(apart.begin(), apart.end(), [&](const PairContact& c) {
@@ -40,14 +40,21 @@ void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double con
       double& pb = y[phi_index(nb.behind)];
       double& pa = y[phi_index(nb.ahead)];
       const double gap = pa - pb + nb.offset;
-      if (gap > contact_distance * (1.0 + std::abs(pb))) continue;
       const bool listed = std::any_of(pairs.begin(), pairs.end(), [&](const PairContact& c) {
         return c.behind == nb.behind && c.ahead == nb.ahead;
       });
+      // A pair already in contact stays at one place, however far an earlier snap of this
+      // loop moved one of them (onto a pellet at a limiter).
+      if (!listed && gap > contact_distance * (1.0 + std::abs(pb))) continue;
       if (!listed) pairs.push_back({nb.behind, nb.ahead});
       if (gap == 0.0) continue;
-      if (at_limiter[nb.ahead]) pb = pa + nb.offset;
-      else pa = pb - nb.offset;
+      if (at_limiter[nb.ahead]) {
+        pb = pa + nb.offset;
+        at_limiter[nb.behind] = true;
+      } else {
+        pa = pb - nb.offset;
+        at_limiter[nb.ahead] = at_limiter[nb.behind];
+      }
       changed = true;
     }
     if (!changed) break;
