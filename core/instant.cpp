@@ -174,9 +174,10 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   c.reversed.assign(n, false);
   c.released.assign(n, false);
   c.pulled.assign(n, 0);
-  // Pellets on a limiter's angle stay there when others meet them: those arriving at it, and
-  // bodies resting against one (moved halfway to meet a pellet the limiter does not stop, a
-  // resting pellet came off its limiter's angle and later struck the limiter from behind).
+  // Pellets on a limiter's angle stay there when others meet them: those arriving at it, bodies
+  // resting against one (moved halfway to meet a pellet the limiter does not stop, a resting
+  // pellet came off its limiter's angle and later struck the limiter from behind), and sliding
+  // ones touching it (below).
   std::vector<bool> at_limiter(n, false);
   for (const Body& body : bodies)
     if (body.mode == Mode::resting)
@@ -260,6 +261,7 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
     if (bodies[b].mode == Mode::sliding)
       touch_on_angle(model, tol, interval, b, neighbours, y, c.limiters);
   }
+  for (const LimiterContact& lc : c.limiters) at_limiter[lc.pellet] = true;
   std::vector<PairContact> apart;
   for (const Neighbours& nb : neighbours) {
     const PairContact pair{nb.behind, nb.ahead};
