@@ -67,12 +67,13 @@ Support support_of(const Body& body, const InstantContacts& contacts,
   return {};
 }
 
-// Whether another pellet the limiter acts on touches `pellet` on the limiter's `side`, and not
-// from the limiter's other side (its contact says so): it then lies between them.
-bool pellet_between(const Model& model, const EventTolerances& tol,
-                    const std::vector<Neighbours>& neighbours,
-                    const std::vector<LimiterContact>& contacts, int pellet, int limiter, int side,
-                    const Vec& y) {
+// Another pellet the limiter acts on that touches `pellet` on the limiter's `side`, and not
+// from the limiter's other side (its contact or its angle says so): it lies between them. −1 if
+// none.
+int pellet_between(const Model& model, const EventTolerances& tol,
+                   const std::vector<Neighbours>& neighbours,
+                   const std::vector<LimiterContact>& contacts, int pellet, int limiter, int side,
+                   const Vec& y) {
   for (const Neighbours& nb : neighbours) {
     const int other = side < 0 ? nb.ahead : nb.behind;
     if ((side < 0 ? nb.behind : nb.ahead) != pellet || !model.limiters[limiter].acts_on(other))
@@ -81,10 +82,15 @@ bool pellet_between(const Model& model, const EventTolerances& tol,
       return c.pellet == other && c.limiter == limiter && c.side == -side;
     });
     if (across) continue;
+    // On the limiter's other side, however close, it is not between (a pellet reversing 6e-11
+    // rad short of a limiter does not shield the one resting on the limiter's far side).
+    const double phi = y[phi_index(other)];
+    if (side * wrap_angle(phi - model.limiters[limiter].angle) < -tol.on_limiter * (1.0 + std::abs(phi)))
+      continue;
     const double gap = y[phi_index(nb.ahead)] - y[phi_index(nb.behind)] + nb.offset;
-    if (gap <= tol.contact_distance * (1.0 + std::abs(y[phi_index(pellet)]))) return true;
+    if (gap <= tol.contact_distance * (1.0 + std::abs(y[phi_index(pellet)]))) return other;
   }
-  return false;
+  return -1;
 }
 
 // A sliding body within round-off of a limiter's angle touches that limiter without having
@@ -107,7 +113,7 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const Motion
     const int side = arriving ? -body.s : body.s;
     const int nearest = side > 0 ? body.members.front() : body.members.back();
     if (model.limiters[l].acts_on(nearest) &&
-        !pellet_between(model, tol, neighbours, contacts, nearest, l, side, y))
+        pellet_between(model, tol, neighbours, contacts, nearest, l, side, y) < 0)
       contacts.push_back({nearest, l, side});
   }
 }
@@ -182,7 +188,13 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   for (const Body& body : bodies)
     if (body.mode == Mode::resting)
       for (int i : body.members) at_limiter[i] = true;
-  for (const Crossing& crossing : crossings) {
+  // Arrivals at limiters first: a pellet that meets one arriving at the same instant meets it on
+  // the limiter's angle, not halfway.
+  std::vector<Crossing> ordered = crossings;
+  std::stable_partition(ordered.begin(), ordered.end(), [&](const Crossing& x) {
+    return watches[x.watch].kind == WatchKind::limiter;
+  });
+  for (const Crossing& crossing : ordered) {
     const Watch& w = watches[crossing.watch];
     switch (w.kind) {
       case WatchKind::limiter: {
@@ -261,6 +273,22 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
     if (bodies[b].mode == Mode::sliding)
       touch_on_angle(model, tol, interval, b, neighbours, y, c.limiters);
   }
+  // Two bodies arriving together at a limiter: the limiter meets the frontmost pellet, not the
+  // one behind (taken as touching it, that one put the limiter between itself and the body
+  // ahead).
+  std::vector<LimiterContact> fronts;
+  for (LimiterContact lc : c.limiters) {
+    for (int guard = 0; guard < n; ++guard) {
+      const int q = pellet_between(model, tol, neighbours, c.limiters, lc.pellet, lc.limiter, lc.side, y);
+      if (q < 0) break;
+      lc.pellet = q;
+    }
+    if (std::none_of(fronts.begin(), fronts.end(), [&](const LimiterContact& x) {
+          return x.pellet == lc.pellet && x.limiter == lc.limiter && x.side == lc.side;
+        }))
+      fronts.push_back(lc);
+  }
+  c.limiters = std::move(fronts);
   for (const LimiterContact& lc : c.limiters) at_limiter[lc.pellet] = true;
   std::vector<PairContact> apart;
   for (const Neighbours& nb : neighbours) {
