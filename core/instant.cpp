@@ -67,6 +67,19 @@ Support support_of(const Body& body, const InstantContacts& contacts,
   return {};
 }
 
+// The member of a body on a limiter's `side` nearest the limiter among those it acts on (the
+// others pass through it: a body chattering on a limiter through its far member slid through
+// the limiter when it turned on the angle, its near member taken as the one touching); −1 if
+// it acts on none.
+int held_member(const Model& model, const Body& body, int limiter, int side) {
+  const int n = static_cast<int>(body.members.size());
+  for (int k = 0; k < n; ++k) {
+    const int i = body.members[side > 0 ? k : n - 1 - k];
+    if (model.limiters[limiter].acts_on(i)) return i;
+  }
+  return -1;
+}
+
 // Another pellet the limiter acts on that touches `pellet` on the limiter's `side`, and not
 // from the limiter's other side (its contact or its angle says so): it lies between them. −1 if
 // none.
@@ -111,10 +124,9 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const Motion
   for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
     if (!on_limiter_angle(model.limiters[l].angle, phi, near)) continue;
     const int side = arriving ? -body.s : body.s;
-    const int nearest = side > 0 ? body.members.front() : body.members.back();
-    if (model.limiters[l].acts_on(nearest) &&
-        pellet_between(model, tol, neighbours, contacts, nearest, l, side, y) < 0)
-      contacts.push_back({nearest, l, side});
+    const int held = held_member(model, body, l, side);
+    if (held >= 0 && pellet_between(model, tol, neighbours, contacts, held, l, side, y) < 0)
+      contacts.push_back({held, l, side});
   }
 }
 
@@ -205,16 +217,8 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
           at_limiter[i] = true;
         }
         y[phi_index(w.pellet)] = w.target;
-        // The first member in the direction of motion that the limiter stops; members it does
-        // not act on pass through it.
-        const int n_members = static_cast<int>(b.members.size());
-        for (int k = 0; k < n_members; ++k) {
-          const int i = b.members[b.s > 0 ? n_members - 1 - k : k];
-          if (model.limiters[w.limiter].acts_on(i)) {
-            c.limiters.push_back({i, w.limiter, -b.s});
-            break;
-          }
-        }
+        const int held = held_member(model, b, w.limiter, -b.s);
+        if (held >= 0) c.limiters.push_back({held, w.limiter, -b.s});
         break;
       }
       case WatchKind::reversal:
@@ -265,8 +269,8 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   // moving together.
   for (const Body& body : bodies) {
     if (body.mode == Mode::resting) {
-      const int nearest = body.side > 0 ? body.members.front() : body.members.back();
-      c.limiters.push_back({nearest, body.limiter, body.side});
+      const int held = held_member(model, body, body.limiter, body.side);
+      if (held >= 0) c.limiters.push_back({held, body.limiter, body.side});
     }
   }
   for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
