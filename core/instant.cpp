@@ -299,7 +299,22 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
     const PairContact pair{nb.behind, nb.ahead};
     if (separated_by_limiter(model, c.limiters, armed, pair)) apart.push_back(pair);
   }
+  const Vec unsnapped = y;
   snap_touching(y, neighbours, tol.contact_distance, at_limiter, apart, c.pairs);
+  // A pellet snapped onto a limiter's angle (onto a pellet there that the limiter does not
+  // stop) touches the limiter from the side it came from: without the contact, a cascade at
+  // this instant drove it through the limiter.
+  for (int i = 0; i < n; ++i) {
+    const double near = tol.on_limiter * (1.0 + std::abs(y[phi_index(i)]));
+    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
+      const double theta = model.limiters[l].angle;
+      if (!armed[l] || !model.limiters[l].acts_on(i) || !on_limiter_angle(theta, y[phi_index(i)], near) ||
+          on_limiter_angle(theta, unsnapped[phi_index(i)], near))
+        continue;
+      const int side = wrap_angle(unsnapped[phi_index(i)] - theta) > 0.0 ? 1 : -1;
+      c.limiters.push_back({i, l, side});
+    }
+  }
   for (const Body& body : bodies) {
     for (int k = 0; k + 1 < static_cast<int>(body.members.size()); ++k) {
       const PairContact pair{body.members[k], body.members[k + 1]};
@@ -392,20 +407,23 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
                              {tol.v_merge, tol.chatter_time});
 
   for (Body& body : out.bodies) {
-    // A merge is plastic: the body moves with its momentum's speed.
+    const int L = body.leader();
+    const double phi = y[phi_index(L)];
+    const double a_free = body_free_acceleration(model, body, t, phi);
+    Support support = support_of(body, contacts, armed);
+
+    // A merge is plastic: the body moves with its momentum's speed, unless that drives it into a
+    // limiter holding one of its members, which takes that momentum (a pellet parting from one its
+    // limiter had just stopped, joined to it by their quick chatter, dragged it through).
     double P = 0.0, M = 0.0;
     for (int i : body.members) {
       P += model.pellets[i].m * y[dphi_index(i)];
       M += model.pellets[i].m;
     }
     double speed = P / M;
+    if (support.limiter >= 0 && speed * support.side < 0.0) speed = 0.0;
     for (int i : body.members)
       out.kinetic_change += kinetic(model, i, speed) - kinetic(model, i, y[dphi_index(i)]);
-
-    const int L = body.leader();
-    const double phi = y[phi_index(L)];
-    const double a_free = body_free_acceleration(model, body, t, phi);
-    Support support = support_of(body, contacts, armed);
 
     // Phase 4: chatter.
     const int struck = struck_limiter_of[L];
