@@ -80,7 +80,8 @@ class Simulation {
   std::unique_ptr<Stepper> stepper_;
   std::vector<double> times_;  // the samples of each step's dense output: times and states
   std::vector<Vec> states_;
-  Vec scratch_;  // states and rates while polishing a root
+  Vec scratch_;    // states and rates while polishing a root
+  Vec unsnapped_;  // the state before an instant's snap
   std::vector<Event> events_;
   Stats stats_;
   double max_fi_residual_ = 0.0;
@@ -237,7 +238,9 @@ RunResult Simulation::run() {
            "events do not advance in time (an unresolved Zeno sequence)");
       break;
     }
+    unsnapped_ = y_;
     const InstantContacts contacts = snap(model_, tol_, *interval_, found, neighbours_, armed_, y_);
+    energy_.add_snap(unsnapped_, y_);
     bodies = instant(t, interval_->bodies(), contacts);
     if (!stopped_) over_budget(t);
   }
