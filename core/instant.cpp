@@ -107,9 +107,11 @@ int pellet_between(const Model& model, const EventTolerances& tol,
 }
 
 // A sliding body within round-off of a limiter's angle touches that limiter without having
-// crossed it: stopping as it arrives (its limiter watch aimed there: it lies on the side it came
-// from, −s), or leaving it (a rebound too small to leave it yet: on the side it moves into, s);
-// unless another pellet lies between. A cascade at this instant must find it there.
+// crossed it, on the side round-off left it; exactly on the angle, stopping as it arrives (its
+// limiter watch aimed there: it lies on the side it came from, −s) or leaving it (a rebound too
+// small to leave it yet: on the side it moves into, s); unless another pellet lies between. A
+// cascade at this instant must find it there. (A body snapped 1.5e-14 rad onto the angle while
+// moving into the limiter was taken as leaving it, on the far side, and slid through.)
 void touch_on_angle(const Model& model, const EventTolerances& tol, const MotionInterval& interval,
                     int b, const std::vector<Neighbours>& neighbours, const Vec& y,
                     std::vector<LimiterContact>& contacts) {
@@ -122,8 +124,9 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const Motion
     arriving = arriving ||
                (w.kind == WatchKind::limiter && w.body == b && std::abs(w.target - phi) <= near);
   for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
-    if (!on_limiter_angle(model.limiters[l].angle, phi, near)) continue;
-    const int side = arriving ? -body.s : body.s;
+    const double d = offset_from_limiter_angle(model.limiters[l].angle, phi);
+    if (!(std::abs(d) <= near)) continue;
+    const int side = d > 0.0 ? 1 : d < 0.0 ? -1 : arriving ? -body.s : body.s;
     const int held = held_member(model, body, l, side);
     if (held >= 0 && pellet_between(model, tol, neighbours, contacts, held, l, side, y) < 0)
       contacts.push_back({held, l, side});
