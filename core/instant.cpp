@@ -67,6 +67,32 @@ Support support_of(const Body& body, const InstantContacts& contacts,
   return {};
 }
 
+// The side of limiter l a pellet starting on its angle is on: away from where it moves, or
+// where its free acceleration pulls it from rest.
+int start_side(const Model& model, int i) {
+  const double v = model.pellets[i].dphi0;
+  const double a = free_acceleration(model, i, 0.0, model.pellets[i].phi0);
+  return v != 0.0 ? (v > 0.0 ? -1 : 1) : (a > 0.0 ? -1 : 1);
+}
+
+// The side of limiter l (+1 above its angle, −1 below) that pellet i, now at phi on one of the
+// limiter's angles θ + 2πk, lives on, or 0 if that is not fixed: a fixed limiter that acts on a
+// pellet is never passed, so the unwrapped angle stays in the turn between the limiter's angles
+// that it started in.
+int home_side(const Model& model, const EventTolerances& tol, int i, int l, double phi) {
+  const Limiter& lim = model.limiters[l];
+  if (lim.mobile || !lim.acts_on(i)) return 0;
+  const double phi0 = model.pellets[i].phi0;
+  const double turns0 = (phi0 - lim.angle) / kTwoPi;
+  double below = std::floor(turns0);  // the index k of the angle below the start
+  if (std::abs(wrap_angle(phi0 - lim.angle)) <= tol.start_on_limiter * (1.0 + std::abs(phi0))) {
+    const double on = std::round(turns0);
+    below = start_side(model, i) > 0 ? on : on - 1.0;
+  }
+  const double k = std::round((phi - lim.angle) / kTwoPi);
+  return k == below ? 1 : k == below + 1.0 ? -1 : 0;
+}
+
 // The member of a body on a limiter's `side` nearest the limiter among those it acts on (the
 // others pass through it: a body chattering on a limiter through its far member slid through
 // the limiter when it turned on the angle, its near member taken as the one touching); −1 if
@@ -107,11 +133,12 @@ int pellet_between(const Model& model, const EventTolerances& tol,
 }
 
 // A sliding body within round-off of a limiter's angle touches that limiter without having
-// crossed it, on the side round-off left it; exactly on the angle, stopping as it arrives (its
+// crossed it: on the side a member that the limiter never lets pass lives on (a body snapped
+// onto the angle while sliding into the limiter was taken as leaving it, on the far side, and
+// slid through; round-off puts a pellet on either side); otherwise stopping as it arrives (its
 // limiter watch aimed there: it lies on the side it came from, −s) or leaving it (a rebound too
 // small to leave it yet: on the side it moves into, s); unless another pellet lies between. A
-// cascade at this instant must find it there. (A body snapped 1.5e-14 rad onto the angle while
-// moving into the limiter was taken as leaving it, on the far side, and slid through.)
+// cascade at this instant must find it there.
 void touch_on_angle(const Model& model, const EventTolerances& tol, const MotionInterval& interval,
                     int b, const std::vector<Neighbours>& neighbours, const Vec& y,
                     std::vector<LimiterContact>& contacts) {
@@ -124,9 +151,14 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const Motion
     arriving = arriving ||
                (w.kind == WatchKind::limiter && w.body == b && std::abs(w.target - phi) <= near);
   for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
-    const double d = offset_from_limiter_angle(model.limiters[l].angle, phi);
-    if (!(std::abs(d) <= near)) continue;
-    const int side = d > 0.0 ? 1 : d < 0.0 ? -1 : arriving ? -body.s : body.s;
+    if (!on_limiter_angle(model.limiters[l].angle, phi, near)) continue;
+    int side = arriving ? -body.s : body.s;
+    for (int i : body.members) {
+      if (const int home = home_side(model, tol, i, l, phi); home != 0) {
+        side = home;
+        break;
+      }
+    }
     const int held = held_member(model, body, l, side);
     if (held >= 0 && pellet_between(model, tol, neighbours, contacts, held, l, side, y) < 0)
       contacts.push_back({held, l, side});
@@ -351,10 +383,7 @@ InstantContacts initial_contacts(const Model& model, const EventTolerances& tol,
       if (!model.limiters[l].acts_on(i) || std::abs(d) > tol.start_on_limiter * (1.0 + std::abs(phi)))
         continue;
       y[phi_index(i)] = phi - d;
-      const double v = y[dphi_index(i)];
-      const double a = free_acceleration(model, i, 0.0, phi);
-      const int side = v != 0.0 ? (v > 0.0 ? -1 : 1) : (a > 0.0 ? -1 : 1);
-      c.limiters.push_back({i, l, side});
+      c.limiters.push_back({i, l, start_side(model, i)});
     }
   }
   return c;

@@ -164,17 +164,11 @@ void for_each_limiter_angle(double theta, double phi, F f) {
 
 }  // namespace
 
-double offset_from_limiter_angle(double theta, double phi) {
-  double offset = std::numeric_limits<double>::infinity();
-  // phi − c is exact for close values (Sterbenz), so every caller sees the same offset.
-  for_each_limiter_angle(theta, phi, [&](double c) {
-    if (std::abs(phi - c) < std::abs(offset)) offset = phi - c;
-  });
-  return offset;
-}
-
 bool on_limiter_angle(double theta, double phi, double near) {
-  return std::abs(offset_from_limiter_angle(theta, phi)) <= near;
+  bool on = false;
+  // c − phi is exact for close values (Sterbenz), so this is the one test every caller shares.
+  for_each_limiter_angle(theta, phi, [&](double c) { on = on || std::abs(c - phi) <= near; });
+  return on;
 }
 
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,

@@ -65,8 +65,6 @@ TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Bod
 void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, double t0,
              const Vec& y0, double rate, double accel);
 
-// phi minus the nearest of the angles theta + 2πk, computed as impacts snap to them.
-double offset_from_limiter_angle(double theta, double phi);
 // Whether phi lies within near of the limiter angle theta (mod 2π): the test next_limiter
 // excludes a limiter by, so a body either touches a limiter or watches it, never neither.
 bool on_limiter_angle(double theta, double phi, double near);
