@@ -229,12 +229,21 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   c.pulled.assign(n, 0);
   // Pellets on a limiter's angle stay there when others meet them: those arriving at it, bodies
   // resting against one (moved halfway to meet a pellet the limiter does not stop, a resting
-  // pellet came off its limiter's angle and later struck the limiter from behind), and sliding
-  // ones touching it (below).
+  // pellet came off its limiter's angle and later struck the limiter from behind), sliding ones on
+  // its angle, and those found touching it (below).
   std::vector<bool> at_limiter(n, false);
   for (const Body& body : bodies)
     if (body.mode == Mode::resting)
       for (int i : body.members) at_limiter[i] = true;
+  // And pellets on the angle of a limiter that holds them, sliding away from it after a stop
+  // (moved halfway to meet a pellet that overshot onto it, one went 9e-14 rad past its limiter).
+  for (int i = 0; i < n; ++i) {
+    const double phi = y[phi_index(i)];
+    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l)
+      if (armed[l] && model.limiters[l].acts_on(i) &&
+          on_limiter_angle(model.limiters[l].angle, phi, tol.on_limiter * (1.0 + std::abs(phi))))
+        at_limiter[i] = true;
+  }
   // Arrivals at limiters first: a pellet that meets one arriving at the same instant meets it on
   // the limiter's angle, not halfway.
   std::vector<Crossing> ordered = crossings;
