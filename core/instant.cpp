@@ -244,6 +244,11 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
           on_limiter_angle(model.limiters[l].angle, phi, tol.on_limiter * (1.0 + std::abs(phi))))
         at_limiter[i] = true;
   }
+  // A body's members lie at one place: one on a limiter's angle holds them all there (a member the
+  // limiter does not stop was moved halfway to meet a pellet, taking the body off the angle).
+  for (const Body& body : bodies)
+    if (std::any_of(body.members.begin(), body.members.end(), [&](int i) { return at_limiter[i]; }))
+      for (int i : body.members) at_limiter[i] = true;
   // Arrivals at limiters first: a pellet that meets one arriving at the same instant meets it on
   // the limiter's angle, not halfway.
   std::vector<Crossing> ordered = crossings;

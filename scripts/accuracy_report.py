@@ -310,6 +310,7 @@ Together they found, and this issue fixed, with each scene kept in a regression 
 | a pellet snapped onto a limiter's angle through one the limiter does not stop, then driven through by a cascade | it touches the limiter from the side it came from |
 | a merge's momentum drove a body into the limiter holding one member, and through it | the limiter takes that momentum |
 | a body snapped onto a limiter's angle while sliding into it, taken as leaving it on the far side | a body on a limiter's angle touches it on the side its pellets live on (a fixed limiter that acts on a pellet is never passed: its unwrapped angle says which) |
+| a pellet on its limiter's angle (sliding off it, or a body's member the limiter does not stop) moved halfway past it by a meeting | pellets on the angle of a limiter that holds them, and their bodies, stay put |
 | an energy defect of 4e-7 after 10⁴ collisions, the same under every method | the balance books the energy that snapping touching pellets (within 1e-10 rad) moves |
 
 What remains: a body of several pellets chattering on a limiter is not summed as a lone pellet's
