@@ -67,6 +67,36 @@ Support support_of(const Body& body, const InstantContacts& contacts,
   return {};
 }
 
+// Whether pellet i at phi lies on the angle of limiter l, armed and acting on it.
+bool held_on_angle(const Model& model, const EventTolerances& tol, const std::vector<bool>& armed,
+                   int i, int l, double phi) {
+  return armed[l] && model.limiters[l].acts_on(i) &&
+         on_limiter_angle(model.limiters[l].angle, phi, tol.on_limiter * (1.0 + std::abs(phi)));
+}
+
+// The pellets that stay put on a limiter's angle when others meet them at an instant: bodies
+// resting against one (moved halfway to meet a pellet the limiter does not stop, a resting pellet
+// came off its limiter's angle and later struck the limiter from behind), and pellets on the angle
+// of a limiter that holds them (one sliding away after a stop went 9e-14 rad past its limiter);
+// with each of them its body, whose members lie at one place (a member the limiter does not stop
+// was moved halfway, taking the body off the angle).
+std::vector<bool> on_limiters(const Model& model, const EventTolerances& tol,
+                              const std::vector<Body>& bodies, const std::vector<bool>& armed,
+                              const Vec& y) {
+  const int n = model.size();
+  std::vector<bool> on(n, false);
+  for (const Body& body : bodies)
+    if (body.mode == Mode::resting)
+      for (int i : body.members) on[i] = true;
+  for (int i = 0; i < n; ++i)
+    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l)
+      on[i] = on[i] || held_on_angle(model, tol, armed, i, l, y[phi_index(i)]);
+  for (const Body& body : bodies)
+    if (std::any_of(body.members.begin(), body.members.end(), [&](int i) { return on[i]; }))
+      for (int i : body.members) on[i] = true;
+  return on;
+}
+
 // The side of limiter l a pellet starting on its angle is on: away from where it moves, or
 // where its free acceleration pulls it from rest.
 int start_side(const Model& model, int i) {
@@ -227,28 +257,9 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   c.reversed.assign(n, false);
   c.released.assign(n, false);
   c.pulled.assign(n, 0);
-  // Pellets on a limiter's angle stay there when others meet them: those arriving at it, bodies
-  // resting against one (moved halfway to meet a pellet the limiter does not stop, a resting
-  // pellet came off its limiter's angle and later struck the limiter from behind), sliding ones on
-  // its angle, and those found touching it (below).
-  std::vector<bool> at_limiter(n, false);
-  for (const Body& body : bodies)
-    if (body.mode == Mode::resting)
-      for (int i : body.members) at_limiter[i] = true;
-  // And pellets on the angle of a limiter that holds them, sliding away from it after a stop
-  // (moved halfway to meet a pellet that overshot onto it, one went 9e-14 rad past its limiter).
-  for (int i = 0; i < n; ++i) {
-    const double phi = y[phi_index(i)];
-    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l)
-      if (armed[l] && model.limiters[l].acts_on(i) &&
-          on_limiter_angle(model.limiters[l].angle, phi, tol.on_limiter * (1.0 + std::abs(phi))))
-        at_limiter[i] = true;
-  }
-  // A body's members lie at one place: one on a limiter's angle holds them all there (a member the
-  // limiter does not stop was moved halfway to meet a pellet, taking the body off the angle).
-  for (const Body& body : bodies)
-    if (std::any_of(body.members.begin(), body.members.end(), [&](int i) { return at_limiter[i]; }))
-      for (int i : body.members) at_limiter[i] = true;
+  // Pellets on a limiter's angle stay there when others meet them; those found touching one
+  // below join them.
+  std::vector<bool> at_limiter = on_limiters(model, tol, bodies, armed, y);
   // Arrivals at limiters first: a pellet that meets one arriving at the same instant meets it on
   // the limiter's angle, not halfway.
   std::vector<Crossing> ordered = crossings;
@@ -354,13 +365,11 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   // stop) touches the limiter from the side it came from: without the contact, a cascade at
   // this instant drove it through the limiter.
   for (int i = 0; i < n; ++i) {
-    const double near = tol.on_limiter * (1.0 + std::abs(y[phi_index(i)]));
     for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
-      const double theta = model.limiters[l].angle;
-      if (!armed[l] || !model.limiters[l].acts_on(i) || !on_limiter_angle(theta, y[phi_index(i)], near) ||
-          on_limiter_angle(theta, unsnapped[phi_index(i)], near))
+      if (!held_on_angle(model, tol, armed, i, l, y[phi_index(i)]) ||
+          held_on_angle(model, tol, armed, i, l, unsnapped[phi_index(i)]))
         continue;
-      const int side = wrap_angle(unsnapped[phi_index(i)] - theta) > 0.0 ? 1 : -1;
+      const int side = wrap_angle(unsnapped[phi_index(i)] - model.limiters[l].angle) > 0.0 ? 1 : -1;
       c.limiters.push_back({i, l, side});
     }
   }

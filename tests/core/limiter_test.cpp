@@ -94,8 +94,10 @@ TEST(Limiter, AnOvershootInsideOneStepIsFound) {
       auto impacts = testing::events_of(run, EventKind::limiter);
       ASSERT_FALSE(impacts.empty()) << method_name(method) << " rtol " << rtol;
       EXPECT_EQ(impacts[0]->phi, theta);
+      // Never beyond the limiter, but for the round-off of the state at the impact's root (one
+      // ulp past it under clang -O1 with Radau IIA at rtol 1e-3).
       for (const Branch& b : run.tracks[0].branches)
-        for (const Sample& s : b.samples) ASSERT_LE(s.phi, theta) << method_name(method) << " rtol " << rtol << " t " << s.t << " impact t " << impacts[0]->t;
+        for (const Sample& s : b.samples) ASSERT_LE(s.phi, theta + 1e-15) << method_name(method) << " rtol " << rtol << " t " << s.t << " impact t " << impacts[0]->t;
     }
   }
 }
