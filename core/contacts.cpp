@@ -96,14 +96,14 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
   // and gravity per mass are the same for both: the forces per mass decide. At rest, what holds
   // each decides; one at rest and one moving (parting from a pellet that a limiter stopped):
   // each one's own acceleration.
+  const SlidingLaw law(model);
   auto relative_acceleration = [&](const Chain& b, const Chain& a, double phi) {
     const double vb = b.P / b.M, va = a.P / a.M;
     const bool rest_b = std::abs(vb) <= criteria.v_merge, rest_a = std::abs(va) <= criteria.v_merge;
     if (!rest_b && !rest_a) return (b.F / b.M - a.F / a.M) / model.R;
     auto own = [&](const Chain& c, double v, bool rest) {
       return rest ? held(c, phi)
-                  : sliding_acceleration(model, c.F, c.M, std::cos(phi), std::sin(phi), v,
-                                         v > 0.0 ? 1 : -1);
+                  : law.acceleration(c.F, c.M, std::cos(phi), std::sin(phi), v, v > 0.0 ? 1 : -1);
     };
     return own(b, vb, rest_b) - own(a, va, rest_a);
   };

@@ -25,16 +25,8 @@ double body_free_acceleration(const Model& model, const Body& body, double t, do
          model.g / model.R * std::sin(phi);
 }
 
-double sliding_acceleration(const Model& model, double F, double M, double c, double sn,
-                            double dphi, int s) {
-  const double gR = model.g / model.R, mu = model.mu();
-  return model.friction == FrictionLaw::paper
-             ? F / (M * model.R) - s * mu * dphi * dphi - gR * (sn + s * mu * c)
-             : F / (M * model.R) - gR * sn - s * mu * std::abs(dphi * dphi + gR * c);
-}
-
 SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bodies)
-    : model_(model), bodies_(bodies), mu_(model.mu()), gR_(model.g / model.R) {
+    : model_(model), bodies_(bodies), law_(model) {
   mass_.reserve(bodies.size());
   for (const Body& b : bodies) mass_.push_back(body_mass(model, b));
 }
@@ -65,15 +57,15 @@ void SegmentDynamics::rhs(double t, const Vec& y, Vec& dydt) const {
     double F = alone ? force(L) : 0.0;
     if (!alone)
       for (int i : body.members) F += force(i);
-    const double q = dphi * dphi + gR_ * c;  // normal force per unit mass, over R
-    const double acc = sliding_acceleration(model_, F, mass_[b], c, sn, dphi, s);
+    const double q = dphi * dphi + law_.gR * c;  // normal force per unit mass, over R
+    const double acc = law_.acceleration(F, mass_[b], c, sn, dphi, s);
     const double n = R * (paper ? q : std::abs(q));  // g cos phi + R dphi², or its magnitude
     for (int i : body.members) {
       const double m = model_.pellets[i].m;
       const double Fi = alone ? F : force(i);
       dydt[phi_index(i)] = y[dphi_index(i)];
       dydt[dphi_index(i)] = acc;
-      dydt[work_index(i)] = R * dphi * (Fi - m * s * mu_ * n);
+      dydt[work_index(i)] = R * dphi * (Fi - m * s * law_.mu * n);
     }
   }
 }
@@ -82,8 +74,8 @@ void SegmentDynamics::jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) con
   dfdy.setZero();
   dfdt.setZero();
   const double R = model_.R, g = model_.g;
-  const double gR = g / R;
-  const double mu = model_.mu();
+  const double gR = law_.gR;
+  const double mu = law_.mu;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
     if (body.mode != Mode::sliding) continue;

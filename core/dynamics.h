@@ -2,6 +2,7 @@
 // Every member of a body gets the body's acceleration, so members stay together exactly.
 #pragma once
 
+#include <cmath>
 #include <vector>
 
 #include "core/model.h"
@@ -21,11 +22,24 @@ double body_mass(const Model& model, const Body& body);
 // Free acceleration of a body at rest at phi: forcing and gravity, no friction.
 double body_free_acceleration(const Model& model, const Body& body, double t, double phi);
 
-// Acceleration of a body of total force F (N) and mass M (kg) sliding at phi (its cosine and
-// sine given) with speed dphi in direction s: forcing, gravity and kinetic friction under the
-// model's law.
-double sliding_acceleration(const Model& model, double F, double M, double cos_phi,
-                            double sin_phi, double dphi, int s);
+// The acceleration of a sliding body under the model's friction law, with the model's constants
+// computed once: the right-hand side calls it for every body at every evaluation.
+struct SlidingLaw {
+  explicit SlidingLaw(const Model& model)
+      : paper(model.friction == FrictionLaw::paper), R(model.R), gR(model.g / model.R),
+        mu(model.mu()) {}
+  // A body of total force F (N) and mass M (kg) at phi (its cosine and sine given), moving at
+  // dphi in direction s: forcing, gravity and kinetic friction.
+  double acceleration(double F, double M, double cos_phi, double sin_phi, double dphi,
+                      int s) const {
+    return paper ? F / (M * R) - s * mu * dphi * dphi - gR * (sin_phi + s * mu * cos_phi)
+                 : F / (M * R) - gR * sin_phi - s * mu * std::abs(dphi * dphi + gR * cos_phi);
+  }
+  bool paper;
+  double R;   // m
+  double gR;  // g / R, 1/s²
+  double mu;  // tan(alpha0)
+};
 
 class SegmentDynamics final : public OdeSystem {
  public:
@@ -38,8 +52,7 @@ class SegmentDynamics final : public OdeSystem {
   const Model& model_;
   const std::vector<Body>& bodies_;
   std::vector<double> mass_;  // per body
-  double mu_;                 // tan(alpha0)
-  double gR_;                 // g / R
+  SlidingLaw law_;
 };
 
 }  // namespace vibro

@@ -16,6 +16,7 @@ struct LimiterContact {
   int pellet;
   int limiter;
   int side;
+  bool operator==(const LimiterContact&) const = default;
 };
 
 // Pellets `behind` and `ahead` (next in +phi order) are at the same place.

@@ -347,10 +347,7 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
       if (q < 0) break;
       lc.pellet = q;
     }
-    if (std::none_of(fronts.begin(), fronts.end(), [&](const LimiterContact& x) {
-          return x.pellet == lc.pellet && x.limiter == lc.limiter && x.side == lc.side;
-        }))
-      fronts.push_back(lc);
+    if (std::find(fronts.begin(), fronts.end(), lc) == fronts.end()) fronts.push_back(lc);
   }
   c.limiters = std::move(fronts);
   for (const LimiterContact& lc : c.limiters) at_limiter[lc.pellet] = true;
@@ -384,10 +381,7 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   for (const LimiterContact& contact : c.limiters) {
     const int pellet = meets_limiter(contact, c, model);
     const LimiterContact m{pellet, contact.limiter, contact.side};
-    if (pellet >= 0 && std::none_of(met.begin(), met.end(), [&](const LimiterContact& x) {
-          return x.pellet == m.pellet && x.limiter == m.limiter && x.side == m.side;
-        }))
-      met.push_back(m);
+    if (pellet >= 0 && std::find(met.begin(), met.end(), m) == met.end()) met.push_back(m);
   }
   c.limiters = std::move(met);
   return c;
