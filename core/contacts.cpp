@@ -27,7 +27,7 @@ std::vector<Neighbours> circular_neighbours(const Vec& y, int n) {
   return neighbours;
 }
 
-void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact_distance,
+void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact,
                    std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
                    std::vector<PairContact>& pairs) {
   for (std::size_t pass = 0; pass <= neighbours.size(); ++pass) {
@@ -45,7 +45,7 @@ void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double con
       });
       // A pair already in contact stays at one place, however far an earlier snap of this
       // loop moved one of them (onto a pellet at a limiter).
-      if (!listed && gap > contact_distance * (1.0 + std::abs(pb))) continue;
+      if (!listed && gap > contact) continue;
       if (!listed) pairs.push_back({nb.behind, nb.ahead});
       if (gap == 0.0) continue;
       if (at_limiter[nb.ahead]) {

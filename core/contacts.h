@@ -22,14 +22,13 @@ struct Neighbours {
 // The neighbours of n pellets (n ≥ 2) in their circular order at the state y.
 std::vector<Neighbours> circular_neighbours(const Vec& y, int n);
 
-// Neighbours closer than `contact_distance` (relative to 1 + |φ|) touch at this instant too: they
-// are added to `pairs` and snapped onto one place (the one at a limiter stays put, and one
-// snapped onto it is at the limiter too). Pairs listed
-// in `apart` (a limiter between them) never touch. An inelastic
+// Neighbours closer than `contact` (rad) touch at this instant too: they are added to `pairs` and
+// snapped onto one place (the one at a limiter stays put, and one snapped onto it is at the
+// limiter too). Pairs listed in `apart` (a limiter between them) never touch. An inelastic
 // cascade among several pellets closes their gaps geometrically, and only treating the
 // near-touching ones together ends it in bounded work (and never lets round-off push one pellet
 // through another).
-void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact_distance,
+void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact,
                    std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
                    std::vector<PairContact>& pairs);
 

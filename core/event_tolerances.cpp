@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "core/motion.h"
+
 namespace vibro {
 
 EventTolerances event_tolerances(const Model& model) {
@@ -13,7 +15,16 @@ EventTolerances event_tolerances(const Model& model) {
   for (const Pellet& p : model.pellets) v_scale = std::max(v_scale, std::abs(p.dphi0));
   tol.v_eps = 1e-13 * v_scale;
   tol.v_merge = 1e-9 * v_scale;
+  double angle_scale = 1.0;
+  for (const Pellet& p : model.pellets) angle_scale = std::max(angle_scale, 1.0 + std::abs(p.phi0));
+  tol.start_on_limiter *= angle_scale;
   return tol;
+}
+
+PlaceRadii place_radii(const EventTolerances& tol, const Vec& y) {
+  double scale = 1.0;
+  for (int i = 0; phi_index(i) < y.size(); ++i) scale = std::max(scale, 1.0 + std::abs(y[phi_index(i)]));
+  return {tol.contact_distance * scale, tol.on_limiter * scale};
 }
 
 }  // namespace vibro

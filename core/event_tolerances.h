@@ -7,6 +7,7 @@
 #include <cmath>
 
 #include "core/model.h"
+#include "core/ode.h"
 
 namespace vibro {
 
@@ -23,15 +24,16 @@ struct EventTolerances {
   // Touching pellets closer in speed than this move on together, rad/s: 1e-9 of the speed
   // scale. Closer speeds would give a next collision within round-off of the gap.
   double v_merge = 0.0;
-  // Neighbours closer than this (relative to 1 + |φ|) touch at an instant, rad: an inelastic
+  // Neighbours closer than this (relative to the angle scale) touch at an instant, rad: an inelastic
   // cascade closes gaps geometrically and ends only when the near-touching ones are treated
   // together; 1e-10 stays far above the round-off of an unwrapped angle.
   double contact_distance = 1e-10;
-  // A body at rest this close to an armed limiter (relative to 1 + |φ|) sits on it: the angle of
+  // A body at rest this close to an armed limiter (relative to the angle scale) sits on it: the angle of
   // a body snapped onto a limiter, up to round-off.
   double on_limiter = 1e-14;
-  // At t = 0 a pellet this close to a limiter (relative) starts on it: a scene that writes the
-  // limiter's angle in decimals (0.7853981633974483) means that limiter.
+  // At t = 0 a pellet this close to a limiter starts on it, rad: a scene that writes the
+  // limiter's angle in decimals (0.7853981633974483) means that limiter. 1e-12 of the starting
+  // angles' scale (see place_radii).
   double start_on_limiter = 1e-12;
   // Roots this close in time are one instant (MODEL.md, event 5).
   double simultaneous(double t) const { return 1e-12 * (1.0 + std::abs(t)); }
@@ -42,5 +44,16 @@ struct EventTolerances {
 
 // The tolerances for a model, from its time scale and the pellets' initial speeds.
 EventTolerances event_tolerances(const Model& model);
+
+// The radii of "at one place" in a state, rad: the relative tolerances above times one angle
+// scale for every pellet, 1 + the largest |φ|, the size of the unwrapped angles' round-off.
+// Pellets at one place can carry unwrapped angles 2π apart (0.04 and 6.32): radii from each
+// one's own angle put one of them on a limiter and the other not, and their body slid through
+// the limiter.
+struct PlaceRadii {
+  double contact = 0.0;
+  double on_limiter = 0.0;
+};
+PlaceRadii place_radii(const EventTolerances& tol, const Vec& y);
 
 }  // namespace vibro

@@ -68,10 +68,10 @@ Support support_of(const Body& body, const InstantContacts& contacts,
 }
 
 // Whether pellet i at phi lies on the angle of limiter l, armed and acting on it.
-bool held_on_angle(const Model& model, const EventTolerances& tol, const std::vector<bool>& armed,
+bool held_on_angle(const Model& model, const PlaceRadii& radii, const std::vector<bool>& armed,
                    int i, int l, double phi) {
   return armed[l] && model.limiters[l].acts_on(i) &&
-         on_limiter_angle(model.limiters[l].angle, phi, tol.on_limiter * (1.0 + std::abs(phi)));
+         on_limiter_angle(model.limiters[l].angle, phi, radii.on_limiter);
 }
 
 // The pellets that stay put on a limiter's angle when others meet them at an instant: bodies
@@ -80,7 +80,7 @@ bool held_on_angle(const Model& model, const EventTolerances& tol, const std::ve
 // of a limiter that holds them (one sliding away after a stop went 9e-14 rad past its limiter);
 // with each of them its body, whose members lie at one place (a member the limiter does not stop
 // was moved halfway, taking the body off the angle).
-std::vector<bool> on_limiters(const Model& model, const EventTolerances& tol,
+std::vector<bool> on_limiters(const Model& model, const PlaceRadii& radii,
                               const std::vector<Body>& bodies, const std::vector<bool>& armed,
                               const Vec& y) {
   const int n = model.size();
@@ -90,7 +90,7 @@ std::vector<bool> on_limiters(const Model& model, const EventTolerances& tol,
       for (int i : body.members) on[i] = true;
   for (int i = 0; i < n; ++i)
     for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l)
-      on[i] = on[i] || held_on_angle(model, tol, armed, i, l, y[phi_index(i)]);
+      on[i] = on[i] || held_on_angle(model, radii, armed, i, l, y[phi_index(i)]);
   for (const Body& body : bodies)
     if (std::any_of(body.members.begin(), body.members.end(), [&](int i) { return on[i]; }))
       for (int i : body.members) on[i] = true;
@@ -115,7 +115,7 @@ int home_side(const Model& model, const EventTolerances& tol, int i, int l, doub
   const double phi0 = model.pellets[i].phi0;
   const double turns0 = (phi0 - lim.angle) / kTwoPi;
   double below = std::floor(turns0);  // the index k of the angle below the start
-  if (std::abs(wrap_angle(phi0 - lim.angle)) <= tol.start_on_limiter * (1.0 + std::abs(phi0))) {
+  if (std::abs(wrap_angle(phi0 - lim.angle)) <= tol.start_on_limiter) {
     const double on = std::round(turns0);
     below = start_side(model, i) > 0 ? on : on - 1.0;
   }
@@ -139,7 +139,7 @@ int held_member(const Model& model, const Body& body, int limiter, int side) {
 // Another pellet the limiter acts on that touches `pellet` on the limiter's `side`, and not
 // from the limiter's other side (its contact or its angle says so): it lies between them. −1 if
 // none.
-int pellet_between(const Model& model, const EventTolerances& tol,
+int pellet_between(const Model& model, const PlaceRadii& radii,
                    const std::vector<Neighbours>& neighbours,
                    const std::vector<LimiterContact>& contacts, int pellet, int limiter, int side,
                    const Vec& y) {
@@ -154,10 +154,9 @@ int pellet_between(const Model& model, const EventTolerances& tol,
     // On the limiter's other side, however close, it is not between (a pellet reversing 6e-11
     // rad short of a limiter does not shield the one resting on the limiter's far side).
     const double phi = y[phi_index(other)];
-    if (side * wrap_angle(phi - model.limiters[limiter].angle) < -tol.on_limiter * (1.0 + std::abs(phi)))
-      continue;
+    if (side * wrap_angle(phi - model.limiters[limiter].angle) < -radii.on_limiter) continue;
     const double gap = y[phi_index(nb.ahead)] - y[phi_index(nb.behind)] + nb.offset;
-    if (gap <= tol.contact_distance * (1.0 + std::abs(y[phi_index(pellet)]))) return other;
+    if (gap <= radii.contact) return other;
   }
   return -1;
 }
@@ -169,12 +168,13 @@ int pellet_between(const Model& model, const EventTolerances& tol,
 // limiter watch aimed there: it lies on the side it came from, −s) or leaving it (a rebound too
 // small to leave it yet: on the side it moves into, s); unless another pellet lies between. A
 // cascade at this instant must find it there.
-void touch_on_angle(const Model& model, const EventTolerances& tol, const MotionInterval& interval,
-                    int b, const std::vector<Neighbours>& neighbours, const Vec& y,
+void touch_on_angle(const Model& model, const EventTolerances& tol, const PlaceRadii& radii,
+                    const MotionInterval& interval, int b,
+                    const std::vector<Neighbours>& neighbours, const Vec& y,
                     std::vector<LimiterContact>& contacts) {
   const Body& body = interval.bodies()[b];
   const double phi = y[phi_index(body.leader())];
-  const double near = tol.on_limiter * (1.0 + std::abs(phi));
+  const double near = radii.on_limiter;
   // Arriving at the angle it watched, it arrives at every limiter there (two at one angle).
   bool arriving = false;
   for (const Watch& w : interval.watches())
@@ -190,7 +190,7 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const Motion
       }
     }
     const int held = held_member(model, body, l, side);
-    if (held >= 0 && pellet_between(model, tol, neighbours, contacts, held, l, side, y) < 0)
+    if (held >= 0 && pellet_between(model, radii, neighbours, contacts, held, l, side, y) < 0)
       contacts.push_back({held, l, side});
   }
 }
@@ -259,7 +259,8 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   c.pulled.assign(n, 0);
   // Pellets on a limiter's angle stay there when others meet them; those found touching one
   // below join them.
-  std::vector<bool> at_limiter = on_limiters(model, tol, bodies, armed, y);
+  const PlaceRadii radii = place_radii(tol, y);
+  std::vector<bool> at_limiter = on_limiters(model, radii, bodies, armed, y);
   // Arrivals at limiters first: a pellet that meets one arriving at the same instant meets it on
   // the limiter's angle, not halfway.
   std::vector<Crossing> ordered = crossings;
@@ -335,7 +336,7 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   }
   for (int b = 0; b < static_cast<int>(bodies.size()); ++b) {
     if (bodies[b].mode == Mode::sliding)
-      touch_on_angle(model, tol, interval, b, neighbours, y, c.limiters);
+      touch_on_angle(model, tol, radii, interval, b, neighbours, y, c.limiters);
   }
   // Two bodies arriving together at a limiter: the limiter meets the frontmost pellet, not the
   // one behind (taken as touching it, that one put the limiter between itself and the body
@@ -343,7 +344,8 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
   std::vector<LimiterContact> fronts;
   for (LimiterContact lc : c.limiters) {
     for (int guard = 0; guard < n; ++guard) {
-      const int q = pellet_between(model, tol, neighbours, c.limiters, lc.pellet, lc.limiter, lc.side, y);
+      const int q =
+          pellet_between(model, radii, neighbours, c.limiters, lc.pellet, lc.limiter, lc.side, y);
       if (q < 0) break;
       lc.pellet = q;
     }
@@ -357,14 +359,14 @@ InstantContacts snap(const Model& model, const EventTolerances& tol,
     if (separated_by_limiter(model, c.limiters, armed, pair)) apart.push_back(pair);
   }
   const Vec unsnapped = y;
-  snap_touching(y, neighbours, tol.contact_distance, at_limiter, apart, c.pairs);
+  snap_touching(y, neighbours, radii.contact, at_limiter, apart, c.pairs);
   // A pellet snapped onto a limiter's angle (onto a pellet there that the limiter does not
   // stop) touches the limiter from the side it came from: without the contact, a cascade at
   // this instant drove it through the limiter.
   for (int i = 0; i < n; ++i) {
     for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
-      if (!held_on_angle(model, tol, armed, i, l, y[phi_index(i)]) ||
-          held_on_angle(model, tol, armed, i, l, unsnapped[phi_index(i)]))
+      if (!held_on_angle(model, radii, armed, i, l, y[phi_index(i)]) ||
+          held_on_angle(model, radii, armed, i, l, unsnapped[phi_index(i)]))
         continue;
       const int side = wrap_angle(unsnapped[phi_index(i)] - model.limiters[l].angle) > 0.0 ? 1 : -1;
       c.limiters.push_back({i, l, side});
@@ -397,7 +399,7 @@ InstantContacts initial_contacts(const Model& model, const EventTolerances& tol,
     const double phi = y[phi_index(i)];
     for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
       const double d = wrap_angle(phi - model.limiters[l].angle);
-      if (!model.limiters[l].acts_on(i) || std::abs(d) > tol.start_on_limiter * (1.0 + std::abs(phi)))
+      if (!model.limiters[l].acts_on(i) || std::abs(d) > tol.start_on_limiter)
         continue;
       y[phi_index(i)] = phi - d;
       c.limiters.push_back({i, l, start_side(model, i)});

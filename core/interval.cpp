@@ -20,6 +20,7 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
     : model_(model),
       bodies_(std::move(bodies)),
       dynamics_(model, bodies_) {
+  const PlaceRadii radii = place_radii(tol, y);
   const bool paper = model.friction == FrictionLaw::paper;
   for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
     const Body& body = bodies_[b];
@@ -31,7 +32,7 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
       watches_.push_back({WatchKind::reversal, b, L});
       int lim;
       double target;
-      if (next_limiter(model, armed, body, y[phi_index(L)], body.s, tol.on_limiter, lim, target)) {
+      if (next_limiter(model, armed, body, y[phi_index(L)], body.s, radii.on_limiter, lim, target)) {
         watches_.push_back({WatchKind::limiter, b, L, -1, lim, target});
       }
       if (paper && !forced && body.members.size() == 1) {
@@ -81,7 +82,7 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
     Watch w{WatchKind::gap, -1, nb.behind, nb.ahead};
     w.target = nb.offset;
     const double gap = y[phi_index(nb.ahead)] - y[phi_index(nb.behind)] + nb.offset;
-    if (gap <= tol.contact_distance * (1.0 + std::abs(y[phi_index(nb.behind)]))) {
+    if (gap <= radii.contact) {
       // Parting at a speed below round-off is not parting: they start at one speed.
       double rate = y[dphi_index(nb.ahead)] - y[dphi_index(nb.behind)];
       if (std::abs(rate) <= tol.v_eps) rate = 0.0;

@@ -172,10 +172,9 @@ bool on_limiter_angle(double theta, double phi, double near) {
 }
 
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,
-                  double phi, int s, double on_limiter, int& limiter, double& target) {
+                  double phi, int s, double near, int& limiter, double& target) {
   // A limiter the body sits on, within round-off, is behind it: any impact on it was resolved at
   // the instant the body got there.
-  const double near = on_limiter * (1.0 + std::abs(phi));
   bool found = false;
   for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
     if (!armed[l]) continue;

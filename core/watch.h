@@ -70,9 +70,9 @@ void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, doub
 bool on_limiter_angle(double theta, double phi, double near);
 
 // The next armed limiter angle ahead of phi in direction s that acts on any of the body's
-// members, farther than on_limiter·(1 + |phi|); returns false if there is none.
+// members, farther than near (rad); returns false if there is none.
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body,
-                  double phi, int s, double on_limiter, int& limiter, double& target);
+                  double phi, int s, double near, int& limiter, double& target);
 
 // A root of one watch inside a step.
 struct Crossing {

@@ -194,9 +194,11 @@ Comparison compare_runs(const RunResult& a, const RunResult& b, const TimeTolera
     }
     c.worst_ratio = std::max(c.worst_ratio, dt / allowed * TimeTolerance::kFactor);
   }
-  // One run has more events: fine only where they lie within the tolerance of the end.
+  // One run has more events: fine only where they lie within the tolerance of the end (the
+  // end may be a run's trust horizon, where its own copy of the event lies, as late as the
+  // error it states).
   const std::vector<Event>& longer = a.events.size() > n ? a.events : bs;
-  if (longer.size() > n && longer[n].t < t_end - tol.at(t_end)) {
+  if (longer.size() > n && longer[n].t < t_end - std::max(tol.at(t_end), tol.stated)) {
     c.verdict = Verdict::sequence;
     c.index = n;
     if (a.events.size() > n)
