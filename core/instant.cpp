@@ -195,27 +195,51 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const PlaceR
   }
 }
 
-// Phase 4: a lone pellet that leaves the fixed limiter it just struck, pressed back so hard that
-// the rest of its impacts would last less than the chatter time: one chatter event, at rest.
-bool sum_chatter(const Model& model, const EventTolerances& tol, double t, int pellet,
-                 int limiter, double& v, double a_free, Vec& y, InstantOutcome& out) {
+// The restitution that a body leaving the fixed limiter it struck at this instant meets at each
+// of its next impacts there, or −1 if it has none: a lone pellet's is its limiter's k. A body
+// that came in as one (its members at one speed) and whose impacts at this instant stayed among
+// its members and the limiter leaves at one fraction of that speed, the same at every impact
+// after: the cascade is linear in the speed.
+double series_restitution(const Model& model, const Body& body, int limiter, double speed,
+                          const std::vector<double>& v_in, const std::vector<Event>& impacts) {
+  if (body.members.size() == 1) return model.limiters[limiter].k;
+  auto member = [&](int i) {
+    return std::find(body.members.begin(), body.members.end(), i) != body.members.end();
+  };
+  for (const Event& e : impacts)
+    if (std::any_of(e.pellets.begin(), e.pellets.end(), member) &&
+        !std::all_of(e.pellets.begin(), e.pellets.end(), member))
+      return -1.0;
+  const double v0 = v_in[body.leader()];
+  for (int i : body.members)
+    if (v_in[i] != v0) return -1.0;
+  return v0 != 0.0 ? -speed / v0 : -1.0;
+}
+
+// Phase 4: a body that leaves the fixed limiter it just struck, pressed back so hard that the
+// rest of its impacts would last less than the chatter time: one chatter event, at rest.
+bool sum_chatter(const Model& model, const EventTolerances& tol, double t, const Body& body,
+                 int limiter, double restitution, double& v, double a_free, Vec& y,
+                 InstantOutcome& out) {
   const int side = v > 0.0 ? 1 : -1;
   const Limiter& lim = model.limiters[limiter];
-  const auto series = chatter_series(model, t, lim.angle, side, std::abs(v), lim.k, a_free);
+  const auto series = chatter_series(model, t, lim.angle, side, std::abs(v), restitution, a_free);
   if (!series || series->t_next / (1.0 - series->r) > tol.chatter_time) return false;
   Event e;
   e.kind = EventKind::chatter;
-  e.pellets = {pellet};
+  e.pellets = body.members;
   e.limiter = limiter;
-  e.dphi_before = {v};
-  e.dphi_after = {0.0};
+  e.dphi_before.assign(body.members.size(), v);
+  e.dphi_after.assign(body.members.size(), 0.0);
   e.impacts_resolved = series->impacts;
   e.t_accumulation = series->t_star;
-  out.kinetic_change -= kinetic(model, pellet, v);
-  y[dphi_index(pellet)] = 0.0;
+  for (int i : body.members) {
+    out.kinetic_change -= kinetic(model, i, v);
+    y[dphi_index(i)] = 0.0;
+    out.touched[i] = true;
+  }
   v = 0.0;
   out.events.push_back(stamped(std::move(e), series->t_star, y));
-  out.touched[pellet] = true;
   return true;
 }
 
@@ -434,6 +458,7 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
     v[i] = y[dphi_index(i)];
     place[i] = y[phi_index(i)];
   }
+  const std::vector<double> v_in = v;
   std::vector<Event> impacts =
       resolve_impacts(model, v, armed, contacts.limiters, contacts.pairs, place,
                       ImpactOptions{.v_eps = tol.v_eps});
@@ -442,10 +467,10 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
     out.kinetic_change += kinetic(model, i, v[i]) - kinetic(model, i, y[dphi_index(i)]);
     y[dphi_index(i)] = v[i];
   }
-  for (Event& e : impacts) {
+  for (const Event& e : impacts) {
     for (int i : e.pellets) out.touched[i] = true;
     if (e.kind == EventKind::limiter) struck_limiter_of[e.pellets[0]] = e.limiter;
-    out.events.push_back(stamped(std::move(e), t, y));
+    out.events.push_back(stamped(e, t, y));
   }
 
   // Phase 3: joining.
@@ -477,10 +502,13 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
       out.kinetic_change += kinetic(model, i, speed) - kinetic(model, i, y[dphi_index(i)]);
 
     // Phase 4: chatter.
-    const int struck = struck_limiter_of[L];
-    if (std::abs(speed) > tol.v_eps && body.members.size() == 1 && struck >= 0 && armed[struck]) {
+    int struck = -1;
+    for (int i : body.members) struck = std::max(struck, struck_limiter_of[i]);
+    if (std::abs(speed) > tol.v_eps && struck >= 0 && armed[struck]) {
       const int side = speed > 0.0 ? 1 : -1;
-      if (sum_chatter(model, tol, t, L, struck, speed, a_free, y, out)) support = {struck, side};
+      const double k = series_restitution(model, body, struck, speed, v_in, impacts);
+      if (k >= 0.0 && sum_chatter(model, tol, t, body, struck, k, speed, a_free, y, out))
+        support = {struck, side};
     }
 
     // Phase 5: modes, and the events that say how the motion changed.

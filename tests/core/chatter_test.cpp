@@ -52,6 +52,50 @@ TEST(Chatter, WithFrictionTheRatioIsKTimesSqrtOfTheAccelerations) {
   EXPECT_EQ(run.summary.final[0].state, PelletState::resting_at_limiter);
 }
 
+TEST(Chatter, ABodyLeavingItsLimiterHasItsSeriesSummedAtItsAccumulationTime) {
+  // Pellet 2 (behind) is pushed by a constant force into pellet 1 and a limiter above them:
+  // the two come to bounce on the limiter as one body, each bounce a cascade of impacts at one
+  // instant that returns the same fraction of the body's speed. The series is summed from the
+  // instant it gets shorter than the chatter time, at t0 + T/(1 − r) with the body's own
+  // accelerations: a_away, a_toward = press ± friction, the press of the force on both masses.
+  Model m;
+  m.g = 9.81;
+  m.R = 1.0;
+  m.alpha0 = 0.1;
+  m.k_c = 0.5;
+  const double theta = -0.2, F = 20.0;
+  m.limiters = {{theta, 0.9, false, -1, {}}};
+  m.pellets = {{1.0, -0.6, 0.0, {}}, {2.0, -0.7, 0.0, {F, 0.0, 0.0}}};
+  const RunResult run = simulate(m, testing::recorded(m, 1.0));
+  ASSERT_EQ(run.stats.termination, Termination::completed);
+  const auto chatter = testing::events_of(run, EventKind::chatter);
+  const auto body_chatter = std::find_if(chatter.begin(), chatter.end(),
+                                         [](const Event* e) { return e->pellets.size() == 2; });
+  ASSERT_NE(body_chatter, chatter.end());
+  const Event& c = **body_chatter;
+  // The instant it was summed from: the impacts just before it, the body arriving as one.
+  const std::size_t at = static_cast<std::size_t>(&c - run.events.data());
+  ASSERT_GT(at, 0u);
+  const double t0 = run.events[at - 1].t;
+  const auto first = std::find_if(run.events.begin(), run.events.end(),
+                                  [&](const Event& e) { return e.t == t0; });
+  ASSERT_EQ(first->kind, EventKind::limiter);
+  const double v0 = first->dphi_before[0], u = c.dphi_before[0];
+  EXPECT_EQ(c.dphi_before[1], u);
+  const double press = F / (3.0 * m.R) - m.g / m.R * std::sin(theta);
+  const double friction = m.mu() * m.g / m.R * std::cos(theta);
+  const double a_away = press + friction, a_toward = press - friction;
+  const double r = std::abs(u / v0) * std::sqrt(a_toward / a_away);
+  const double T = std::abs(u) / a_away + std::abs(u) / std::sqrt(a_away * a_toward);
+  ASSERT_LT(r, 1.0);
+  EXPECT_NEAR(c.t_accumulation, t0 + T / (1.0 - r), 1e-9 * T / (1.0 - r));
+  for (const FinalState& f : run.summary.final) {
+    EXPECT_EQ(f.state, PelletState::resting_at_limiter);
+    EXPECT_NEAR(f.phi, theta, 1e-12);
+  }
+  EXPECT_LT(std::abs(run.stats.energy_defect), 1e-8);
+}
+
 TEST(Chatter, RestingPelletIsReleasedWhenTheForcePullsItAway) {
   const double theta = 0.3;
   Model m = testing::one_pellet(0.02, theta + 1e-3, 0.0);

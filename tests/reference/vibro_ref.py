@@ -262,7 +262,7 @@ class Sim:
         self.sgn = [0] * M.n
         self.contact = [None] * M.n   # (limiter, side, unwrapped angle); side -1: below theta
         self.left = [None] * M.n      # the contact each pellet last moved away from
-        self.pending = None           # summed chatter not yet reached: (t*, pellet, limiter, u)
+        self.pending = None           # summed chatter not yet reached: (t*, body, limiter, u)
         # Circular order never changes (pellets do not pass each other); gap k runs from
         # order[k] to order[k+1] and equals phi[next] - phi[this] + 2 pi wind[k] >= 0.
         wrapped = [p % TWO_PI for p in self.phi]
@@ -420,7 +420,7 @@ class Sim:
                     watches.append(Watch("limiter",
                                          lambda ts, Y, f=f, th=th, s=s: s * (th - f(ts, Y)),
                                          t0, y0, body=b, pellet=p, limiter=li, theta=th, side=-s))
-            elif self.pending is None or self.pending[1] not in b:
+            elif self.pending is None or self.pending[1] != b:
                 phi = self.phi[b[0]]
                 c = float(M.capacity(phi))
                 lim = self.limiter_contact(b) if self.mode[b[0]] == "rest" else None
@@ -862,18 +862,32 @@ class Sim:
         for p in ps:
             self.dphi[p] = v
 
-    def chatter_test(self, p):
-        """After a limiter impact: sum the rest of a chatter series once it is short."""
+    def chatter_test(self, p, v_in, first_event):
+        """After a limiter impact: sum the rest of a chatter series once it is short.
+
+        A lone pellet meets the limiter's k at every impact of the series.  A body does too, at
+        the fraction of its speed it left with this time, when it came in as one (its members
+        at one speed) and this instant's collisions stayed among its members: the cascade is
+        linear in the speed, so every later impact repeats it."""
         M = self.M
         body = self.body_of(p)
         c = self.on_limiter(p)
-        if len(body) > 1 or c is None:
+        if c is None or (self.pending is not None and self.pending[1] == body):
             return
         li, side, th = c
         L = M.lims[li]
         u = self.dphi[p]
-        if L.mobile or not self.armed[li] or side * u <= 0 or self.touching_any(p):
+        if L.mobile or not self.armed[li] or side * u <= 0 or self.touching_outside(body):
             return
+        k = L.k
+        if len(body) > 1:
+            for ev in self.events[first_event:]:
+                inside = [q in body for q in ev["pellets"]]
+                if any(inside) and not all(inside):
+                    return
+            if any(v_in[q] != v_in[body[0]] for q in body) or v_in[body[0]] == 0.0:
+                return
+            k = -u / v_in[body[0]]
         press = -side * float(M.a_free(body, self.t, th))
         if press <= float(M.capacity(th)):
             return                      # static friction holds it once it stops: no chatter
@@ -881,21 +895,23 @@ class Sim:
         a_away, a_toward = press + f, press - f
         if a_away <= 0 or a_toward <= 0:
             return
-        r = L.k * math.sqrt(a_toward / a_away)
+        r = k * math.sqrt(a_toward / a_away)
         if r >= 1.0:
             return
         T = abs(u) / a_away + abs(u) / math.sqrt(a_away * a_toward)
         if T / (1.0 - r) < M.chatter_time:
-            self.pending = (self.t + T / (1.0 - r), p, li, u)
-            self.dphi[p] = 0.0
+            self.pending = (self.t + T / (1.0 - r), body, li, u)
+            for q in body:
+                self.dphi[q] = 0.0
             self.set_mode(body, "rest")
 
-    def touching_any(self, p):
+    def touching_outside(self, body):
+        """Whether the body touches a pellet outside it."""
         n = self.M.n
-        if n < 2:
+        if n < 2 or len(body) == n:
             return False
-        k = self.order.index(p)
-        return self.touching(k) or self.touching((k - 1) % n)
+        first, last = self.order.index(body[0]), self.order.index(body[-1])
+        return self.touching(last) or self.touching((first - 1) % n)
 
     def instant(self, fired):
         """Resolve everything that happens at self.t: snap the crossings onto their events, the
@@ -903,10 +919,11 @@ class Sim:
         M = self.M
         if self.pending is not None:
             for w in fired:
-                if w.kind == "gap" and self.pending[1] in self.gap_pellets(w.data["gap"]):
+                if w.kind == "gap" and set(self.pending[1]) & set(self.gap_pellets(w.data["gap"])):
                     raise Unsupported("a pellet reaches pellet %d during its summed chatter"
-                                      % self.pending[1])
+                                      % self.pending[1][0])
         involved, reversed_, released, anchors = set(), set(), [], []
+        v_in, first_event = list(self.dphi), len(self.events)
         for w in fired:
             if w.kind == "reversal":
                 self.set_body(w.data["body"], self.phi[w.data["body"][0]], 0.0)
@@ -942,9 +959,9 @@ class Sim:
             if len(chain) > 1 and involved.intersection(chain):
                 self.regroup(chain)
         for p in hits:
-            self.chatter_test(p)
+            self.chatter_test(p, v_in, first_event)
         for b in self.bodies():
-            if not involved.intersection(b) or (self.pending and self.pending[1] in b):
+            if not involved.intersection(b) or (self.pending and self.pending[1] == b):
                 continue
             if touched.intersection(b):
                 cause = None
@@ -1043,9 +1060,9 @@ class Sim:
                 fired = self.scan(t_stop)
                 if not fired:
                     if self.pending is not None and self.t >= self.pending[0]:
-                        _, p, li, u = self.pending
+                        _, body, li, u = self.pending
                         self.pending = None
-                        self.emit("chatter", [p], li, [u], [0.0])
+                        self.emit("chatter", body, li, [u] * len(body), [0.0] * len(body))
                     continue
                 if last_t is not None and self.t <= last_t + SAME_INSTANT * (1 + abs(last_t)):
                     same += 1
