@@ -1,6 +1,7 @@
 #include "core/event_tolerances.h"
 
 #include <algorithm>
+#include <limits>
 
 #include "core/motion.h"
 
@@ -15,6 +16,7 @@ EventTolerances event_tolerances(const Model& model) {
   for (const Pellet& p : model.pellets) v_scale = std::max(v_scale, std::abs(p.dphi0));
   tol.v_eps = 1e-13 * v_scale;
   tol.v_merge = 1e-9 * v_scale;
+  tol.accel_round_off = 4.0 * std::numeric_limits<double>::epsilon() * model.g / model.R;
   double angle_scale = 1.0;
   for (const Pellet& p : model.pellets) angle_scale = std::max(angle_scale, 1.0 + std::abs(p.phi0));
   tol.start_on_limiter *= angle_scale;

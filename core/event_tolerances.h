@@ -21,6 +21,11 @@ struct EventTolerances {
   // Speeds below this are zero, rad/s: 1e-13 of the speed scale, round-off of a speed snapped
   // to zero and carried through an impact.
   double v_eps = 0.0;
+  // A free acceleration this small (times 1 + |φ|) is zero in the stick test, rad/s²: 4ε·g/R,
+  // the round-off of the gravity term for an angle known to an ulp. sin(fl(−2π)) is 2.4e-16,
+  // not 0: a pellet put at rest at the bottom slid off it by 1e-16 rad and turned at times set
+  // by round-off alone, which every method put elsewhere.
+  double accel_round_off = 0.0;
   // Touching pellets closer in speed than this move on together, rad/s: 1e-9 of the speed
   // scale. Closer speeds would give a next collision within round-off of the gap.
   double v_merge = 0.0;

@@ -518,7 +518,9 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
                                    [&](int i) { return contacts.pulled[i] == way; })
                            ? way
                            : 0;
-    set_mode(body, speed, support, a_free, stick_capacity(model, phi), pulled, tol);
+    const double capacity =
+        stick_capacity(model, phi) + tol.accel_round_off * (1.0 + std::abs(phi));
+    set_mode(body, speed, support, a_free, capacity, pulled, tol);
     if (std::abs(speed) <= tol.v_eps) speed = 0.0;
     for (int i : body.members) y[dphi_index(i)] = speed;
 

@@ -19,7 +19,7 @@ SimOptions check_options(const SimOptions& run);
 struct TrustReport {
   double event_time_error = 0.0;  // s: the largest time difference of the events listed alike
   double state_error = 0.0;       // rad: the final states' difference, φ̇ scaled by sqrt(R/g)
-  double trusted_until = 0.0;     // s: where the runs first list different events, or the end
+  double trusted_until = 0.0;     // s: a margin before the runs part, or the end
   int first_difference = -1;      // index of the first event listed differently; -1: none
   int unresolved = -1;  // index of the first event whose times differ by more than a tenth of
                         // the time to its neighbours; -1: none
@@ -27,7 +27,8 @@ struct TrustReport {
 
 // Compares a run with its shadow. The runs agree on an event when kind, pellets and limiter are
 // the same and the times differ by less than a tenth of the time to the neighbouring events;
-// trust ends at the earlier of the first two events that do not, or where either run stopped.
+// trust ends ten errors before the first events that they do not (but not before the last
+// they list alike), or where either run stopped.
 TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow);
 
 // Fills the trust fields of `run` (stats and a warning a person reads) from the comparison with

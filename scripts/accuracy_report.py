@@ -249,10 +249,12 @@ event by event:
   round-off of event times (`1e3·ε·(T0 + t)`, `T0 = sqrt(R/g)`), and from a summed chatter on the
   summation's own error (`1e-8·T0`, docs/MODEL.md);
 - `stats.state_error` is the largest difference of the final states (φ, and φ̇ times `T0`);
-- `stats.trusted_until` is where the two first list different events, or where the times of an
+- `stats.trusted_until` ends before the two first list different events, or where the times of an
   event differ by more than a tenth of the time to its neighbours and more than `1e3·rtol·(T0 + t)`
-  (the tolerance explains: sensitive dynamics amplified them), or where the shadow stopped. A
-  `not_trusted` warning names both events.
+  (the tolerance explains: sensitive dynamics amplified them), or where the shadow stopped. It ends
+  ten times the event-time error before the earlier of the two events (the true sequence may part
+  earlier than either run: a reference put an impact 1.4 ms before them when they were 0.5 ms
+  apart), but not before the last event both list alike. A `not_trusted` warning names both events.
 
 Why this mechanism: the shadow's error is about a tenth of the run's, so the difference estimates
 the run's error without a model of how errors propagate through impacts, sticking and chatter
