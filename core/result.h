@@ -2,6 +2,7 @@
 // Plain value types: the JSON writer, the renderer and the tests all read these.
 #pragma once
 
+#include <optional>
 #include <string>
 #include <string_view>
 #include <vector>
@@ -108,12 +109,29 @@ struct Warning {
   double t_begin = 0.0, t_end = 0.0;
 };
 
+// A near miss: a watch of the motion (a body's speed, a gap, the way to a limiter) that fell to
+// a minimum within its error of zero and rose again. Whether its event (a turn, a collision, an
+// impact) happens depends on differences below the tolerance: a run and its shadow of one
+// method missed a collision that tighter runs found, and vouched for the events after it.
+struct Graze {
+  enum class Of { speed, gap, limiter };
+  Of of = Of::speed;
+  int pellet = -1;        // the pellet whose speed or way it is; gap: the one behind
+  int other = -1;         // gap: the pellet ahead; limiter: the limiter
+  double t = 0.0;         // the minimum
+  double earliest = 0.0;  // the earliest its event could come, had the minimum been below zero
+  double value = 0.0;     // the watch's value there (rad/s for a speed, rad otherwise)
+  double error = 0.0;     // the error it was held against
+};
+
 struct RunResult {
   std::vector<Event> events;
   std::vector<PelletTrack> tracks;  // only the pellets whose branches were asked for
   Summary summary;
   Stats stats;
   std::vector<Warning> warnings;
+  // The earliest near miss (core/watch.h): the trust ends before it.
+  std::optional<Graze> graze;
 };
 
 }  // namespace vibro

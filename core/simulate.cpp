@@ -137,7 +137,7 @@ std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
 void Simulation::open_interval(double t, std::vector<Body> bodies) {
   interval_.emplace(model_, std::move(bodies), armed_, neighbours_, t, y_, tol_);
   stepper_->start(interval_->dynamics(), t, y_);
-  finder_.start(interval_->watches(), model_, interval_->bodies(), t, y_);
+  finder_.start(interval_->watches(), model_, interval_->bodies(), t, y_, opt_.rtol, opt_.atol);
   recorder_.sample(t, y_);
   recorder_.check_normal_force(t, y_, interval_->bodies());
 }
@@ -264,6 +264,7 @@ RunResult Simulation::run() {
       ends_vibro_impact(events_, std::min(t, opt_.t_end),
                         stats_.termination == Termination::completed, at_rest);
   result.events = std::move(events_);
+  result.graze = finder_.first_graze();
 
   const StepperStats& s = stepper_->stats();
   Stats& st = result.stats;

@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <iomanip>
 #include <limits>
 #include <sstream>
 
@@ -84,6 +85,40 @@ TrustReport finish(const Model& model, const RunResult& run, const RunResult& sh
   return r;
 }
 
+
+// Ends the trust before the run's first near miss, if that comes before where it ends already,
+// with a warning a person reads; true if it did. The shadow cannot see it: run by the same
+// method, it may miss the same way.
+bool ends_at_graze(RunResult& run) {
+  Stats& st = run.stats;
+  if (!run.graze || !(run.graze->earliest < st.trusted_until)) return false;
+  const Graze& g = *run.graze;
+  st.trusted_until = g.earliest;
+  std::ostringstream why;
+  why.precision(3);
+  why << "events are trusted until t = " << std::setprecision(7) << g.earliest << " s: at t = "
+      << g.t << " s " << std::setprecision(3);
+  switch (g.of) {
+    case Graze::Of::speed:
+      why << "the speed of pellet " << g.pellet + 1 << " fell to " << g.value << " rad/s";
+      break;
+    case Graze::Of::gap:
+      why << "pellets " << g.pellet + 1 << " and " << g.other + 1 << " came within " << g.value
+          << " rad";
+      break;
+    case Graze::Of::limiter:
+      why << "pellet " << g.pellet + 1 << " came within " << g.value << " rad of limiter "
+          << g.other + 1;
+      break;
+  }
+  why << " and turned away, within the " << g.error << " the tolerance leaves uncertain: "
+      << "whether it "
+      << (g.of == Graze::Of::speed ? "stops" : g.of == Graze::Of::gap ? "collides" : "strikes")
+      << " there depends on differences below the tolerance (a grazing event); tighten rtol to "
+         "see whether the events after it converge";
+  run.warnings.push_back({"not_trusted", why.str(), -1, st.trusted_until, st.t_reached});
+  return true;
+}
 
 double largest_of_estimates(const Model& model, const Stats& st) {
   const double time_scale = event_tolerances(model).time_scale;
@@ -170,6 +205,7 @@ void apply_check(const Model& model, const RunResult& shadow, RunResult& run) {
   st.state_error = r.state_error;
   st.trusted_until = r.trusted_until;
   st.error_estimate = largest_of_estimates(model, st);
+  if (ends_at_graze(run)) return;
 
   std::ostringstream why;
   why.precision(7);
@@ -208,6 +244,7 @@ void apply_unchecked(const Model& model, RunResult& run) {
   st.state_error = consistency;
   st.trusted_until = st.t_reached;
   st.error_estimate = largest_of_estimates(model, st);
+  ends_at_graze(run);
 }
 
 }  // namespace vibro

@@ -1,5 +1,6 @@
 #include "core/watch.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 
@@ -55,6 +56,8 @@ HeldMargins held_margins(const Model& model, const Body& b, const Parts& p, doub
   return m;
 }
 
+}  // namespace
+
 double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                  const Vec& y) {
   switch (w.kind) {
@@ -87,8 +90,6 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
   }
   return 1.0;
 }
-
-}  // namespace
 
 bool depends_on_time_alone(const Watch& w) {
   return w.kind == WatchKind::release || w.kind == WatchKind::separation;
@@ -233,13 +234,59 @@ bool CrossingFinder::scan_between(const Watch& w, const Model& model,
   return true;
 }
 
+std::optional<Graze> CrossingFinder::near_miss(const Watch& w, double tm, double gm, double c,
+                                               double largest, const Vec& y) const {
+  // What the tolerance leaves uncertain in the watch: its error where the steps are held to
+  // rtol·|y| + atol, ten times over (the bound an estimate keeps). A speed is held relative to
+  // the speeds of this motion; an angle relative to itself.
+  const double scale =
+      w.kind == WatchKind::reversal ? largest : 1.0 + std::abs(y[phi_index(w.pellet)]);
+  const double error = 10.0 * (rtol_ * scale + atol_);
+  if (!(c > 0.0) || !(gm > 0.0) || !(gm < error)) return std::nullopt;
+  const Graze::Of of = w.kind == WatchKind::reversal ? Graze::Of::speed
+                       : w.kind == WatchKind::gap    ? Graze::Of::gap
+                                                     : Graze::Of::limiter;
+  // Pushed below zero by the error, the minimum would cross this much earlier.
+  return Graze{of, w.pellet, w.kind == WatchKind::limiter ? w.limiter : w.other, tm,
+               std::max(t_start_, tm - std::sqrt((gm + error) / c)), gm, error};
+}
+
+void CrossingFinder::track(const Watch& w, int index, double t, const Vec& y, double g,
+                           std::vector<Graze>& grazes) {
+  Track& k = tracks_[index];
+  k.largest = std::max(k.largest, g);
+  if (k.count >= 2 && k.g1 > k.g2 && g > k.g2) {
+    // The parabola through the last three samples: its vertex is the minimum.
+    const double d1 = (k.g2 - k.g1) / (k.t2 - k.t1), d2 = (g - k.g2) / (t - k.t2);
+    const double c = (d2 - d1) / (t - k.t1);  // half the second derivative
+    const double tm = std::clamp(0.5 * (k.t1 + k.t2) - d1 / (2.0 * c), k.t1, t);
+    const double gm = k.g2 - c * (k.t2 - tm) * (k.t2 - tm);
+    if (auto graze = near_miss(w, tm, gm, c, k.largest, y)) grazes.push_back(*graze);
+  }
+  k.t1 = k.t2;
+  k.g1 = k.g2;
+  k.t2 = t;
+  k.g2 = g;
+  ++k.count;
+}
+
 void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model,
-                           const std::vector<Body>& bodies, double t0, const Vec& y0) {
+                           const std::vector<Body>& bodies, double t0, const Vec& y0,
+                           double rtol, double atol) {
+  t_start_ = t0;
+  rtol_ = rtol;
+  atol_ = atol;
+  tracks_.assign(watches.size(), Track{});
   last_.resize(watches.size());
   armed_.assign(watches.size(), false);
   for (std::size_t w = 0; w < watches.size(); ++w) {
     last_[w] = evaluate(watches[w], model, bodies, t0, y0);
     armed_[w] = last_[w] > 0.0;
+    if (tracks_near_misses(watches[w].kind)) {
+      std::vector<Graze> none;
+      track(watches[w], static_cast<int>(w), t0, y0, raw_value(watches[w], model, bodies, t0, y0),
+            none);
+    }
   }
 }
 

@@ -3,9 +3,11 @@
 // the first time g falls to zero or below after having been positive.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/model.h"
+#include "core/result.h"
 #include "core/motion.h"
 #include "core/ode.h"
 
@@ -41,6 +43,15 @@ struct Watch {
 
 double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                 const Vec& y);
+// Whether near misses of the watch are tracked: those of the motion (a reversal, a gap, the way
+// to a limiter), not the thresholds of forces (release, separation, normal), which depend on
+// time alone or on a kink.
+inline bool tracks_near_misses(WatchKind kind) {
+  return kind == WatchKind::reversal || kind == WatchKind::gap || kind == WatchKind::limiter;
+}
+// The watch's own value, not deflated.
+double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+                 const Vec& y);
 // A watch of time alone: release and separation follow the forces on a body whose place does not
 // change (held, or moving as one), so g(t) is a sum of cosines. At t, `rate` is |dg/dt| and
 // `curvature` bounds |d²g/dt²| everywhere: g(t + Δ) ≥ g(t) − rate·Δ − curvature·Δ²/2.
@@ -80,6 +91,7 @@ struct Crossing {
   double t;
 };
 
+
 // Finds the first crossing of every watch over samples of each step's dense output (never only
 // at step ends), refines the earliest ones with Brent's method to round-off, and returns those
 // within `simultaneous` of the earliest, sorted by time.
@@ -87,8 +99,12 @@ class CrossingFinder {
  public:
   // At the start of a segment: a watch arms once it is positive, so a segment that starts on
   // an event (g = 0, e.g. right after a reversal) does not find it again.
+  // The tolerances tell a near miss (a Graze) from a clear one.
   void start(const std::vector<Watch>& watches, const Model& model,
-             const std::vector<Body>& bodies, double t0, const Vec& y0);
+             const std::vector<Body>& bodies, double t0, const Vec& y0, double rtol, double atol);
+
+  // The earliest near miss of the run so far, if any.
+  const std::optional<Graze>& first_graze() const { return first_graze_; }
 
   // The step (t_prev, times.back()] with the states at the sample times (increasing, the last
   // one the step's end); `dense(t, y)` evaluates the step's dense output.
@@ -106,8 +122,25 @@ class CrossingFinder {
                     const Vec& y, double t_a, double g_a, double t_b, double g_b, double& lo,
                     double& hi, double& g_lo, double& g_hi) const;
 
+  // Samples of a watch of the motion, for its minima: the last two (time, raw value), and the
+  // largest value seen this interval (a speed's error scales with the speed).
+  struct Track {
+    double t1 = 0.0, g1 = 0.0, t2 = 0.0, g2 = 0.0, largest = 0.0;
+    int count = 0;
+  };
+  // The near miss of watch w with a minimum gm at tm and half its second derivative c: one
+  // when gm lies within the watch's error (relative to the largest value it had, for a speed).
+  std::optional<Graze> near_miss(const Watch& w, double tm, double gm, double c, double largest,
+                                 const Vec& y) const;
+  // Feeds one sample of watch w to its track; a minimum within the error becomes a Graze.
+  void track(const Watch& w, int index, double t, const Vec& y, double g,
+             std::vector<Graze>& grazes);
+
   std::vector<double> last_;
   std::vector<bool> armed_;
+  std::vector<Track> tracks_;
+  double t_start_ = 0.0, rtol_ = 0.0, atol_ = 0.0;
+  std::optional<Graze> first_graze_;
   Vec scratch_, scratch_left_;  // dense states while refining roots, kept to avoid allocation
 };
 

@@ -69,11 +69,16 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
     double a, b, fa, fb;
   };
   std::vector<Bracket> brackets;
+  std::vector<Graze> grazes;
   for (std::size_t w = 0; w < watches.size(); ++w) {
     const bool of_time = depends_on_time_alone(watches[w]);
+    const bool near_misses = tracks_near_misses(watches[w].kind);
     for (std::size_t k = 0; k < times.size(); ++k) {
       const double t_before = k == 0 ? t_prev : times[k - 1];
       const double g = evaluate(watches[w], model, bodies, times[k], states[k]);
+      if (near_misses && armed_[w] && g > 0.0)
+        track(watches[w], static_cast<int>(w), times[k], states[k],
+              raw_value(watches[w], model, bodies, times[k], states[k]), grazes);
       if (armed_[w] && of_time) {
         Bracket first{static_cast<int>(w), 0.0, 0.0, 0.0, 0.0};
         if (scan_between(watches[w], model, bodies, states[k], t_before, last_[w], times[k], g,
@@ -145,6 +150,33 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
     if (!added) break;
   }
   std::erase_if(found, [&](const Crossing& c) { return c.t > earliest + simultaneous; });
+  auto keep = [&](const Graze& g) {
+    if (!first_graze_ || g.earliest < first_graze_->earliest) first_graze_ = g;
+  };
+  // Near misses before the step's first event (after it, another interval starts).
+  for (const Graze& g : grazes)
+    if (g.t < earliest) keep(g);
+  // A body that turns within its error of the limiter ahead of it may as well have struck it.
+  if (std::isfinite(earliest)) {
+    dense(earliest, y);
+    Vec& ya_turn = scratch_left_;
+    ya_turn.resize(y.size());
+    for (const Crossing& c : found) {
+      if (watches[c.watch].kind != WatchKind::reversal) continue;
+      for (std::size_t w = 0; w < watches.size(); ++w) {
+        const Watch& lim = watches[w];
+        if (lim.kind != WatchKind::limiter || lim.body != watches[c.watch].body) continue;
+        // At the turn the body is at rest: the way left is the minimum, and half its second
+        // derivative comes from a point before it.
+        const double before = earliest - 0.5 * (earliest - t_prev);
+        dense(before, ya_turn);
+        const double g = raw_value(lim, model, bodies, earliest, y);
+        const double c = (raw_value(lim, model, bodies, before, ya_turn) - g) /
+                         ((earliest - before) * (earliest - before));
+        if (auto graze = near_miss(lim, earliest, g, c, 0.0, y)) keep(*graze);
+      }
+    }
+  }
   std::sort(found.begin(), found.end(),
             [](const Crossing& x, const Crossing& y) { return x.t < y.t; });
   return found;

@@ -255,6 +255,10 @@ event by event:
   ten times the event-time error before the earlier of the two events (the true sequence may part
   earlier than either run: a reference put an impact 1.4 ms before them when they were 0.5 ms
   apart), but not before the last event both list alike. A `not_trusted` warning names both events.
+- A *near miss* ends `stats.trusted_until` too, where the shadow is blind to it: a body's speed, a
+  gap or the way to a limiter that comes within ten times its tolerance's error of zero and turns
+  away (docs/MODEL.md). Its event depends on differences below the tolerance, and a shadow of the
+  same method misses it alike.
 
 Why this mechanism: the shadow's error is about a tenth of the run's, so the difference estimates
 the run's error without a model of how errors propagate through impacts, sticking and chatter

@@ -61,6 +61,33 @@ TEST(Trust, AGrazingApproachEndsTheTrust) {
   EXPECT_TRUE(said);
 }
 
+// A frictionless swing that turns `short_by` rad before a limiter at 0.5 rad.
+RunResult swing_short_of_a_limiter(double short_by) {
+  const double theta = 0.5, top = theta - short_by;
+  Model m = testing::one_pellet(0.0, 0.0, 0.0);
+  m.pellets[0].dphi0 = std::sqrt(2.0 * m.g * (1.0 - std::cos(top)) / m.R);
+  m.limiters = {{theta, 0.8, false, -1, {}}};
+  return simulate(m, testing::recorded(m, 1.0, Method::dop853, 1e-10));
+}
+
+TEST(Trust, ATurnWithinTheErrorOfALimiterEndsTheTrust) {
+  // 1e-9 rad short, within ten times what rtol 1e-10 holds the angle to: whether it strikes
+  // the limiter is not decided, and a shadow of the same method turns alike.
+  const RunResult graze = swing_short_of_a_limiter(1e-9);
+  ASSERT_FALSE(graze.events.empty());
+  const Event& turn = graze.events.front();
+  ASSERT_EQ(turn.kind, EventKind::reversal);
+  EXPECT_LT(graze.stats.trusted_until, turn.t);
+  EXPECT_GT(graze.stats.trusted_until, 0.9 * turn.t);
+  bool said = false;
+  for (const Warning& w : graze.warnings)
+    said = said || (w.code == "not_trusted" && w.message.find("limiter 1") != std::string::npos);
+  EXPECT_TRUE(said);
+  // 1e-3 rad short it clearly turns: trusted to the end.
+  const RunResult clear = swing_short_of_a_limiter(1e-3);
+  EXPECT_EQ(clear.stats.trusted_until, clear.stats.t_reached);
+}
+
 TEST(Trust, TheCheckCanBeTurnedOff) {
   Scene scene = testing::preset("paper");
   scene.sim.check = false;
