@@ -91,6 +91,13 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
   return 1.0;
 }
 
+double closing_rate(const Watch& w, const std::vector<Body>& bodies, const Vec& y) {
+  if (w.deflation != 0) return 0.0;
+  if (w.kind == WatchKind::gap) return y[dphi_index(w.other)] - y[dphi_index(w.pellet)];
+  if (w.kind == WatchKind::limiter) return -bodies[w.body].s * y[dphi_index(w.pellet)];
+  return 0.0;
+}
+
 bool depends_on_time_alone(const Watch& w) {
   return w.kind == WatchKind::release || w.kind == WatchKind::separation;
 }
@@ -278,9 +285,11 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
   atol_ = atol;
   tracks_.assign(watches.size(), Track{});
   last_.resize(watches.size());
+  closing_.resize(watches.size());
   armed_.assign(watches.size(), false);
   for (std::size_t w = 0; w < watches.size(); ++w) {
     last_[w] = evaluate(watches[w], model, bodies, t0, y0);
+    closing_[w] = closing_rate(watches[w], bodies, y0);
     armed_[w] = last_[w] > 0.0;
     if (tracks_near_misses(watches[w].kind)) {
       std::vector<Graze> none;

@@ -49,6 +49,9 @@ double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bod
 inline bool tracks_near_misses(WatchKind kind) {
   return kind == WatchKind::reversal || kind == WatchKind::gap || kind == WatchKind::limiter;
 }
+// The rate of change of a gap or of the way to a limiter (from the speeds in the state), for a
+// watch that is not deflated; 0 for the others.
+double closing_rate(const Watch& w, const std::vector<Body>& bodies, const Vec& y);
 // The watch's own value, not deflated.
 double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                  const Vec& y);
@@ -136,7 +139,15 @@ class CrossingFinder {
   void track(const Watch& w, int index, double t, const Vec& y, double g,
              std::vector<Graze>& grazes);
 
+  // From (t, g) closing at `rate` < 0, a meeting before t_end stepped over by the samples: the
+  // bracket of its crossing, or false if there is none.
+  template <class Dense>
+  bool march(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+             double g, double rate, double t_end, Dense& dense, double& lo, double& hi,
+             double& g_lo, double& g_hi);
+
   std::vector<double> last_;
+  std::vector<double> closing_;  // the rate of a gap or the way to a limiter at the last sample
   std::vector<bool> armed_;
   std::vector<Track> tracks_;
   double t_start_ = 0.0, rtol_ = 0.0, atol_ = 0.0;
