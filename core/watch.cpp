@@ -91,11 +91,29 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
   return 1.0;
 }
 
-double closing_rate(const Watch& w, const std::vector<Body>& bodies, const Vec& y) {
-  if (w.deflation != 0) return 0.0;
-  if (w.kind == WatchKind::gap) return y[dphi_index(w.other)] - y[dphi_index(w.pellet)];
-  if (w.kind == WatchKind::limiter) return -bodies[w.body].s * y[dphi_index(w.pellet)];
-  return 0.0;
+Closing closing(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+                const Vec& y) {
+  Closing c;
+  c.value = raw_value(w, model, bodies, t, y) - (w.deflation != 0 ? w.g0 : 0.0);
+  switch (w.kind) {
+    case WatchKind::gap:
+      c.rate = y[dphi_index(w.other)] - y[dphi_index(w.pellet)];
+      break;
+    case WatchKind::limiter:
+      c.rate = -bodies[w.body].s * y[dphi_index(w.pellet)];
+      break;
+    case WatchKind::reversal: {
+      const Body& b = bodies[w.body];
+      const double phi = y[phi_index(w.pellet)];
+      c.rate = b.s * SlidingLaw(model).acceleration(body_force(model, b, t), body_mass(model, b),
+                                                    std::cos(phi), std::sin(phi),
+                                                    y[dphi_index(w.pellet)], b.s);
+      break;
+    }
+    default:
+      break;
+  }
+  return c;
 }
 
 bool depends_on_time_alone(const Watch& w) {
@@ -289,9 +307,9 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
   armed_.assign(watches.size(), false);
   for (std::size_t w = 0; w < watches.size(); ++w) {
     last_[w] = evaluate(watches[w], model, bodies, t0, y0);
-    closing_[w] = closing_rate(watches[w], bodies, y0);
+    if (follows_motion(watches[w].kind)) closing_[w] = closing(watches[w], model, bodies, t0, y0);
     armed_[w] = last_[w] > 0.0;
-    if (tracks_near_misses(watches[w].kind)) {
+    if (follows_motion(watches[w].kind)) {
       std::vector<Graze> none;
       track(watches[w], static_cast<int>(w), t0, y0, raw_value(watches[w], model, bodies, t0, y0),
             none);

@@ -43,15 +43,20 @@ struct Watch {
 
 double evaluate(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                 const Vec& y);
-// Whether near misses of the watch are tracked: those of the motion (a reversal, a gap, the way
-// to a limiter), not the thresholds of forces (release, separation, normal), which depend on
-// time alone or on a kink.
-inline bool tracks_near_misses(WatchKind kind) {
+// Whether the finder follows a watch between samples, and tracks its near misses: one of the
+// motion (a body's speed, a gap, the way to a limiter), whose rate the state gives; not the
+// thresholds of forces (release, separation, normal), which depend on time alone or on a kink.
+inline bool follows_motion(WatchKind kind) {
   return kind == WatchKind::reversal || kind == WatchKind::gap || kind == WatchKind::limiter;
 }
-// The rate of change of a gap or of the way to a limiter (from the speeds in the state), for a
-// watch that is not deflated; 0 for the others.
-double closing_rate(const Watch& w, const std::vector<Body>& bodies, const Vec& y);
+// For a watch of the motion: its raw value less its value where a deflated watch started (the
+// event is where this reaches zero), and its rate of change.
+struct Closing {
+  double value = 0.0;
+  double rate = 0.0;
+};
+Closing closing(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
+                const Vec& y);
 // The watch's own value, not deflated.
 double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                  const Vec& y);
@@ -139,15 +144,15 @@ class CrossingFinder {
   void track(const Watch& w, int index, double t, const Vec& y, double g,
              std::vector<Graze>& grazes);
 
-  // From (t, g) closing at `rate` < 0, a meeting before t_end stepped over by the samples: the
-  // bracket of its crossing, or false if there is none.
+  // From t, closing as `c` says, a crossing before t_end that the samples stepped over: its
+  // bracket, or false if there is none.
   template <class Dense>
   bool march(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
-             double g, double rate, double t_end, Dense& dense, double& lo, double& hi,
-             double& g_lo, double& g_hi);
+             Closing c, double t_end, Dense& dense, double& lo, double& hi, double& g_lo,
+             double& g_hi);
 
   std::vector<double> last_;
-  std::vector<double> closing_;  // the rate of a gap or the way to a limiter at the last sample
+  std::vector<Closing> closing_;  // of a watch of the motion, at the last sample
   std::vector<bool> armed_;
   std::vector<Track> tracks_;
   double t_start_ = 0.0, rtol_ = 0.0, atol_ = 0.0;

@@ -60,27 +60,28 @@ double brent_root(F&& f, double a, double b, double fa, double fb) {
 
 template <class Dense>
 bool CrossingFinder::march(const Watch& w, const Model& model, const std::vector<Body>& bodies,
-                           double t, double g, double rate, double t_end, Dense& dense,
-                           double& lo, double& hi, double& g_lo, double& g_hi) {
+                           double t, Closing c, double t_end, Dense& dense, double& lo,
+                           double& hi, double& g_lo, double& g_hi) {
   // From each point to where the tangent meets zero: a watch curving toward zero lies below its
-  // tangent there, so a meeting is never stepped over; one curving away is followed to its
+  // tangent there, so a crossing is never stepped over; one curving away is followed to its
   // minimum, and the march stops once the tangent points past t_end or away.
   Vec& y = scratch_left_;  // sized by find
-  for (int k = 0; k < 64 && rate < 0.0; ++k) {
-    const double next = t + g / -rate;
+  for (int k = 0; k < 64 && c.rate < 0.0 && c.value > 0.0; ++k) {
+    const double next = t + c.value / -c.rate;
     if (!(next < t_end) || !(next > t)) return false;
     dense(next, y);
-    const double g_next = evaluate(w, model, bodies, next, y);
-    if (g_next <= 0.0) {
+    const Closing at = closing(w, model, bodies, next, y);
+    if (at.value <= 0.0) {
       lo = t;
       hi = next;
-      g_lo = g;
-      g_hi = g_next;
-      return true;
+      dense(t, y);
+      g_lo = evaluate(w, model, bodies, t, y);
+      dense(next, y);
+      g_hi = evaluate(w, model, bodies, next, y);
+      return g_lo > 0.0 && g_hi <= 0.0;
     }
     t = next;
-    g = g_next;
-    rate = closing_rate(w, bodies, y);
+    c = at;
   }
   return false;
 }
@@ -101,11 +102,11 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
   scratch_left_.resize(states.front().size());
   for (std::size_t w = 0; w < watches.size(); ++w) {
     const bool of_time = depends_on_time_alone(watches[w]);
-    const bool near_misses = tracks_near_misses(watches[w].kind);
+    const bool follows = follows_motion(watches[w].kind);
     for (std::size_t k = 0; k < times.size(); ++k) {
       const double t_before = k == 0 ? t_prev : times[k - 1];
       const double g = evaluate(watches[w], model, bodies, times[k], states[k]);
-      if (near_misses && armed_[w] && g > 0.0)
+      if (follows && armed_[w] && g > 0.0)
         track(watches[w], static_cast<int>(w), times[k], states[k],
               raw_value(watches[w], model, bodies, times[k], states[k]), grazes);
       if (armed_[w] && of_time) {
@@ -118,21 +119,21 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
       } else if (armed_[w] && g <= 0.0) {
         brackets.push_back({static_cast<int>(w), t_before, times[k], last_[w], g});
         break;
-      } else if (armed_[w] && closing_[w] < 0.0 &&
-                 t_before + last_[w] / -closing_[w] < times[k]) {
+      } else if (follows && armed_[w] && closing_[w].rate < 0.0 &&
+                 t_before + closing_[w].value / -closing_[w].rate < times[k]) {
         // Closing fast enough to meet before this sample, yet apart at it: the two may have
         // met and parted between (a pellet knocked onto another 7e-9 rad ahead at 0.8 rad/s,
         // pressed back at 1e4 rad/s², apart again at the step's samples 1e-4 s later).
         Bracket met{static_cast<int>(w), 0.0, 0.0, 0.0, 0.0};
-        if (march(watches[w], model, bodies, t_before, last_[w], closing_[w], times[k], dense,
-                  met.a, met.b, met.fa, met.fb)) {
+        if (march(watches[w], model, bodies, t_before, closing_[w], times[k], dense, met.a,
+                  met.b, met.fa, met.fb)) {
           brackets.push_back(met);
           break;
         }
       }
       if (g > 0.0) armed_[w] = true;
       last_[w] = g;
-      closing_[w] = closing_rate(watches[w], bodies, states[k]);
+      if (follows) closing_[w] = closing(watches[w], model, bodies, times[k], states[k]);
     }
   }
   std::sort(brackets.begin(), brackets.end(),
