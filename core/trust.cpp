@@ -55,17 +55,30 @@ double spacing(const RunResult& run, std::size_t k) {
   return std::min(before, after);
 }
 
-// Where the trust ends when the runs part at event k, with event times in error by `error`:
-// ten times that error (the bound the estimate keeps) before the earlier of their events k, but
-// never before the last event both list alike (or the start). The true sequence
+// How early a grazing event may come that a run and its shadow put at t, s: a contact decided by
+// a position error δ (ten times what the tolerance holds an angle to) under accelerations up to
+// a (gravity and the largest force) moves by up to sqrt(2δ/a). A run and its shadow that part
+// at a grazing collision both put it 5e-5 s after a reference did, far more than their events'
+// error before it.
+double grazing_window(const Model& model, const Stats& st, double phi) {
+  double a = model.g / model.R;
+  for (const Pellet& p : model.pellets) a += std::abs(p.force.F0) / (p.m * model.R);
+  const double delta = 10.0 * (st.rtol * (1.0 + std::abs(phi)) + st.atol);
+  return a > 0.0 ? std::sqrt(2.0 * delta / a) : 0.0;
+}
+
+// Where the trust ends when the runs part at event k: `margin` before the earlier of their
+// events k, but never before the last event both list alike (or the start). The true sequence
 // may part earlier than either run: a reference listed an impact 1.4 ms before the first event
-// the runs listed otherwise, their times 0.5 ms apart.
-double trust_end(const RunResult& run, const RunResult& shadow, std::size_t k, double error) {
+// the runs listed otherwise, their times 0.5 ms apart. The margin is ten times the event times'
+// error (the bound the estimate keeps), and where the runs list different events, at least the
+// grazing window.
+double trust_end(const RunResult& run, const RunResult& shadow, std::size_t k, double margin) {
   double first = std::numeric_limits<double>::infinity();
   if (k < run.events.size()) first = run.events[k].t;
   if (k < shadow.events.size()) first = std::min(first, shadow.events[k].t);
   const double last = k == 0 ? 0.0 : std::min(run.events[k - 1].t, shadow.events[k - 1].t);
-  return std::max(last, first - 10.0 * error);
+  return std::max(last, first - margin);
 }
 
 // The final states' difference completes a report.
@@ -167,7 +180,7 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     if (dt > 0.1 * spacing(run, k) && dt > explained) {
       r.unresolved = static_cast<int>(k);
       r.trusted_until =
-          std::min(r.trusted_until, trust_end(run, shadow, k, std::max(dt, r.event_time_error)));
+          std::min(r.trusted_until, trust_end(run, shadow, k, 10.0 * std::max(dt, r.event_time_error)));
       return finish(model, run, shadow, r);
     }
     // Errors the run and its shadow share, the shadow cannot see: the round-off of event times
@@ -181,12 +194,17 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
   // The first event one run lists and the other does not (or lists otherwise).
   if (k < n && !listed_alike(run.events[k], shadow.events[k])) {
     r.first_difference = static_cast<int>(k);
-    r.trusted_until = std::min(r.trusted_until, trust_end(run, shadow, k, r.event_time_error));
+    const Event& e = run.events[k].t < shadow.events[k].t ? run.events[k] : shadow.events[k];
+    const double window = grazing_window(model, run.stats, e.phi);
+    r.trusted_until = std::min(
+        r.trusted_until, trust_end(run, shadow, k, std::max(10.0 * r.event_time_error, window)));
   } else if (k == n && run.events.size() != shadow.events.size()) {
     const RunResult& longer = run.events.size() > n ? run : shadow;
     if (longer.events[n].t <= t_common) {
       r.first_difference = static_cast<int>(n);
-      r.trusted_until = std::min(r.trusted_until, trust_end(run, shadow, n, r.event_time_error));
+      const double window = grazing_window(model, run.stats, longer.events[n].phi);
+      r.trusted_until = std::min(
+          r.trusted_until, trust_end(run, shadow, n, std::max(10.0 * r.event_time_error, window)));
     }
   }
   return finish(model, run, shadow, r);
