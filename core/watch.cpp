@@ -276,32 +276,13 @@ std::optional<Graze> CrossingFinder::near_miss(const Watch& w, double tm, double
                std::max(t_start_, tm - std::sqrt((gm + error) / c)), gm, error};
 }
 
-void CrossingFinder::track(const Watch& w, int index, double t, const Vec& y, double g,
-                           std::vector<Graze>& grazes) {
-  Track& k = tracks_[index];
-  k.largest = std::max(k.largest, g);
-  if (k.count >= 2 && k.g1 > k.g2 && g > k.g2) {
-    // The parabola through the last three samples: its vertex is the minimum.
-    const double d1 = (k.g2 - k.g1) / (k.t2 - k.t1), d2 = (g - k.g2) / (t - k.t2);
-    const double c = (d2 - d1) / (t - k.t1);  // half the second derivative
-    const double tm = std::clamp(0.5 * (k.t1 + k.t2) - d1 / (2.0 * c), k.t1, t);
-    const double gm = k.g2 - c * (k.t2 - tm) * (k.t2 - tm);
-    if (auto graze = near_miss(w, tm, gm, c, k.largest, y)) grazes.push_back(*graze);
-  }
-  k.t1 = k.t2;
-  k.g1 = k.g2;
-  k.t2 = t;
-  k.g2 = g;
-  ++k.count;
-}
-
 void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model,
                            const std::vector<Body>& bodies, double t0, const Vec& y0,
                            double rtol, double atol) {
   t_start_ = t0;
   rtol_ = rtol;
   atol_ = atol;
-  tracks_.assign(watches.size(), Track{});
+  largest_.assign(watches.size(), 0.0);
   last_.resize(watches.size());
   closing_.resize(watches.size());
   armed_.assign(watches.size(), false);
@@ -309,11 +290,7 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
     last_[w] = evaluate(watches[w], model, bodies, t0, y0);
     if (follows_motion(watches[w].kind)) closing_[w] = closing(watches[w], model, bodies, t0, y0);
     armed_[w] = last_[w] > 0.0;
-    if (follows_motion(watches[w].kind)) {
-      std::vector<Graze> none;
-      track(watches[w], static_cast<int>(w), t0, y0, raw_value(watches[w], model, bodies, t0, y0),
-            none);
-    }
+    largest_[w] = std::max(0.0, closing_[w].value);
   }
 }
 

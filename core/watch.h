@@ -130,19 +130,18 @@ class CrossingFinder {
                     const Vec& y, double t_a, double g_a, double t_b, double g_b, double& lo,
                     double& hi, double& g_lo, double& g_hi) const;
 
-  // Samples of a watch of the motion, for its minima: the last two (time, raw value), and the
-  // largest value seen this interval (a speed's error scales with the speed).
-  struct Track {
-    double t1 = 0.0, g1 = 0.0, t2 = 0.0, g2 = 0.0, largest = 0.0;
-    int count = 0;
-  };
   // The near miss of watch w with a minimum gm at tm and half its second derivative c: one
   // when gm lies within the watch's error (relative to the largest value it had, for a speed).
   std::optional<Graze> near_miss(const Watch& w, double tm, double gm, double c, double largest,
                                  const Vec& y) const;
-  // Feeds one sample of watch w to its track; a minimum within the error becomes a Graze.
-  void track(const Watch& w, int index, double t, const Vec& y, double g,
-             std::vector<Graze>& grazes);
+  // The minimum of watch w between two samples where it turned from closing (a) to opening (b),
+  // located on the dense output where its rate is zero: below zero, the bracket of a crossing
+  // the samples stepped over (true); above it, a near miss if it is one.
+  template <class Dense>
+  bool minimum_between(const Watch& w, int index, const Model& model,
+                       const std::vector<Body>& bodies, double t_a, const Closing& a,
+                       double t_b, const Closing& b, Dense& dense, double& lo, double& hi,
+                       double& g_lo, double& g_hi, std::vector<Graze>& grazes);
 
   // From t, closing as `c` says, a crossing before t_end that the samples stepped over: its
   // bracket, or false if there is none.
@@ -154,7 +153,7 @@ class CrossingFinder {
   std::vector<double> last_;
   std::vector<Closing> closing_;  // of a watch of the motion, at the last sample
   std::vector<bool> armed_;
-  std::vector<Track> tracks_;
+  std::vector<double> largest_;  // of a watch of the motion this interval (a speed's scale)
   double t_start_ = 0.0, rtol_ = 0.0, atol_ = 0.0;
   std::optional<Graze> first_graze_;
   Vec scratch_, scratch_left_;  // dense states while refining roots, kept to avoid allocation

@@ -87,6 +87,35 @@ bool CrossingFinder::march(const Watch& w, const Model& model, const std::vector
 }
 
 template <class Dense>
+bool CrossingFinder::minimum_between(const Watch& w, int index, const Model& model,
+                                     const std::vector<Body>& bodies, double t_a,
+                                     const Closing& a, double t_b, const Closing& b, Dense& dense,
+                                     double& lo, double& hi, double& g_lo, double& g_hi,
+                                     std::vector<Graze>& grazes) {
+  Vec& y = scratch_left_;  // sized by find
+  const double tm = brent_root(
+      [&](double t) {
+        dense(t, y);
+        return -closing(w, model, bodies, t, y).rate;
+      },
+      t_a, t_b, -a.rate, -b.rate);
+  dense(tm, y);
+  const Closing m = closing(w, model, bodies, tm, y);
+  if (m.value <= 0.0) {
+    lo = t_a;
+    hi = tm;
+    g_hi = evaluate(w, model, bodies, tm, y);
+    dense(t_a, y);
+    g_lo = evaluate(w, model, bodies, t_a, y);
+    return g_lo > 0.0 && g_hi <= 0.0;
+  }
+  // Half the second derivative there, from the rates either side.
+  const double c = 0.5 * (b.rate - a.rate) / (t_b - t_a);
+  if (auto graze = near_miss(w, tm, m.value, c, largest_[index], y)) grazes.push_back(*graze);
+  return false;
+}
+
+template <class Dense>
 std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, const Model& model,
                                            const std::vector<Body>& bodies, double t_prev,
                                            const std::vector<double>& times,
@@ -106,9 +135,6 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
     for (std::size_t k = 0; k < times.size(); ++k) {
       const double t_before = k == 0 ? t_prev : times[k - 1];
       const double g = evaluate(watches[w], model, bodies, times[k], states[k]);
-      if (follows && armed_[w] && g > 0.0)
-        track(watches[w], static_cast<int>(w), times[k], states[k],
-              raw_value(watches[w], model, bodies, times[k], states[k]), grazes);
       if (armed_[w] && of_time) {
         Bracket first{static_cast<int>(w), 0.0, 0.0, 0.0, 0.0};
         if (scan_between(watches[w], model, bodies, states[k], t_before, last_[w], times[k], g,
@@ -131,9 +157,23 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
           break;
         }
       }
+      Closing now;
+      if (follows) {
+        now = closing(watches[w], model, bodies, times[k], states[k]);
+        largest_[w] = std::max(largest_[w], now.value);
+        Bracket met{static_cast<int>(w), 0.0, 0.0, 0.0, 0.0};
+        if (armed_[w] && g > 0.0 && closing_[w].value > 0.0 && closing_[w].rate < 0.0 &&
+            now.rate > 0.0 &&
+            minimum_between(watches[w], static_cast<int>(w), model, bodies, t_before,
+                            closing_[w], times[k], now, dense, met.a, met.b, met.fa, met.fb,
+                            grazes)) {
+          brackets.push_back(met);
+          break;
+        }
+      }
       if (g > 0.0) armed_[w] = true;
       last_[w] = g;
-      if (follows) closing_[w] = closing(watches[w], model, bodies, times[k], states[k]);
+      if (follows) closing_[w] = now;
     }
   }
   std::sort(brackets.begin(), brackets.end(),
@@ -201,22 +241,17 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
   // A body that turns within its error of the limiter ahead of it may as well have struck it.
   if (std::isfinite(earliest)) {
     dense(earliest, y);
-    Vec& ya_turn = scratch_left_;
-    ya_turn.resize(y.size());
     for (const Crossing& c : found) {
-      if (watches[c.watch].kind != WatchKind::reversal) continue;
-      for (std::size_t w = 0; w < watches.size(); ++w) {
-        const Watch& lim = watches[w];
-        if (lim.kind != WatchKind::limiter || lim.body != watches[c.watch].body) continue;
-        // At the turn the body is at rest: the way left is the minimum, and half its second
-        // derivative comes from a point before it.
-        const double before = earliest - 0.5 * (earliest - t_prev);
-        dense(before, ya_turn);
-        const double g = raw_value(lim, model, bodies, earliest, y);
-        const double c = (raw_value(lim, model, bodies, before, ya_turn) - g) /
-                         ((earliest - before) * (earliest - before));
-        if (auto graze = near_miss(lim, earliest, g, c, 0.0, y)) keep(*graze);
-      }
+      const Watch& turn = watches[c.watch];
+      if (turn.kind != WatchKind::reversal) continue;
+      // At the turn the way left to the limiter is at its minimum, curving up at half the
+      // deceleration.
+      const double curvature = -0.5 * closing(turn, model, bodies, earliest, y).rate;
+      for (const Watch& lim : watches)
+        if (lim.kind == WatchKind::limiter && lim.body == turn.body)
+          if (auto graze = near_miss(lim, earliest, raw_value(lim, model, bodies, earliest, y),
+                                     curvature, 0.0, y))
+            keep(*graze);
     }
   }
   std::sort(found.begin(), found.end(),
