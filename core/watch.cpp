@@ -91,25 +91,50 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
   return 1.0;
 }
 
+double Closing::time_to_zero() const {
+  if (!(value >= 0.0) || (value == 0.0 && !(rate > 0.0))) return 0.0;  // on or past its root
+  if (curvature < 0.0)  // the positive root of value + rate·τ + curvature·τ²/2
+    return (rate + std::sqrt(rate * rate - 2.0 * curvature * value)) / -curvature;
+  return rate < 0.0 ? value / -rate : std::numeric_limits<double>::infinity();
+}
+
+namespace {
+
+// The acceleration of the body pellet i belongs to: sliding, under the friction law; held, 0.
+double acceleration_of(const Model& model, const std::vector<Body>& bodies, int i, double t,
+                       const Vec& y) {
+  for (const Body& b : bodies) {
+    if (std::find(b.members.begin(), b.members.end(), i) == b.members.end()) continue;
+    if (b.mode != Mode::sliding) return 0.0;
+    const double phi = y[phi_index(b.leader())];
+    return SlidingLaw(model).acceleration(body_force(model, b, t), body_mass(model, b),
+                                          std::cos(phi), std::sin(phi), y[dphi_index(b.leader())],
+                                          b.s);
+  }
+  return 0.0;
+}
+
+}  // namespace
+
 Closing closing(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
-                const Vec& y) {
+                const Vec& y, bool with_curvature) {
   Closing c;
   c.value = raw_value(w, model, bodies, t, y) - (w.deflation != 0 ? w.g0 : 0.0);
   switch (w.kind) {
     case WatchKind::gap:
       c.rate = y[dphi_index(w.other)] - y[dphi_index(w.pellet)];
+      if (with_curvature)
+        c.curvature = acceleration_of(model, bodies, w.other, t, y) -
+                      acceleration_of(model, bodies, w.pellet, t, y);
       break;
     case WatchKind::limiter:
       c.rate = -bodies[w.body].s * y[dphi_index(w.pellet)];
+      if (with_curvature)
+        c.curvature = -bodies[w.body].s * acceleration_of(model, bodies, w.pellet, t, y);
       break;
-    case WatchKind::reversal: {
-      const Body& b = bodies[w.body];
-      const double phi = y[phi_index(w.pellet)];
-      c.rate = b.s * SlidingLaw(model).acceleration(body_force(model, b, t), body_mass(model, b),
-                                                    std::cos(phi), std::sin(phi),
-                                                    y[dphi_index(w.pellet)], b.s);
+    case WatchKind::reversal:
+      c.rate = bodies[w.body].s * acceleration_of(model, bodies, w.pellet, t, y);
       break;
-    }
     default:
       break;
   }
@@ -288,7 +313,8 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
   armed_.assign(watches.size(), false);
   for (std::size_t w = 0; w < watches.size(); ++w) {
     last_[w] = evaluate(watches[w], model, bodies, t0, y0);
-    if (follows_motion(watches[w].kind)) closing_[w] = closing(watches[w], model, bodies, t0, y0);
+    if (follows_motion(watches[w].kind))
+      closing_[w] = closing(watches[w], model, bodies, t0, y0, true);
     armed_[w] = last_[w] > 0.0;
     largest_[w] = std::max(0.0, closing_[w].value);
   }

@@ -50,13 +50,19 @@ inline bool follows_motion(WatchKind kind) {
   return kind == WatchKind::reversal || kind == WatchKind::gap || kind == WatchKind::limiter;
 }
 // For a watch of the motion: its raw value less its value where a deflated watch started (the
-// event is where this reaches zero), and its rate of change.
+// event is where this reaches zero), and its rates of change.
 struct Closing {
   double value = 0.0;
   double rate = 0.0;
+  double curvature = 0.0;  // the second derivative, where the state gives it (not a speed's)
+  // The time from here to where the quadratic these give meets zero, if it closes on it:
+  // curving toward zero, a gap that is still opening is pressed shut again.
+  double time_to_zero() const;
 };
+// The curvature costs the bodies' accelerations: asked for where it matters (an interval's start,
+// a march); between samples, the rates' difference stands in for it.
 Closing closing(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
-                const Vec& y);
+                const Vec& y, bool with_curvature = false);
 // The watch's own value, not deflated.
 double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                  const Vec& y);

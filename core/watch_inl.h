@@ -62,15 +62,15 @@ template <class Dense>
 bool CrossingFinder::march(const Watch& w, const Model& model, const std::vector<Body>& bodies,
                            double t, Closing c, double t_end, Dense& dense, double& lo,
                            double& hi, double& g_lo, double& g_hi) {
-  // From each point to where the tangent meets zero: a watch curving toward zero lies below its
-  // tangent there, so a crossing is never stepped over; one curving away is followed to its
-  // minimum, and the march stops once the tangent points past t_end or away.
+  // From each point to where its quadratic (or, without a curvature, its tangent) meets zero:
+  // there the watch has crossed, or it is followed on toward its minimum, until the prediction
+  // points past t_end or away.
   Vec& y = scratch_left_;  // sized by find
-  for (int k = 0; k < 64 && c.rate < 0.0 && c.value > 0.0; ++k) {
-    const double next = t + c.value / -c.rate;
+  for (int k = 0; k < 64; ++k) {
+    const double next = t + c.time_to_zero();
     if (!(next < t_end) || !(next > t)) return false;
     dense(next, y);
-    const Closing at = closing(w, model, bodies, next, y);
+    const Closing at = closing(w, model, bodies, next, y, true);
     if (at.value <= 0.0) {
       lo = t;
       hi = next;
@@ -145,11 +145,11 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
       } else if (armed_[w] && g <= 0.0) {
         brackets.push_back({static_cast<int>(w), t_before, times[k], last_[w], g});
         break;
-      } else if (follows && armed_[w] && closing_[w].rate < 0.0 &&
-                 t_before + closing_[w].value / -closing_[w].rate < times[k]) {
+      } else if (follows && armed_[w] && t_before + closing_[w].time_to_zero() < times[k]) {
         // Closing fast enough to meet before this sample, yet apart at it: the two may have
         // met and parted between (a pellet knocked onto another 7e-9 rad ahead at 0.8 rad/s,
-        // pressed back at 1e4 rad/s², apart again at the step's samples 1e-4 s later).
+        // pressed back at 1e4 rad/s², apart again at the step's samples 1e-4 s later; two
+        // pellets parting at 8e-5 rad/s, pressed together again within 5e-4 s, a step 8e-3 s).
         Bracket met{static_cast<int>(w), 0.0, 0.0, 0.0, 0.0};
         if (march(watches[w], model, bodies, t_before, closing_[w], times[k], dense, met.a,
                   met.b, met.fa, met.fb)) {
@@ -160,6 +160,8 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
       Closing now;
       if (follows) {
         now = closing(watches[w], model, bodies, times[k], states[k]);
+        if (watches[w].kind != WatchKind::reversal)
+          now.curvature = (now.rate - closing_[w].rate) / (times[k] - t_before);
         largest_[w] = std::max(largest_[w], now.value);
         Bracket met{static_cast<int>(w), 0.0, 0.0, 0.0, 0.0};
         if (armed_[w] && g > 0.0 && closing_[w].value > 0.0 && closing_[w].rate < 0.0 &&
