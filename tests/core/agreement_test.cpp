@@ -74,6 +74,36 @@ TEST(Agreement, AMeetingBetweenTwoSamplesIsFound) {
   }
 }
 
+// Two pellets parting after a collision at 8e-5 rad/s are pressed together again 5e-4 s
+// later, inside one step of 8e-3 s whose samples all found them apart and parting: DOP853 at
+// rtol 1e-10 and its shadow missed that collision, and vouched for the events after it
+// (differential trust scan, seed 3, scene 604). A quadratic prediction from the interval's start
+// marches to it.
+TEST(Agreement, APairPressedTogetherWithinOneStepMeetsAgain) {
+  Model m;
+  m.g = 9.81;
+  m.R = 0.7610421162704857;
+  m.alpha0 = 0.1488933563232422;
+  m.mu_s = 0.2753329798879047;
+  m.k_c = 1.0;
+  m.limiters = {{1.1775699392003371, 0.6963062286376953, false, -1, {0, 2}},
+                {-0.08852746937586886, 0.001514434814453125, false, -1, {}}};
+  m.pellets = {
+      {0.032209442488323074, 0.1479800252478801, 0.0, {0.8624261792941151, 3.612024620404413, 1.5636956735384728}},
+      {0.08832313703033735, 0.1479800272478801, 0.0, {2.423097767964952, 22.128482357633665, 3.9616312190761747}},
+      {0.022498412271316798, -1.596754157939899, -0.9797200927430944, {0.26436041635218843, 0.46502027182055916, 4.086033465706229}}};
+  const double t_end = 1.265706649071372;  // the steps, and so the samples, as the scan had them
+  const RunResult ref = simulate(m, testing::recorded(m, t_end, Method::dop853, 1e-13, 1e-15));
+  for (double rtol : {1e-8, 1e-9, 1e-10}) {
+    RunResult run = simulate(m, testing::recorded(m, t_end, Method::dop853, rtol, rtol * 1e-3));
+    RunResult head = ref;
+    // The first 0.06 s: the collisions of the pair, and the turn after them.
+    std::erase_if(run.events, [](const Event& e) { return e.t > 0.06; });
+    std::erase_if(head.events, [](const Event& e) { return e.t > 0.06; });
+    expect_same_events(run, head, 1e4 * rtol, "dop853 at rtol " + std::to_string(rtol));
+  }
+}
+
 }  // namespace
 }  // namespace vibro
 
