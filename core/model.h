@@ -22,7 +22,7 @@ struct Forcing {
   double F0 = 0.0;
   double Omega = 0.0;
   double psi = 0.0;
-  double at(double t) const { return F0 * std::cos(Omega * t + psi); }
+  double at(double t) const { return F0 != 0.0 ? F0 * std::cos(Omega * t + psi) : 0.0; }
   double rate(double t) const { return -F0 * Omega * std::sin(Omega * t + psi); }  // dF/dt
   bool active() const { return F0 != 0.0; }
 };

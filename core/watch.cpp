@@ -101,39 +101,40 @@ double Closing::time_to_zero() const {
 namespace {
 
 // The acceleration of the body pellet i belongs to: sliding, under the friction law; held, 0.
-double acceleration_of(const Model& model, const std::vector<Body>& bodies, int i, double t,
+double acceleration_of(const Model& model, const SlidingLaw& law, const Body& b, double t,
                        const Vec& y) {
-  for (const Body& b : bodies) {
-    if (std::find(b.members.begin(), b.members.end(), i) == b.members.end()) continue;
-    if (b.mode != Mode::sliding) return 0.0;
-    const double phi = y[phi_index(b.leader())];
-    return SlidingLaw(model).acceleration(body_force(model, b, t), body_mass(model, b),
-                                          std::cos(phi), std::sin(phi), y[dphi_index(b.leader())],
-                                          b.s);
-  }
-  return 0.0;
+  if (b.mode != Mode::sliding) return 0.0;
+  const double phi = y[phi_index(b.leader())];
+  return law.acceleration(body_force(model, b, t), body_mass(model, b), std::cos(phi),
+                          std::sin(phi), y[dphi_index(b.leader())], b.s);
+}
+
+const Body& body_of(const std::vector<Body>& bodies, int i) {
+  for (const Body& b : bodies)
+    if (std::find(b.members.begin(), b.members.end(), i) != b.members.end()) return b;
+  return bodies.front();  // every pellet is in a body
 }
 
 }  // namespace
 
-Closing closing(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
-                const Vec& y, bool with_curvature) {
+Closing closing(const Watch& w, const Model& model, const SlidingLaw& law,
+                const std::vector<Body>& bodies, double t, const Vec& y, bool with_curvature) {
   Closing c;
   c.value = raw_value(w, model, bodies, t, y) - (w.deflation != 0 ? w.g0 : 0.0);
   switch (w.kind) {
     case WatchKind::gap:
       c.rate = y[dphi_index(w.other)] - y[dphi_index(w.pellet)];
       if (with_curvature)
-        c.curvature = acceleration_of(model, bodies, w.other, t, y) -
-                      acceleration_of(model, bodies, w.pellet, t, y);
+        c.curvature = acceleration_of(model, law, body_of(bodies, w.other), t, y) -
+                      acceleration_of(model, law, body_of(bodies, w.pellet), t, y);
       break;
     case WatchKind::limiter:
       c.rate = -bodies[w.body].s * y[dphi_index(w.pellet)];
       if (with_curvature)
-        c.curvature = -bodies[w.body].s * acceleration_of(model, bodies, w.pellet, t, y);
+        c.curvature = -bodies[w.body].s * acceleration_of(model, law, bodies[w.body], t, y);
       break;
     case WatchKind::reversal:
-      c.rate = bodies[w.body].s * acceleration_of(model, bodies, w.pellet, t, y);
+      c.rate = bodies[w.body].s * acceleration_of(model, law, bodies[w.body], t, y);
       break;
     default:
       break;
@@ -305,6 +306,7 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
                            const std::vector<Body>& bodies, double t0, const Vec& y0,
                            double rtol, double atol) {
   t_start_ = t0;
+  law_.emplace(model);
   rtol_ = rtol;
   atol_ = atol;
   largest_.assign(watches.size(), 0.0);
@@ -314,7 +316,7 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
   for (std::size_t w = 0; w < watches.size(); ++w) {
     last_[w] = evaluate(watches[w], model, bodies, t0, y0);
     if (follows_motion(watches[w].kind))
-      closing_[w] = closing(watches[w], model, bodies, t0, y0, true);
+      closing_[w] = closing(watches[w], model, *law_, bodies, t0, y0, true);
     armed_[w] = last_[w] > 0.0;
     largest_[w] = std::max(0.0, closing_[w].value);
   }

@@ -6,6 +6,7 @@
 #include <optional>
 #include <vector>
 
+#include "core/dynamics.h"
 #include "core/model.h"
 #include "core/result.h"
 #include "core/motion.h"
@@ -61,8 +62,9 @@ struct Closing {
 };
 // The curvature costs the bodies' accelerations: asked for where it matters (an interval's start,
 // a march); between samples, the rates' difference stands in for it.
-Closing closing(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
-                const Vec& y, bool with_curvature = false);
+Closing closing(const Watch& w, const Model& model, const SlidingLaw& law,
+                const std::vector<Body>& bodies, double t, const Vec& y,
+                bool with_curvature = false);
 // The watch's own value, not deflated.
 double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                  const Vec& y);
@@ -161,6 +163,7 @@ class CrossingFinder {
   std::vector<bool> armed_;
   std::vector<double> largest_;  // of a watch of the motion this interval (a speed's scale)
   double t_start_ = 0.0, rtol_ = 0.0, atol_ = 0.0;
+  std::optional<SlidingLaw> law_;  // the model's, for the rates of speeds
   std::optional<Graze> first_graze_;
   Vec scratch_, scratch_left_;  // dense states while refining roots, kept to avoid allocation
 };

@@ -70,7 +70,7 @@ bool CrossingFinder::march(const Watch& w, const Model& model, const std::vector
     const double next = t + c.time_to_zero();
     if (!(next < t_end) || !(next > t)) return false;
     dense(next, y);
-    const Closing at = closing(w, model, bodies, next, y, true);
+    const Closing at = closing(w, model, *law_, bodies, next, y, true);
     if (at.value <= 0.0) {
       lo = t;
       hi = next;
@@ -96,11 +96,11 @@ bool CrossingFinder::minimum_between(const Watch& w, int index, const Model& mod
   const double tm = brent_root(
       [&](double t) {
         dense(t, y);
-        return -closing(w, model, bodies, t, y).rate;
+        return -closing(w, model, *law_, bodies, t, y).rate;
       },
       t_a, t_b, -a.rate, -b.rate);
   dense(tm, y);
-  const Closing m = closing(w, model, bodies, tm, y);
+  const Closing m = closing(w, model, *law_, bodies, tm, y);
   if (m.value <= 0.0) {
     lo = t_a;
     hi = tm;
@@ -159,7 +159,7 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
       }
       Closing now;
       if (follows) {
-        now = closing(watches[w], model, bodies, times[k], states[k]);
+        now = closing(watches[w], model, *law_, bodies, times[k], states[k]);
         if (watches[w].kind != WatchKind::reversal)
           now.curvature = (now.rate - closing_[w].rate) / (times[k] - t_before);
         largest_[w] = std::max(largest_[w], now.value);
@@ -248,7 +248,7 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
       if (turn.kind != WatchKind::reversal) continue;
       // At the turn the way left to the limiter is at its minimum, curving up at half the
       // deceleration.
-      const double curvature = -0.5 * closing(turn, model, bodies, earliest, y).rate;
+      const double curvature = -0.5 * closing(turn, model, *law_, bodies, earliest, y).rate;
       for (const Watch& lim : watches)
         if (lim.kind == WatchKind::limiter && lim.body == turn.body)
           if (auto graze = near_miss(lim, earliest, raw_value(lim, model, bodies, earliest, y),
