@@ -198,13 +198,17 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     }
     // Errors the run and its shadow share, the shadow cannot see: the round-off of event times
     // (a thousand ulps of the time scale and the time run, or of the angles an impact is found
-    // at), and from a summed chatter on, the summation's own error (chatter_time²/T0,
-    // docs/MODEL.md: both sum the same way).
+    // at), from a summed chatter on, the summation's own error (chatter_time²/T0, docs/MODEL.md:
+    // both sum the same way), and a bias of one method.
     summed = summed || run.events[k].kind == EventKind::chatter;
     const double round_off = std::max(1e3 * std::numeric_limits<double>::epsilon() * (time_scale + t),
                                       placement_round_off(run.events[k]));
     const double chatter = summed ? tol.chatter_time * tol.chatter_time / time_scale : 0.0;
-    r.event_time_error = std::max({r.event_time_error, dt, round_off, chatter});
+    // A run vouches for no less than a hundredth of what its tolerance asks, rtol·(T0 + t): a
+    // run and its shadow of one method that agree far better than asked may share the error
+    // (both 1e-12 s apart, a reference 2e-11 s away, rtol asking 1e-9 s).
+    const double asked = 1e-2 * run.stats.rtol * (time_scale + t);
+    r.event_time_error = std::max({r.event_time_error, dt, round_off, chatter, asked});
   }
   // The first event one run lists and the other does not (or lists otherwise).
   if (k < n && !listed_alike(run.events[k], shadow.events[k])) {

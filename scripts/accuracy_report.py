@@ -246,8 +246,10 @@ event by event:
 
 - `stats.event_time_error` is the largest time difference of the events listed alike (kind,
   pellets, limiter), and never below the errors the two runs share and the shadow cannot see: the
-  round-off of event times (`1e3·ε·(T0 + t)`, `T0 = sqrt(R/g)`), and from a summed chatter on the
-  summation's own error (`1e-8·T0`, docs/MODEL.md);
+  round-off of event times (`1e3·ε·(T0 + t)`, `T0 = sqrt(R/g)`, or `100·ε·(1 + |φ|)` over an
+  impact's approach speed), from a summed chatter on the summation's own error (`1e-8·T0`,
+  docs/MODEL.md), and a hundredth of what the tolerance asks, `1e-2·rtol·(T0 + t)` (a run and its
+  shadow of one method that agree far better than asked may share a bias);
 - `stats.state_error` is the largest difference of the final states (φ, and φ̇ times `T0`);
 - `stats.trusted_until` ends before the two first list different events, or where the times of an
   event differ by more than a tenth of the time to its neighbours and more than `1e3·rtol·(T0 + t)`
@@ -324,6 +326,7 @@ Together they found, and this issue fixed, with each scene kept in a regression 
 | the trust ended at the first event the run and its shadow listed otherwise; a reference put an impact 1.4 ms before both | the trust ends ten errors (and, where the events differ, a grazing window) before them |
 | grazing events and turns within the tolerance's error of a limiter, decided alike by a run and its shadow of one method | near misses end the trust |
 | impacts of pellets at large unwrapped angles meeting slowly: run and shadow agreed to 1e-14 s, round-off alone moved them 1e-11 s | the estimate's floor includes a hundred ulps of the angle over the approach speed |
+| estimates 10× to 700× short where a run and its shadow of one method agreed far better than the tolerance asked and shared the error | the estimate is never below a hundredth of what the tolerance asks |
 
 What remains: the trust check's blind spot, a bias that a run and its shadow share, is narrowed
 (near misses end the trust; the trust ends ten errors before the runs part) but not removed: the
