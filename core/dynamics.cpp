@@ -25,10 +25,16 @@ double body_free_acceleration(const Model& model, const Body& body, double t, do
          model.g / model.R * std::sin(phi);
 }
 
-SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bodies)
+SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bodies,
+                                 const Vec& y)
     : model_(model), bodies_(bodies), law_(model) {
   mass_.reserve(bodies.size());
-  for (const Body& b : bodies) mass_.push_back(body_mass(model, b));
+  normal_side_.reserve(bodies.size());
+  for (const Body& b : bodies) {
+    mass_.push_back(body_mass(model, b));
+    const int L = b.leader();
+    normal_side_.push_back(normal_per_mass(model, y[phi_index(L)], y[dphi_index(L)]) >= 0.0 ? 1 : -1);
+  }
 }
 
 // The hot loop of every run: each transcendental function is computed once per body.
@@ -58,8 +64,9 @@ void SegmentDynamics::rhs(double t, const Vec& y, Vec& dydt) const {
     if (!alone)
       for (int i : body.members) F += force(i);
     const double q = dphi * dphi + law_.gR * c;  // normal force per unit mass, over R
-    const double acc = law_.acceleration(F, mass_[b], c, sn, dphi, s);
-    const double n = R * (paper ? q : std::abs(q));  // g cos phi + R dphi², or its magnitude
+    const int side = normal_side_[b];
+    const double acc = law_.acceleration(F, mass_[b], c, sn, dphi, s, side);
+    const double n = R * (paper ? q : side * q);  // g cos phi + R dphi², or its magnitude
     for (int i : body.members) {
       const double m = model_.pellets[i].m;
       const double Fi = alone ? F : force(i);
@@ -96,8 +103,8 @@ void SegmentDynamics::jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) con
       dacc_dphi = -gR * (c - s * mu * sn);
       dacc_ddphi = -2.0 * s * mu * dphi;
     } else {
-      const double sq = n_raw >= 0.0 ? 1.0 : -1.0;
-      n = std::abs(n_raw);
+      const double sq = normal_side_[b];
+      n = sq * n_raw;
       dn_dphi *= sq;
       dn_ddphi *= sq;
       dacc_dphi = -gR * c + s * mu * sq * gR * sn;

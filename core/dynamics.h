@@ -32,8 +32,17 @@ struct SlidingLaw {
   // dphi in direction s: forcing, gravity and kinetic friction.
   double acceleration(double F, double M, double cos_phi, double sin_phi, double dphi,
                       int s) const {
+    return acceleration(F, M, cos_phi, sin_phi, dphi, s,
+                        dphi * dphi + gR * cos_phi >= 0.0 ? 1 : -1);
+  }
+  // The same with the bilateral law's normal force taken on one side of its zero (side ±1), not
+  // by its magnitude: a motion interval keeps one side, so its equations stay smooth where the
+  // force changes sign (the normal watch ends the interval there). An integrator stepping over
+  // the kink of |N| errs by the kink, whatever its error estimate says.
+  double acceleration(double F, double M, double cos_phi, double sin_phi, double dphi, int s,
+                      int side) const {
     return paper ? F / (M * R) - s * mu * dphi * dphi - gR * (sin_phi + s * mu * cos_phi)
-                 : F / (M * R) - gR * sin_phi - s * mu * std::abs(dphi * dphi + gR * cos_phi);
+                 : F / (M * R) - gR * sin_phi - s * mu * side * (dphi * dphi + gR * cos_phi);
   }
   bool paper;
   double R;   // m
@@ -43,7 +52,11 @@ struct SlidingLaw {
 
 class SegmentDynamics final : public OdeSystem {
  public:
-  SegmentDynamics(const Model& model, const std::vector<Body>& bodies);
+  // The bilateral law's normal force of each sliding body is taken on the side it has at y.
+  SegmentDynamics(const Model& model, const std::vector<Body>& bodies, const Vec& y);
+  // Sets a body's side of the normal force's zero (±1): one starting on the zero takes the side
+  // it moves to.
+  void set_normal_side(int body, int side) { normal_side_[body] = side; }
   int dimension() const override { return 3 * model_.size(); }
   void rhs(double t, const Vec& y, Vec& dydt) const override;
   void jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) const override;
@@ -52,6 +65,7 @@ class SegmentDynamics final : public OdeSystem {
   const Model& model_;
   const std::vector<Body>& bodies_;
   std::vector<double> mass_;  // per body
+  std::vector<int> normal_side_;  // per body: the sign of the bilateral law's normal force
   SlidingLaw law_;
 };
 

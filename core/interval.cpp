@@ -19,7 +19,7 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
                                const EventTolerances& tol)
     : model_(model),
       bodies_(std::move(bodies)),
-      dynamics_(model, bodies_) {
+      dynamics_(model, bodies_, y) {
   const PlaceRadii radii = place_radii(tol, y);
   const bool paper = model.friction == FrictionLaw::paper;
   for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) {
@@ -70,6 +70,7 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
       Watch w{WatchKind::normal, b, L};
       w.target = (on_root ? rate : n) < 0.0 ? -1.0 : 1.0;
       if (on_root) deflate(w, model, bodies_, t, y, w.target * rate, 0.0);
+      dynamics_.set_normal_side(b, static_cast<int>(w.target));
       watches_.push_back(w);
     }
   }

@@ -3,6 +3,7 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <sstream>
 
 #include "io/presets.h"
 #include "io/scene_json.h"
@@ -41,6 +42,12 @@ SimOptions recorded(const Model& model, double t_end, Method method, double rtol
   o.atol = atol;
   o.record.assign(model.size(), true);
   return o;
+}
+
+std::string method_at(Method method, double rtol) {
+  std::ostringstream s;
+  s << method_name(method) << " at rtol " << rtol;
+  return s.str();
 }
 
 std::vector<const Event*> events_of(const RunResult& run, EventKind kind) {

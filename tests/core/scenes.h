@@ -18,6 +18,8 @@ Scene preset(const std::string& name);
 // Options for t_end with every pellet recorded.
 SimOptions recorded(const Model& model, double t_end, Method method = Method::automatic,
                     double rtol = 1e-10, double atol = 1e-12);
+// "dop853 at rtol 1e-10", for messages.
+std::string method_at(Method method, double rtol);
 std::vector<const Event*> events_of(const RunResult& run, EventKind kind);
 bool all_finite(const RunResult& run);
 

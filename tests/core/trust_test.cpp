@@ -37,7 +37,7 @@ TEST(Trust, TheEventTimeEstimateTracksTheTrueError) {
       o.rtol = rtol;
       o.atol = rtol * 1e-3;
       const RunResult run = simulate(scene.model, o);
-      const std::string what = std::string(method_name(m)) + " at rtol " + std::to_string(rtol);
+      const std::string what = testing::method_at(m, rtol);
       ASSERT_EQ(run.events.size(), ref.events.size()) << what;
       EXPECT_TRUE(run.stats.check) << what;
       EXPECT_EQ(run.stats.trusted_until, run.stats.t_reached) << what;
