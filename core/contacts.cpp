@@ -118,10 +118,12 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
       const double phi = y[phi_index(p.behind)];
       const double press = relative_acceleration(b, a, phi);
       // Parting at w and pressed back at p, they meet again after 2w/p, and at k_c·w after
-      // that: the whole chatter lasts 2w/(p(1 − k_c)).
+      // that: the whole chatter lasts 2w/(p(1 − k_c)). They part by w²/(2p) at most, a gap
+      // that round-off alone may close or open.
       const double chatter = 2.0 * std::abs(approach) / (press * (1.0 - model.k_c));
-      if (press >= 0.0 &&
-          (std::abs(approach) <= criteria.v_merge || chatter <= criteria.chatter_time)) {
+      const double flight = approach * approach / (2.0 * press);
+      if (press >= 0.0 && (std::abs(approach) <= criteria.v_merge ||
+                           chatter <= criteria.chatter_time || flight <= criteria.flight)) {
         next[p.behind] = p.ahead;
         prev[p.ahead] = p.behind;
         grew = true;

@@ -33,11 +33,13 @@ void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double con
                    std::vector<PairContact>& pairs);
 
 // When touching pellets move on as one body: their forces press them together, and they would
-// otherwise collide again at once — equal speeds within `v_merge`, or a remaining chatter between
-// them shorter than `chatter_time` (its plastic limit).
+// otherwise collide again at once — equal speeds within `v_merge`, a remaining chatter between
+// them shorter than `chatter_time` (its plastic limit), or a flight apart within the round-off
+// of the gap (`flight`).
 struct JoinCriteria {
   double v_merge = 0.0;       // rad/s
   double chatter_time = 0.0;  // s
+  double flight = 0.0;        // rad
 };
 
 // The bodies after an instant, members in +φ order (modes are left to the caller). Pairs on the

@@ -26,7 +26,7 @@ EventTolerances event_tolerances(const Model& model) {
 PlaceRadii place_radii(const EventTolerances& tol, const Vec& y) {
   double scale = 1.0;
   for (int i = 0; phi_index(i) < y.size(); ++i) scale = std::max(scale, 1.0 + std::abs(y[phi_index(i)]));
-  return {tol.contact_distance * scale, tol.on_limiter * scale};
+  return {tol.contact_distance * scale, tol.on_limiter * scale, tol.flight_round_off * scale};
 }
 
 }  // namespace vibro

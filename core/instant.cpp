@@ -480,7 +480,7 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
   std::vector<PairContact> joinable = contacts.pairs;
   std::erase_if(joinable, [&](const PairContact& p) { return contains(contacts.parting, p); });
   out.bodies = join_touching(model, t, y, joinable, contacts.limiters, armed,
-                             {tol.v_merge, tol.chatter_time});
+                             {tol.v_merge, tol.chatter_time, place_radii(tol, y).flight_round_off});
 
   for (Body& body : out.bodies) {
     const int L = body.leader();

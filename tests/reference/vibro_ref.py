@@ -36,6 +36,7 @@ from scipy.optimize import brentq, minimize_scalar
 TWO_PI = 2.0 * math.pi
 SAME_INSTANT = 1e-12      # roots within 1e-12*(1+t) s are one instant (MODEL.md, docs/MODEL.md)
 TOUCH = 1e-10             # neighbours closer than 1e-10*(1+|phi|) rad touch (docs/MODEL.md)
+FLIGHT = 1e2 * 2.220446049250313e-16  # pressed pellets parting less (x (1+|phi|) rad) stay joined
 SPEED_AGREE = 1e-9        # touching pellets with speeds this close (x speed scale) may bond
 CHATTER_TIME = 1e-4       # a series shorter than 1e-4*sqrt(R/g) is summed (docs/MODEL.md)
 MAX_SWEEPS = 16           # an instant not settled after 16 sweeps is a cascade (docs/MODEL.md)
@@ -821,19 +822,20 @@ class Sim:
                 wall_ahead = last is not None and last[1] < 0
             for ps in self.groups(run, wall_behind, wall_ahead):
                 self.join(ps)
-        if M.k_c < 1.0:
-            self.join_chatter(chain)
+        self.join_chatter(chain)
 
     def join_chatter(self, chain):
-        """Join pellets whose chatter against each other would end within the chatter time.
+        """Join pellets whose chatter against each other would end within the chatter time, or
+        whose flights apart would stay within the round-off of the gap.
 
         The touching pellets that the forces press into one group (see groups, whatever their
-        speeds) bounce on each other with k_c < 1; across every cut of the group the part ahead
+        speeds) bounce on each other with k_c; across every cut of the group the part ahead
         separates from the part behind at w (difference of their mean speeds) and is pressed
         back at p (difference of their mean free accelerations), so the chatter left there
-        lasts 2 w / (p (1 - k_c)).  When that is shorter than the chatter time at every cut, the
-        group moves on as one body.  For two pellets this is the pair's own chatter; a third
-        pellet pushing on a pair is what presses the pair together."""
+        lasts 2 w / (p (1 - k_c)), and the parts fly apart by w^2 / (2 p) at most.  When at every
+        cut the chatter is shorter than the chatter time or the flight within FLIGHT, the group
+        moves on as one body.  For two pellets this is the pair's own chatter; a third pellet
+        pushing on a pair is what presses the pair together."""
         M = self.M
 
         def mean(ps, values):
@@ -844,13 +846,18 @@ class Sim:
             cuts = [q for q in range(len(group) - 1) if not self.bond[self.gap_after(group[q])]]
             if not cuts or any(self.limiter_between(self.gap_after(group[q])) for q in cuts):
                 continue
-            longest = 0.0
-            for q in cuts:
+            flight = FLIGHT * (1.0 + max(abs(self.phi[p]) for p in range(M.n)))
+
+            def bounded(q):
                 behind, ahead = group[:q + 1], group[q + 1:]
                 w = abs(mean(ahead, self.dphi) - mean(behind, self.dphi))
                 press = mean(behind, force) - mean(ahead, force)
-                longest = max(longest, math.inf if press <= 0 else 2 * w / (press * (1 - M.k_c)))
-            if longest < M.chatter_time:
+                if press <= 0:
+                    return False
+                chatter = math.inf if M.k_c >= 1.0 else 2 * w / (press * (1 - M.k_c))
+                return chatter < M.chatter_time or w * w / (2 * press) <= flight
+
+            if all(bounded(q) for q in cuts):
                 self.join(group)
 
     def join(self, ps):
