@@ -89,7 +89,7 @@ struct Stats {
   double error_estimate = 0.0;
   double energy_defect = 0.0;            // relative: E − E0 − work − impact losses, over the scale
   double first_integral_residual = 0.0;  // relative, unforced paper-law intervals; 0 if none
-  // Trust (API.md): from the check against a shadow solution at a tenth of the tolerance, or,
+  // Trust (API.md): from the check against a shadow solution at a tighter tolerance, or,
   // with the check off, from the run alone (which does not see event times).
   bool check = true;             // the shadow ran
   std::string check_method;      // the shadow's method and tolerance

@@ -13,7 +13,7 @@ struct SimOptions {
   Method method = Method::automatic;
   double rtol = 1e-9;
   double atol = 1e-12;
-  // Check the run against a shadow solution at a tenth of the tolerances (core/trust.h); off,
+  // Check the run against a shadow solution at tighter tolerances (core/trust.h); off,
   // the trust fields come from the run alone and cannot see event-time errors.
   bool check = true;
 

@@ -5,6 +5,7 @@
 #include <iomanip>
 #include <limits>
 #include <sstream>
+#include <tuple>
 
 #include "core/event_tolerances.h"
 
@@ -36,20 +37,19 @@ std::string describe_run_end(const RunResult& run) {
   return s.str();
 }
 
-// The time from event k to the nearest event of the run at another instant (or the run's
-// start or end).
-double spacing(const RunResult& run, std::size_t k) {
-  const double t = run.events[k].t;
+// The time from event k to the nearest event at another instant (or the run's start or end).
+double spacing(const std::vector<Event>& events, std::size_t k, double t_end) {
+  const double t = events[k].t;
   const double same = 1e-12 * (1.0 + std::abs(t));
-  double before = t, after = run.stats.t_reached - t;
+  double before = t, after = t_end - t;
   for (std::size_t j = k; j-- > 0;)
-    if (run.events[j].t < t - same) {
-      before = t - run.events[j].t;
+    if (events[j].t < t - same) {
+      before = t - events[j].t;
       break;
     }
-  for (std::size_t j = k + 1; j < run.events.size(); ++j)
-    if (run.events[j].t > t + same) {
-      after = run.events[j].t - t;
+  for (std::size_t j = k + 1; j < events.size(); ++j)
+    if (events[j].t > t + same) {
+      after = events[j].t - t;
       break;
     }
   return std::min(before, after);
@@ -73,11 +73,12 @@ double grazing_window(const Model& model, const Stats& st, double phi) {
 // the runs listed otherwise, their times 0.5 ms apart. The margin is ten times the event times'
 // error (the bound the estimate keeps), and where the runs list different events, at least the
 // grazing window.
-double trust_end(const RunResult& run, const RunResult& shadow, std::size_t k, double margin) {
+double trust_end(const std::vector<Event>& run, const std::vector<Event>& shadow, std::size_t k,
+                 double margin) {
   double first = std::numeric_limits<double>::infinity();
-  if (k < run.events.size()) first = run.events[k].t;
-  if (k < shadow.events.size()) first = std::min(first, shadow.events[k].t);
-  const double last = k == 0 ? 0.0 : std::min(run.events[k - 1].t, shadow.events[k - 1].t);
+  if (k < run.size()) first = run[k].t;
+  if (k < shadow.size()) first = std::min(first, shadow[k].t);
+  const double last = k == 0 ? 0.0 : std::min(run[k - 1].t, shadow[k - 1].t);
   return std::max(last, first - margin);
 }
 
@@ -154,18 +155,51 @@ double largest_of_estimates(const Model& model, const Stats& st) {
 
 }  // namespace
 
+std::vector<Event> by_instant(const std::vector<Event>& events) {
+  auto order = [](const Event& x, const Event& y) {
+    return std::tie(x.kind, x.limiter, x.pellets) < std::tie(y.kind, y.limiter, y.pellets);
+  };
+  std::vector<Event> out;
+  for (std::size_t i = 0; i < events.size();) {
+    const double t = events[i].t;
+    const auto first = static_cast<std::ptrdiff_t>(out.size());
+    for (; i < events.size() && events[i].t <= t + 1e-12 * (1.0 + std::abs(t)); ++i) {
+      const Event& e = events[i];
+      const bool merges = e.kind == EventKind::collision || e.kind == EventKind::limiter;
+      auto same = std::find_if(out.begin() + first, out.end(), [&](const Event& x) {
+        return merges && x.kind == e.kind && x.limiter == e.limiter;
+      });
+      if (same == out.end()) {
+        out.push_back(e);
+        same = out.end() - 1;
+      } else {
+        same->pellets.insert(same->pellets.end(), e.pellets.begin(), e.pellets.end());
+      }
+      if (merges) {
+        std::sort(same->pellets.begin(), same->pellets.end());
+        same->pellets.erase(std::unique(same->pellets.begin(), same->pellets.end()),
+                            same->pellets.end());
+      }
+    }
+    std::stable_sort(out.begin() + first, out.end(), order);
+  }
+  return out;
+}
+
 SimOptions check_options(const SimOptions& run) {
   SimOptions o = run;
-  o.rtol = std::max(run.rtol / 10.0, kSmallestRtol);
-  o.atol = std::max(run.atol / 10.0, kSmallestAtol);
   // Another method errs independently where the same one at a tighter tolerance may take the
-  // same steps: DOP853 checks DOPRI5 always (it is the cheaper at the tighter tolerance), and
-  // DOPRI5 checks DOP853 above rtol 1e-8 (where it costs no more). `auto` checks Radau IIA: an
-  // explicit method where the scene is not stiff (Radau's own shadow shared its bias on an
-  // ill-conditioned cascade), Radau IIA again where it is.
+  // same steps: DOP853 checks DOPRI5 (it is the cheaper at the tighter tolerance), and `auto`
+  // (an explicit method where the scene is not stiff) checks Radau IIA, whose own shadow shared
+  // its bias on an ill-conditioned cascade. Another method's error at one tolerance may be ten
+  // times the run's (Radau IIA at rtol 1e-7 erred as much as DOP853 at 1e-8 on a chaotic scene,
+  // and their difference was a tenth of the error): it runs at a hundredth of the tolerance.
+  // DOP853 and `auto` check themselves: DOPRI5 at a hundredth costs more than the 3× budget.
   if (run.method == Method::dopri5) o.method = Method::dop853;
-  if (run.method == Method::dop853 && run.rtol > 1e-8) o.method = Method::dopri5;
   if (run.method == Method::radau5) o.method = Method::automatic;
+  const double tighter = o.method == run.method ? 10.0 : 100.0;
+  o.rtol = std::max(run.rtol / tighter, kSmallestRtol);
+  o.atol = std::max(run.atol / tighter, kSmallestAtol);
   o.record.clear();
   o.check = false;
   return o;
@@ -177,32 +211,33 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
   r.trusted_until = t_common;
   const EventTolerances tol = event_tolerances(model);
   const double time_scale = tol.time_scale;
-  const std::size_t n = std::min(run.events.size(), shadow.events.size());
+  const std::vector<Event> a = by_instant(run.events), b = by_instant(shadow.events);
+  const std::size_t n = std::min(a.size(), b.size());
   std::size_t k = 0;
   bool summed = false;  // a chatter series was summed at or before event k
-  for (; k < n && listed_alike(run.events[k], shadow.events[k]); ++k) {
-    const double t = run.events[k].t;
+  for (; k < n && listed_alike(a[k], b[k]); ++k) {
+    const double t = a[k].t;
     if (t > t_common) break;
-    const double dt = std::abs(t - shadow.events[k].t);
+    const double dt = std::abs(t - b[k].t);
     // Times that differ by more than a tenth of the time to the neighbouring events, and by
     // more than the tolerance explains (a thousand times rtol over the time scale and the time
     // run: sensitive dynamics amplified them), leave the events' order and spacing unresolved,
     // however alike the lists look. A squeeze's impacts, 1e-11 s apart and shifted alike by
     // 5e-11 s, are resolved.
     const double explained = 1e3 * run.stats.rtol * (time_scale + t);
-    if (dt > 0.1 * spacing(run, k) && dt > explained) {
+    if (dt > 0.1 * spacing(a, k, run.stats.t_reached) && dt > explained) {
       r.unresolved = static_cast<int>(k);
       r.trusted_until =
-          std::min(r.trusted_until, trust_end(run, shadow, k, 10.0 * std::max(dt, r.event_time_error)));
+          std::min(r.trusted_until, trust_end(a, b, k, 10.0 * std::max(dt, r.event_time_error)));
       return finish(model, run, shadow, r);
     }
     // Errors the run and its shadow share, the shadow cannot see: the round-off of event times
     // (a thousand ulps of the time scale and the time run, or of the angles an impact is found
     // at), from a summed chatter on, the summation's own error (chatter_time²/T0, docs/MODEL.md:
     // both sum the same way), and a bias of one method.
-    summed = summed || run.events[k].kind == EventKind::chatter;
+    summed = summed || a[k].kind == EventKind::chatter;
     const double round_off = std::max(1e3 * std::numeric_limits<double>::epsilon() * (time_scale + t),
-                                      placement_round_off(run.events[k]));
+                                      placement_round_off(a[k]));
     const double chatter = summed ? tol.chatter_time * tol.chatter_time / time_scale : 0.0;
     // A run vouches for no less than a hundredth of what its tolerance asks, rtol·(T0 + t): a
     // run and its shadow of one method that agree far better than asked may share the error
@@ -211,19 +246,19 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     r.event_time_error = std::max({r.event_time_error, dt, round_off, chatter, asked});
   }
   // The first event one run lists and the other does not (or lists otherwise).
-  if (k < n && !listed_alike(run.events[k], shadow.events[k])) {
+  if (k < n && !listed_alike(a[k], b[k])) {
     r.first_difference = static_cast<int>(k);
-    const Event& e = run.events[k].t < shadow.events[k].t ? run.events[k] : shadow.events[k];
+    const Event& e = a[k].t < b[k].t ? a[k] : b[k];
     const double window = grazing_window(model, run.stats, e.phi);
     r.trusted_until = std::min(
-        r.trusted_until, trust_end(run, shadow, k, std::max(10.0 * r.event_time_error, window)));
-  } else if (k == n && run.events.size() != shadow.events.size()) {
-    const RunResult& longer = run.events.size() > n ? run : shadow;
-    if (longer.events[n].t <= t_common) {
+        r.trusted_until, trust_end(a, b, k, std::max(10.0 * r.event_time_error, window)));
+  } else if (k == n && a.size() != b.size()) {
+    const std::vector<Event>& longer = a.size() > n ? a : b;
+    if (longer[n].t <= t_common) {
       r.first_difference = static_cast<int>(n);
-      const double window = grazing_window(model, run.stats, longer.events[n].phi);
+      const double window = grazing_window(model, run.stats, longer[n].phi);
       r.trusted_until = std::min(
-          r.trusted_until, trust_end(run, shadow, n, std::max(10.0 * r.event_time_error, window)));
+          r.trusted_until, trust_end(a, b, n, std::max(10.0 * r.event_time_error, window)));
     }
   }
   return finish(model, run, shadow, r);
@@ -244,29 +279,31 @@ void apply_check(const Model& model, const RunResult& shadow, RunResult& run) {
   st.error_estimate = largest_of_estimates(model, st);
   if (ends_at_graze(run)) return;
 
+  const std::vector<Event> listed = by_instant(run.events), checked = by_instant(shadow.events);
   std::ostringstream why;
   why.precision(7);
   if (r.unresolved >= 0) {
     const auto k = static_cast<std::size_t>(r.unresolved);
     why << "events are trusted until t = " << r.trusted_until << " s: after that this run lists "
-        << describe(run.events[k]) << ", and a run at a tenth of the tolerance lists it at t = "
-        << shadow.events[k].t << " s, more than a tenth of the time to the neighbouring events. "
+        << describe(listed[k]) << ", and the check run (" << st.check_method
+        << ") lists it at t = "
+        << checked[k].t << " s, more than a tenth of the time to the neighbouring events. "
         << "The events from there on are not resolved (sensitive dynamics); tighten rtol to see "
            "whether they converge";
     run.warnings.push_back({"not_trusted", why.str(), -1, r.trusted_until, st.t_reached});
   } else if (r.first_difference >= 0) {
     const auto k = static_cast<std::size_t>(r.first_difference);
     why << "events are trusted until t = " << r.trusted_until << " s: after that this run lists ";
-    why << (k < run.events.size() ? describe(run.events[k]) : "no more events");
-    why << ", and a run at a tenth of the tolerance lists ";
-    why << (k < shadow.events.size() ? describe(shadow.events[k]) : "no more events");
+    why << (k < listed.size() ? describe(listed[k]) : "no more events");
+    why << ", and the check run (" << st.check_method << ") lists ";
+    why << (k < checked.size() ? describe(checked[k]) : "no more events");
     why << ". The events from there on depend on differences below the tolerance (a grazing "
            "impact, a stick test at its threshold, or sensitive dynamics); tighten rtol to see "
            "whether they converge";
     run.warnings.push_back({"not_trusted", why.str(), -1, r.trusted_until, st.t_reached});
   } else if (shadow.stats.t_reached < st.t_reached) {
-    why << "events are trusted until t = " << r.trusted_until << " s: the check run at a tenth "
-        << "of the tolerance " << describe_run_end(shadow) << " (" << shadow.stats.message
+    why << "events are trusted until t = " << r.trusted_until << " s: the check run ("
+        << st.check_method << ") " << describe_run_end(shadow) << " (" << shadow.stats.message
         << "), so later events are not checked";
     run.warnings.push_back({"not_trusted", why.str(), -1, r.trusted_until, st.t_reached});
   }

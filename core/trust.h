@@ -1,9 +1,11 @@
 // Whether a run can vouch for its events (API.md, "Trust fields"). The run is checked against a
-// shadow solution of the same scene at a tenth of its tolerances, compared event by event: where
-// both list the same events, their differences estimate the run's error (the shadow's own error
-// is about ten times smaller); where they list different events, the sequence depends on
+// shadow solution of the same scene at a tenth of its tolerances (a hundredth with another
+// method), compared event by event: where both list the same events, their differences estimate
+// the run's error (the shadow's own error is ten or more times smaller); where they list different events, the sequence depends on
 // differences below the tolerance, and the run is not trusted from there on.
 #pragma once
+
+#include <vector>
 
 #include "core/model.h"
 #include "core/result.h"
@@ -11,22 +13,31 @@
 
 namespace vibro {
 
-// The shadow's options: the same scene, limits and deadline, tolerances divided by ten (down to
-// the smallest the integrators accept), nothing recorded, not checked itself; DOPRI5 is checked
-// by DOP853, and DOP853 by DOPRI5 above rtol 1e-8.
+// The shadow's options: the same scene, limits and deadline, nothing recorded, not checked
+// itself; DOPRI5 is checked by DOP853 and Radau IIA by `auto`, at tolerances divided by a hundred,
+// the others by themselves at tolerances divided by ten (down to the smallest the integrators
+// accept).
 SimOptions check_options(const SimOptions& run);
+
+// A run's events instant by instant, as runs are compared: the collisions of one instant as one
+// collision of every pellet they involve (in index order), the impacts on one limiter as one, the
+// other events as listed; within an instant in a fixed order. How a cascade is listed depends on
+// which gaps its instant found closed (within the contact distance, one collision of three
+// pellets; a hair apart, thirty collisions of alternating pairs), its outcome does not.
+std::vector<Event> by_instant(const std::vector<Event>& events);
 
 struct TrustReport {
   double event_time_error = 0.0;  // s: the largest time difference of the events listed alike
   double state_error = 0.0;       // rad: the final states' difference, φ̇ scaled by sqrt(R/g)
   double trusted_until = 0.0;     // s: a margin before the runs part, or the end
-  int first_difference = -1;      // index of the first event listed differently; -1: none
-  int unresolved = -1;  // index of the first event whose times differ by more than a tenth of
-                        // the time to its neighbours; -1: none
+  // Indices into the runs' events by_instant():
+  int first_difference = -1;      // the first event listed differently; -1: none
+  int unresolved = -1;  // the first event whose times differ by more than a tenth of the time
+                        // to its neighbours; -1: none
 };
 
-// Compares a run with its shadow. The runs agree on an event when kind, pellets and limiter are
-// the same and the times differ by less than a tenth of the time to the neighbouring events;
+// Compares a run with its shadow, instant by instant. The runs agree on an event when kind,
+// pellets and limiter are the same and the times differ by less than a tenth of the time to the neighbouring events;
 // trust ends ten errors before the first events that they do not (but not before the last
 // they list alike), or where either run stopped.
 TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow);

@@ -59,7 +59,7 @@ TEST_F(Endpoints, PostSimulateGivesTheRun) {
   EXPECT_EQ(run["summary"]["final"].size(), 2u);
   EXPECT_EQ(run["stats"]["termination"], "completed");
   EXPECT_FALSE(run.contains("trajectories"));
-  // API.md's trust fields, from the check against a run at a tenth of the tolerance.
+  // API.md's trust fields, from the check against a run at a tighter tolerance.
   EXPECT_TRUE(run["stats"]["check"].get<bool>());
   EXPECT_DOUBLE_EQ(run["stats"]["trusted_until"].get<double>(), 12.0);
   EXPECT_GT(run["stats"]["event_time_error"].get<double>(), 0.0);

@@ -214,7 +214,7 @@ export class SceneForm {
         selectField({ path: "solver.method", label: "Integrator", value: solver.method ?? "auto", options: METHODS, hint: "auto: DOP853, Radau IIA when stiff" }),
         numberField({ path: "solver.rtol", label: "rtol", value: solver.rtol, placeholder: "1e-9", hint: "relative tolerance" }),
         numberField({ path: "solver.atol", label: "atol", value: solver.atol, placeholder: "1e-12", hint: "absolute tolerance" }),
-        checkField({ path: "solver.check", label: "check the events against a run at a tenth of the tolerance", checked: solver.check ?? true, defaultOn: true }),
+        checkField({ path: "solver.check", label: "check the events against a run at a tighter tolerance", checked: solver.check ?? true, defaultOn: true }),
         checkField({ path: "trajectories", label: "sampled trajectories in the result JSON", checked: scene.trajectories }),
       ),
     );

@@ -79,7 +79,7 @@ function statsLine(st) {
   };
   add("events", trustText(st), st.check === false
     ? "not checked: the error estimate comes from the energy balance and the first integral, which do not see event times"
-    : `checked against ${st.check_method ?? "a run at a tenth of the tolerance"}, event by event`,
+    : `checked against ${st.check_method ?? "a run at a tighter tolerance"}, event by event`,
     st.check === false || st.trusted_until < st.t_reached ? "warn" : undefined);
   add("event times", st.event_time_error !== undefined ? `± ${formatValue(st.event_time_error, 2)} s` : undefined, "estimated largest error of the event times");
   add("error estimate", st.error_estimate !== undefined ? formatValue(st.error_estimate, 2) : undefined, "largest of: event-time error over √(R/g), final-state error (rad), energy-balance defect, first-integral residual");
