@@ -14,9 +14,9 @@
 namespace vibro {
 
 // The shadow's options: the same scene, limits and deadline, nothing recorded, not checked
-// itself; DOPRI5 is checked by DOP853 and Radau IIA by `auto`, at tolerances divided by a hundred,
-// the others by themselves at tolerances divided by ten (down to the smallest the integrators
-// accept).
+// itself; DOPRI5 is checked by DOP853 and Radau IIA by `auto`, at tolerances divided by a hundred;
+// DOP853 by DOPRI5 above rtol 1e-8 and by itself below, and `auto` by itself, at tolerances
+// divided by ten (down to the smallest the integrators accept).
 SimOptions check_options(const SimOptions& run);
 
 // A run's events instant by instant, as runs are compared: the collisions of one instant as one
