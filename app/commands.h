@@ -32,5 +32,6 @@ int preset_command(const Args& args);
 int render_command(const Args& args);
 int serve_command(const Args& args);
 int work_precision_command(const Args& args);
+int sweep_command(const Args& args);
 
 }  // namespace vibro

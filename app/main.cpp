@@ -15,6 +15,9 @@ const std::vector<Command>& commands() {
       {"work-precision",
        "vibro work-precision SCENE.json | - | --preset NAME [-o OUT.png|OUT.svg] [--repeats N]",
        work_precision_command},
+      {"sweep",
+       "vibro sweep SCENE.json | - | --preset NAME [-o OUT.json|OUT.csv] [--threads N] [overrides]",
+       sweep_command},
       {"serve", "vibro serve [--host 127.0.0.1] [--port 8080] [--threads N] [--web DIR] "
                 "[--quiet] (--help: every flag)",
        serve_command},

@@ -124,8 +124,15 @@ struct Graze {
   double error = 0.0;     // the error it was held against
 };
 
+// The state at one of SimOptions::stops.
+struct StateAt {
+  double t = 0.0;
+  std::vector<FinalState> pellets;
+};
+
 struct RunResult {
   std::vector<Event> events;
+  std::vector<StateAt> stops;  // those reached, in order
   std::vector<PelletTrack> tracks;  // only the pellets whose branches were asked for
   Summary summary;
   Stats stats;

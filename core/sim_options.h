@@ -26,6 +26,10 @@ struct SimOptions {
   std::vector<bool> record;
   double record_until = std::numeric_limits<double>::infinity();
   int samples_per_step = 4;  // dense-output points kept inside each step, for smooth curves
+  // Times at which the state is kept (RunResult::stops), increasing: a stroboscopic section. Steps
+  // land on them, so each state is a step's end, not an interpolation; at an instant, the state
+  // after it.
+  std::vector<double> stops;
 };
 
 // Limits on what validate() accepts; a server tightens them.

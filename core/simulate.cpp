@@ -72,6 +72,8 @@ class Simulation {
  private:
   std::vector<Body> instant(double t, const std::vector<Body>& before,
                             const InstantContacts& contacts);
+  double step_limit() const;
+  void keep_stops(double t, const std::vector<Body>& bodies);
   void open_interval(double t, std::vector<Body> bodies);
   // Integrates the open interval until its first event (true) or t_end or a stop (false).
   bool integrate_to_event(double& t, std::vector<Crossing>& found);
@@ -101,7 +103,20 @@ class Simulation {
   double last_instant_ = -1.0;
   Clock::time_point started_ = Clock::now();
   bool stopped_ = false;
+  std::size_t next_stop_ = 0;  // into opt_.stops
+  std::vector<StateAt> stops_;
 };
+
+// The time the next step may not pass: the run's end, or the next stop.
+double Simulation::step_limit() const {
+  return next_stop_ < opt_.stops.size() ? std::min(opt_.t_end, opt_.stops[next_stop_]) : opt_.t_end;
+}
+
+// Keeps the state at every stop up to t, where the state is y_ and these are the bodies.
+void Simulation::keep_stops(double t, const std::vector<Body>& bodies) {
+  for (; next_stop_ < opt_.stops.size() && opt_.stops[next_stop_] <= t; ++next_stop_)
+    stops_.push_back({opt_.stops[next_stop_], final_states(model_, bodies, y_)});
+}
 
 void Simulation::fail(double t, Termination why, const std::string& message) {
   std::ostringstream msg;
@@ -188,7 +203,7 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
   std::vector<Vec>& states = states_;
   const MotionInterval& interval = *interval_;
   while (!stopped_ && t < opt_.t_end) {
-    const StepStatus status = stepper_->step(opt_.t_end);
+    const StepStatus status = stepper_->step(step_limit());
     if (status != StepStatus::ok) {
       t = stepper_->t();
       fail(t, Termination::numerical_failure,
@@ -220,6 +235,7 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
       recorder_.sample(t, y_);
     }
     recorder_.check_normal_force(t, y_, interval.bodies());
+    if (found.empty()) keep_stops(t, interval.bodies());
     if (!std::isfinite(y_.sum())) {
       fail(t, Termination::numerical_failure, "the state became non-finite");
       return false;
@@ -235,11 +251,13 @@ RunResult Simulation::run() {
   double t = 0.0;
   const InstantContacts start = initial_contacts(model_, tol_, y_);
   std::vector<Body> bodies = instant(0.0, initial_bodies(model_, y_), start);
+  keep_stops(0.0, bodies);
   std::vector<Crossing> found;
   while (!stopped_ && t < opt_.t_end) {
     open_interval(t, std::exchange(bodies, {}));
     if (interval_->at_rest_for_good()) {
       t = opt_.t_end;
+      keep_stops(t, interval_->bodies());
       break;
     }
     if (!integrate_to_event(t, found)) break;
@@ -254,6 +272,7 @@ RunResult Simulation::run() {
     const InstantContacts contacts = snap(model_, tol_, *interval_, found, neighbours_, armed_, y_);
     energy_.add_snap(unsnapped_, y_);
     bodies = instant(t, interval_->bodies(), contacts);
+    if (!stopped_) keep_stops(t, bodies);
     if (!stopped_) over_budget(t);
   }
   if (!stopped_) {
@@ -276,6 +295,7 @@ RunResult Simulation::run() {
       ends_vibro_impact(events_, std::min(t, opt_.t_end),
                         stats_.termination == Termination::completed, at_rest);
   result.events = std::move(events_);
+  result.stops = std::move(stops_);
   result.graze = finder_.first_graze();
 
   const StepperStats& s = stepper_->stats();

@@ -205,6 +205,7 @@ SimOptions check_options(const SimOptions& run) {
   o.rtol = std::max(run.rtol / tighter, kSmallestRtol);
   o.atol = std::max(run.atol / tighter, kSmallestAtol);
   o.record.clear();
+  o.stops.clear();
   o.check = false;
   return o;
 }

@@ -1,11 +1,13 @@
 // A scene: the model, the run, and the plots, as a request names them (API.md).
 #pragma once
 
+#include <optional>
 #include <string>
 #include <vector>
 
 #include "core/model.h"
 #include "core/sim_options.h"
+#include "core/sweep.h"
 #include "render/plot_spec.h"
 
 namespace vibro {
@@ -18,6 +20,7 @@ struct Scene {
   SimOptions sim;              // t_end, method, tolerances
   bool trajectories = false;   // return the sampled branches with the run
   FigureSpec figure;
+  std::optional<SweepSpec> sweep;  // run by `vibro sweep` and POST /api/sweep, not by simulate
 };
 
 // Bounds on what a scene may ask; the server tightens them.

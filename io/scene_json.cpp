@@ -4,6 +4,7 @@
 #include <set>
 
 #include "io/json_fields.h"
+#include "io/sweep_json.h"
 
 namespace vibro {
 namespace {
@@ -212,6 +213,7 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
     }
     if (auto w = f.integer("width")) s.figure.width = static_cast<int>(*w);
     if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
+    if (const json* sweep = f.value("sweep")) s.sweep = read_sweep(*sweep);
     f.done();
     if (s.figure.width < 64 || s.figure.width > limits.max_width)
       throw FieldException("width", "must be in [64, " + std::to_string(limits.max_width) + "] px");
@@ -219,6 +221,8 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
       throw FieldException("height", "must be in [64, " + std::to_string(limits.max_height) + "] px");
     if (auto e = validate_model(s.model, limits.sim)) return *e;
     if (auto e = validate_options(s.sim, s.model.size(), limits.sim)) return *e;
+    if (s.sweep)
+      if (auto e = validate_sweep(s.model, *s.sweep)) return *e;
     return s;
   } catch (const FieldException& e) {
     return FieldError{e.field, e.what()};
@@ -387,6 +391,7 @@ json scene_to_json(const Scene& s) {
   j["plots"] = plots;
   j["width"] = s.figure.width;
   j["height"] = s.figure.height;
+  if (s.sweep) j["sweep"] = sweep_to_json(*s.sweep);
   return j;
 }
 

@@ -1,0 +1,296 @@
+#include "core/sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <random>
+#include <thread>
+#include <tuple>
+
+#include "core/parameter.h"
+#include "core/simulate.h"
+
+namespace vibro {
+namespace {
+
+constexpr long kMaxRuns = 10000000;
+constexpr int kMaxPeriods = 1000000;
+
+// The initial state a run starts from: the scene's, or the last state of the run before it.
+struct Start {
+  std::vector<double> phi, dphi;
+};
+
+Model with_values(const Model& model, const SweepSpec& spec, double v, double v2) {
+  Model m = model;
+  set_parameter(m, spec.axis.parameter, v);
+  if (spec.axis2) set_parameter(m, spec.axis2->parameter, v2);
+  return m;
+}
+
+std::optional<FieldError> check_axis(const Model& model, const SweepAxis& axis,
+                                     const std::string& at) {
+  Model copy = model;
+  if (auto why = set_parameter(copy, axis.parameter, 0.0))
+    return FieldError{at + "parameter", "\"" + axis.parameter + "\" " + *why};
+  if (axis.count < 1 || axis.count > kMaxRuns)
+    return FieldError{at + "count", "must be from 1 to " + std::to_string(kMaxRuns)};
+  if (!std::isfinite(axis.from)) return FieldError{at + "from", "must be a finite number"};
+  if (!std::isfinite(axis.to)) return FieldError{at + "to", "must be a finite number"};
+  if (axis.to < axis.from) return FieldError{at + "to", "must not be below " + at + "from"};
+  return std::nullopt;
+}
+
+// The speeds of start s > 0, as fractions of 2·sqrt(g/R) in [−1, 1], one per pellet.
+std::vector<double> seeded_speeds(std::uint64_t seed, int start, int pellets) {
+  std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(start));
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> f(pellets);
+  for (double& x : f) x = u(rng);
+  return f;
+}
+
+// The smallest period p of the section over the record (points per pellet at k = 0..K), or 0.
+int section_period(const std::vector<StateAt>& stops, double speed_scale) {
+  const int K = static_cast<int>(stops.size()) - 1;
+  if (K < 2) return 0;
+  const int n = static_cast<int>(stops.front().pellets.size());
+  std::vector<double> tol_phi(n), tol_dphi(n);
+  for (int i = 0; i < n; ++i) {
+    double lo = 1e300, hi = -1e300, vlo = 1e300, vhi = -1e300;
+    for (const StateAt& s : stops) {
+      const double w = wrap_angle(s.pellets[i].phi);
+      lo = std::min(lo, w);
+      hi = std::max(hi, w);
+      vlo = std::min(vlo, s.pellets[i].dphi);
+      vhi = std::max(vhi, s.pellets[i].dphi);
+    }
+    tol_phi[i] = 1e-5 * (1.0 + (hi - lo));
+    tol_dphi[i] = 1e-5 * (speed_scale + (vhi - vlo));
+  }
+  for (int p = 1; 2 * p <= K; ++p) {
+    bool repeats = true;
+    for (int k = 0; repeats && k + p <= K; ++k)
+      for (int i = 0; repeats && i < n; ++i) {
+        const FinalState& a = stops[k].pellets[i];
+        const FinalState& b = stops[k + p].pellets[i];
+        repeats = std::abs(std::remainder(b.phi - a.phi, kTwoPi)) <= tol_phi[i] &&
+                  std::abs(b.dphi - a.dphi) <= tol_dphi[i];
+      }
+    if (repeats) return p;
+  }
+  return 0;
+}
+
+bool held(const FinalState& s) { return s.state != PelletState::sliding; }
+
+// One run of the sweep, from `start`; `last` receives its last state.
+SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec& spec,
+                 const Start& start, Start& last) {
+  const double T = sweep_period(model);
+  const double t_record = spec.transient * T;
+  SimOptions o = options;
+  o.t_end = (spec.transient + spec.record) * T;
+  o.record.clear();
+  o.stops.clear();
+  if (spec.section == SectionKind::stroboscopic)
+    for (int k = spec.transient; k <= spec.transient + spec.record; ++k) o.stops.push_back(k * T);
+  Model m = model;
+  for (int i = 0; i < m.size(); ++i) {
+    m.pellets[i].phi0 = start.phi[i];
+    m.pellets[i].dphi0 = start.dphi[i];
+  }
+  const RunResult r = simulate(m, o);
+
+  SweepRun run;
+  auto phase = [&](double t) { return kTwoPi * (t / T - std::floor(t / T)); };
+  if (spec.section == SectionKind::stroboscopic) {
+    for (const StateAt& s : r.stops)
+      for (int i = 0; i < m.size(); ++i) {
+        run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase(s.t), -1});
+        run.sticks = run.sticks || held(s.pellets[i]);
+      }
+    run.period = section_period(r.stops, std::sqrt(m.g / m.R));
+  }
+  int impacts = 0;
+  for (const Event& e : r.events) {
+    if (e.t < t_record) continue;
+    if (e.kind == EventKind::limiter || e.kind == EventKind::collision ||
+        e.kind == EventKind::chatter)
+      ++impacts;
+    if (e.kind == EventKind::stick) run.sticks = true;
+    if (spec.section == SectionKind::impact && e.kind == EventKind::limiter)
+      run.points.push_back({e.pellets[0], e.t, e.phi, e.dphi_before[0], phase(e.t), e.limiter});
+  }
+  run.impacts_per_period = static_cast<double>(impacts) / spec.record;
+  run.at_rest = std::all_of(r.summary.final.begin(), r.summary.final.end(), held);
+  run.termination = r.stats.termination;
+  run.message = r.stats.message;
+  run.trusted = run.termination == Termination::completed &&
+                r.stats.trusted_until >= r.stats.t_reached;
+  run.error_estimate = r.stats.error_estimate;
+  last.phi.clear();
+  last.dphi.clear();
+  for (const FinalState& f : r.summary.final) {
+    last.phi.push_back(f.phi);
+    last.dphi.push_back(f.dphi);
+  }
+  return run;
+}
+
+// One chain of runs made in order, each from the state the one before it left (or each from
+// its own start, without continuation).
+struct Link {
+  int i = 0;  // value index on the axis
+  int direction = 0;
+};
+struct Chain {
+  int start = 0;
+  int j = 0;  // value index on axis2
+  std::vector<Link> links;
+};
+
+std::vector<Chain> chains_of(const SweepSpec& spec) {
+  const int n = spec.axis.count;
+  const int n2 = spec.axis2 ? spec.axis2->count : 1;
+  std::vector<Chain> chains;
+  for (int s = 0; s < spec.initial_states; ++s)
+    for (int j = 0; j < n2; ++j) {
+      if (spec.continuation == Continuation::none) {
+        for (int i = 0; i < n; ++i) chains.push_back({s, j, {{i, 0}}});
+        continue;
+      }
+      Chain c{s, j, {}};
+      if (spec.continuation != Continuation::backward)
+        for (int i = 0; i < n; ++i) c.links.push_back({i, +1});
+      if (spec.continuation != Continuation::forward)
+        for (int i = n - 1; i >= 0; --i) c.links.push_back({i, -1});
+      chains.push_back(std::move(c));
+    }
+  return chains;
+}
+
+}  // namespace
+
+double SweepAxis::value(int i) const {
+  return count <= 1 ? from : from + (to - from) * static_cast<double>(i) / (count - 1);
+}
+
+double sweep_period(const Model& model) {
+  for (const Pellet& p : model.pellets)
+    if (p.force.Omega > 0.0) return kTwoPi / p.force.Omega;
+  return kTwoPi * std::sqrt(model.R / model.g);
+}
+
+long sweep_runs(const SweepSpec& spec) {
+  const long per_start = static_cast<long>(spec.axis.count) * (spec.axis2 ? spec.axis2->count : 1);
+  const long directions = spec.continuation == Continuation::both ? 2 : 1;
+  return per_start * directions * spec.initial_states;
+}
+
+std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& spec) {
+  if (auto e = check_axis(model, spec.axis, "sweep.")) return e;
+  if (spec.axis2) {
+    if (auto e = check_axis(model, *spec.axis2, "sweep.parameter2.")) return e;
+    if (spec.axis2->parameter == spec.axis.parameter)
+      return FieldError{"sweep.parameter2.parameter", "must differ from sweep.parameter"};
+  }
+  if (spec.transient < 0 || spec.transient > kMaxPeriods)
+    return FieldError{"sweep.transient", "must be from 0 to " + std::to_string(kMaxPeriods) + " periods"};
+  if (spec.record < 1 || spec.record > kMaxPeriods)
+    return FieldError{"sweep.record", "must be from 1 to " + std::to_string(kMaxPeriods) + " periods"};
+  if (spec.initial_states < 1 || spec.initial_states > 1000)
+    return FieldError{"sweep.initial_states", "must be from 1 to 1000"};
+  if (sweep_runs(spec) > kMaxRuns)
+    return FieldError{"sweep.count", "the sweep would make more than " + std::to_string(kMaxRuns) + " runs"};
+  // Every model the sweep makes is valid when its corners are: the checks are ranges.
+  const SweepAxis one{"", 0.0, 0.0, 1};
+  const SweepAxis& a2 = spec.axis2 ? *spec.axis2 : one;
+  for (double v : {spec.axis.from, spec.axis.to})
+    for (double v2 : {a2.from, a2.to}) {
+      const Model m = with_values(model, spec, v, v2);
+      if (auto e = validate_model(m)) {
+        e->message += " (at sweep value " + std::to_string(v) +
+                      (spec.axis2 ? ", " + std::to_string(v2) : std::string()) + ")";
+        return e;
+      }
+      if (spec.section == SectionKind::stroboscopic &&
+          std::none_of(m.pellets.begin(), m.pellets.end(),
+                       [](const Pellet& p) { return p.force.Omega > 0.0; }))
+        return FieldError{"sweep.section",
+                          "a stroboscopic section needs a forced pellet (Omega > 0); without "
+                          "forcing use \"impact\""};
+    }
+  return std::nullopt;
+}
+
+SweepResult run_sweep(const Model& model, const SimOptions& options, const SweepSpec& spec,
+                      const SweepControl& control) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const std::vector<Chain> chains = chains_of(spec);
+  std::vector<std::vector<SweepRun>> done_chains(chains.size());
+  const long total = sweep_runs(spec);
+  std::atomic<std::size_t> next{0};
+  std::atomic<long> done{0};
+  std::atomic<bool> cancelled{false};
+  const int n = model.size();
+  auto work = [&] {
+    for (std::size_t c = next++; c < chains.size(); c = next++) {
+      const Chain& chain = chains[c];
+      const double v2 = spec.axis2 ? spec.axis2->value(chain.j) : 0.0;
+      Start state;
+      bool fresh = true;
+      for (const Link& link : chain.links) {
+        if (control.cancel && control.cancel->load()) {
+          cancelled = true;
+          return;
+        }
+        const double v = spec.axis.value(link.i);
+        const Model m = with_values(model, spec, v, v2);
+        if (fresh || spec.continuation == Continuation::none) {
+          state = Start{};
+          const std::vector<double> speeds =
+              chain.start > 0 ? seeded_speeds(spec.seed, chain.start, n) : std::vector<double>{};
+          for (int p = 0; p < n; ++p) {
+            state.phi.push_back(m.pellets[p].phi0);
+            state.dphi.push_back(chain.start > 0 ? 2.0 * std::sqrt(m.g / m.R) * speeds[p]
+                                                 : m.pellets[p].dphi0);
+          }
+          fresh = false;
+        }
+        Start last;
+        SweepRun run = run_one(m, options, spec, state, last);
+        run.value = v;
+        run.value2 = v2;
+        run.start = chain.start;
+        run.direction = link.direction;
+        done_chains[c].push_back(std::move(run));
+        state = std::move(last);
+        const long d = ++done;
+        if (control.progress) control.progress(d, total);
+      }
+    }
+  };
+  const int threads = std::max(1, control.threads);
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+
+  SweepResult result;
+  for (auto& runs : done_chains)
+    for (SweepRun& r : runs) result.runs.push_back(std::move(r));
+  // A fixed order, whatever thread made which run: start, value2, direction, value.
+  auto key = [&](const SweepRun& r) {
+    return std::make_tuple(r.start, r.value2, r.direction < 0 ? 1 : 0, r.value);
+  };
+  std::stable_sort(result.runs.begin(), result.runs.end(),
+                   [&](const SweepRun& a, const SweepRun& b) { return key(a) < key(b); });
+  result.threads = threads;
+  result.cancelled = cancelled;
+  result.wall_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace vibro

@@ -1,0 +1,109 @@
+// Parameter sweeps (API.md, "Sweeps"): one run per parameter value, or per pair of values on a
+// 2-D grid, each keeping only its section's points: the stroboscopic section (the state at every
+// forcing period) or the impact section (the state before every limiter impact). From them, per
+// run, the period of the motion a person reads off a bifurcation diagram.
+#pragma once
+
+#include <atomic>
+#include <cstdint>
+#include <functional>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/model.h"
+#include "core/result.h"
+#include "core/sim_options.h"
+#include "core/validate.h"
+
+namespace vibro {
+
+enum class SectionKind { stroboscopic, impact };
+enum class Continuation { none, forward, backward, both };
+
+// `count` values from `from` to `to`, evenly spaced (one value: `from`).
+struct SweepAxis {
+  std::string parameter;  // a path of core/parameter.h
+  double from = 0.0;
+  double to = 0.0;
+  int count = 1;
+  double value(int i) const;
+};
+
+struct SweepSpec {
+  SweepAxis axis;
+  std::optional<SweepAxis> axis2;  // a 2-D grid: every value of axis2 for every value of axis
+  // Counted in periods of the first forced pellet's force, 2π/Ω, or without forcing in
+  // periods of a small swing, 2π·sqrt(R/g): the run lasts transient + record of them, and its
+  // section points are kept over the last `record`.
+  int transient = 100;
+  int record = 50;
+  SectionKind section = SectionKind::stroboscopic;
+  // forward: each value starts from the last state of the value before it (in increasing
+  // order), backward likewise in decreasing order, both: forward, then backward from where the
+  // forward chain ended. Branches are followed, and hysteresis shows.
+  Continuation continuation = Continuation::none;
+  // Runs per value: the scene's own initial state, and then states with the pellets' speeds
+  // drawn from `seed` (uniform in ±2·sqrt(g/R)), so that coexisting motions show.
+  int initial_states = 1;
+  std::uint64_t seed = 1;
+};
+
+// Why a sweep cannot run, naming the field ("sweep.parameter", "sweep.count", ...), or a model
+// field that a swept value makes invalid.
+std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& spec);
+
+// The period of the motion the sweep's counts are in, s, for this model.
+double sweep_period(const Model& model);
+
+struct SectionPoint {
+  int pellet = 0;
+  double t = 0.0;
+  double phi = 0.0;   // unwrapped
+  double dphi = 0.0;  // before the impact, for the impact section
+  double phase = 0.0; // of the period at t, rad in [0, 2π)
+  int limiter = -1;   // impact section: the limiter struck
+};
+
+// One run: a value (pair), a start, a direction of continuation.
+struct SweepRun {
+  double value = 0.0;
+  double value2 = 0.0;
+  int start = 0;      // 0: the scene's initial state; then the seeded ones
+  int direction = 0;  // +1 forward, −1 backward, 0 no continuation
+  std::vector<SectionPoint> points;
+  // The smallest p such that the section repeats every p periods over the record, within
+  // 1e-5 of the points' spread (stroboscopic section); 0: not periodic within the record.
+  int period = 0;
+  double impacts_per_period = 0.0;  // limiter impacts and collisions over the record, per period
+  bool at_rest = false;   // every pellet ends stuck or resting on a limiter
+  bool sticks = false;    // some pellet is stuck or resting at some section point
+  bool trusted = true;    // stats.trusted_until reached the end (or the check is off)
+  Termination termination = Termination::completed;
+  std::string message;    // why the run stopped early
+  double error_estimate = 0.0;
+};
+
+struct SweepResult {
+  std::vector<SweepRun> runs;  // in a fixed order: start, then value2, then direction, then value
+  int threads = 1;
+  double wall_ms = 0.0;
+  bool cancelled = false;
+};
+
+struct SweepControl {
+  int threads = 1;
+  // Called after every finished run, from any thread, with the runs done and in all.
+  std::function<void(long done, long total)> progress;
+  const std::atomic<bool>* cancel = nullptr;  // set: no new run starts
+};
+
+// The number of runs the sweep makes.
+long sweep_runs(const SweepSpec& spec);
+
+// Runs the sweep with `options` for every run (t_end is set from the spec). The result is the
+// same for any number of threads. Call validate_sweep first.
+SweepResult run_sweep(const Model& model, const SimOptions& options, const SweepSpec& spec,
+                      const SweepControl& control);
+
+}  // namespace vibro

@@ -1,0 +1,168 @@
+#include "io/sweep_json.h"
+
+#include <cmath>
+#include <iomanip>
+#include <sstream>
+
+#include "io/json_fields.h"
+
+namespace vibro {
+namespace {
+
+using nlohmann::json;
+
+int bounded_int(Fields& f, const std::string& key, int fallback) {
+  const auto v = f.integer(key);
+  if (!v) return fallback;
+  if (*v < -2147483647L || *v > 2147483647L) throw FieldException(f.path(key), "is out of range");
+  return static_cast<int>(*v);
+}
+
+SweepAxis read_axis(Fields& f) {
+  SweepAxis a;
+  const auto parameter = f.string("parameter", 200);
+  if (!parameter)
+    throw FieldException(f.path("parameter"), "is required: a field path such as \"model.pellets[0].F0\"");
+  a.parameter = *parameter;
+  a.from = f.required_number("from");
+  a.to = f.required_number("to");
+  a.count = bounded_int(f, "count", 1);
+  return a;
+}
+
+const char* section_name(SectionKind k) {
+  return k == SectionKind::stroboscopic ? "stroboscopic" : "impact";
+}
+
+const char* continuation_name(Continuation c) {
+  switch (c) {
+    case Continuation::none: return "none";
+    case Continuation::forward: return "forward";
+    case Continuation::backward: return "backward";
+    case Continuation::both: return "both";
+  }
+  return "none";
+}
+
+// A number for JSON: non-finite values never reach the output.
+json finite(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+}  // namespace
+
+SweepSpec read_sweep(const json& j) {
+  Fields f(j, "sweep");
+  SweepSpec s;
+  s.axis = read_axis(f);
+  if (const json* p2 = f.value("parameter2")) {
+    Fields f2(*p2, "sweep.parameter2");
+    s.axis2 = read_axis(f2);
+    f2.done();
+  }
+  s.transient = bounded_int(f, "transient", s.transient);
+  s.record = bounded_int(f, "record", s.record);
+  if (auto section = f.string("section", 32)) {
+    if (*section == "stroboscopic") s.section = SectionKind::stroboscopic;
+    else if (*section == "impact") s.section = SectionKind::impact;
+    else throw FieldException("sweep.section", "must be \"stroboscopic\" or \"impact\", got \"" + *section + "\"");
+  }
+  if (auto c = f.string("continuation", 32)) {
+    if (*c == "none") s.continuation = Continuation::none;
+    else if (*c == "forward") s.continuation = Continuation::forward;
+    else if (*c == "backward") s.continuation = Continuation::backward;
+    else if (*c == "both") s.continuation = Continuation::both;
+    else
+      throw FieldException("sweep.continuation",
+                           "must be \"none\", \"forward\", \"backward\" or \"both\", got \"" + *c + "\"");
+  }
+  s.initial_states = bounded_int(f, "initial_states", s.initial_states);
+  if (auto seed = f.integer("seed")) {
+    if (*seed < 0) throw FieldException("sweep.seed", "must not be negative");
+    s.seed = static_cast<std::uint64_t>(*seed);
+  }
+  f.done();
+  return s;
+}
+
+json sweep_to_json(const SweepSpec& s) {
+  auto axis = [](const SweepAxis& a) {
+    return json{{"parameter", a.parameter}, {"from", a.from}, {"to", a.to}, {"count", a.count}};
+  };
+  json j = axis(s.axis);
+  if (s.axis2) j["parameter2"] = axis(*s.axis2);
+  j["transient"] = s.transient;
+  j["record"] = s.record;
+  j["section"] = section_name(s.section);
+  j["continuation"] = continuation_name(s.continuation);
+  j["initial_states"] = s.initial_states;
+  j["seed"] = s.seed;
+  return j;
+}
+
+json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
+  json value = json::array(), value2 = json::array(), start = json::array(),
+       direction = json::array(), pellet = json::array(), t = json::array(), phi = json::array(),
+       dphi = json::array(), phase = json::array(), limiter = json::array(), run_of = json::array();
+  json runs = {{"value", json::array()},     {"value2", json::array()},
+               {"start", json::array()},     {"direction", json::array()},
+               {"period", json::array()},    {"impacts_per_period", json::array()},
+               {"at_rest", json::array()},   {"sticks", json::array()},
+               {"trusted", json::array()},   {"termination", json::array()},
+               {"message", json::array()},   {"error_estimate", json::array()}};
+  for (std::size_t r = 0; r < result.runs.size(); ++r) {
+    const SweepRun& run = result.runs[r];
+    for (const SectionPoint& p : run.points) {
+      value.push_back(run.value);
+      value2.push_back(run.value2);
+      start.push_back(run.start);
+      direction.push_back(run.direction);
+      pellet.push_back(p.pellet);
+      t.push_back(finite(p.t));
+      phi.push_back(finite(p.phi));
+      dphi.push_back(finite(p.dphi));
+      phase.push_back(finite(p.phase));
+      limiter.push_back(p.limiter);
+      run_of.push_back(r);
+    }
+    runs["value"].push_back(run.value);
+    runs["value2"].push_back(run.value2);
+    runs["start"].push_back(run.start);
+    runs["direction"].push_back(run.direction);
+    runs["period"].push_back(run.period);
+    runs["impacts_per_period"].push_back(finite(run.impacts_per_period));
+    runs["at_rest"].push_back(run.at_rest);
+    runs["sticks"].push_back(run.sticks);
+    runs["trusted"].push_back(run.trusted);
+    runs["termination"].push_back(termination_name(run.termination));
+    runs["message"].push_back(run.message);
+    runs["error_estimate"].push_back(finite(run.error_estimate));
+  }
+  json points = {{"value", value}, {"value2", value2}, {"start", start},   {"direction", direction},
+                 {"pellet", pellet}, {"t", t},          {"phi", phi},       {"dphi", dphi},
+                 {"phase", phase},   {"limiter", limiter}, {"run", run_of}};
+  json j = {{"parameter", spec.axis.parameter}, {"section", section_name(spec.section)},
+            {"points", points}, {"runs", runs},
+            {"stats",
+             {{"runs", result.runs.size()},
+              {"points", value.size()},
+              {"threads", result.threads},
+              {"wall_ms", result.wall_ms},
+              {"cancelled", result.cancelled}}}};
+  if (spec.axis2) j["parameter2"] = spec.axis2->parameter;
+  return j;
+}
+
+std::string sweep_result_csv(const SweepResult& result) {
+  std::ostringstream out;
+  out << std::setprecision(17);
+  out << "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,period,impacts_per_period,"
+         "trusted\n";
+  for (const SweepRun& run : result.runs)
+    for (const SectionPoint& p : run.points)
+      out << run.value << ',' << run.value2 << ',' << run.start << ',' << run.direction << ','
+          << p.pellet << ',' << p.t << ',' << p.phi << ',' << p.dphi << ',' << p.phase << ','
+          << p.limiter << ',' << run.period << ',' << run.impacts_per_period << ','
+          << (run.trusted ? 1 : 0) << '\n';
+  return out.str();
+}
+
+}  // namespace vibro

@@ -1,0 +1,22 @@
+// Sweeps as JSON (API.md, "Sweeps"): the scene's "sweep" object, read strictly and written back,
+// and a sweep's result as JSON or CSV, the points as columns.
+#pragma once
+
+#include <nlohmann/json.hpp>
+#include <string>
+
+#include "core/sweep.h"
+
+namespace vibro {
+
+// Reads a scene's "sweep" object; throws FieldException (io/json_fields.h) naming the field.
+SweepSpec read_sweep(const nlohmann::json& json);
+nlohmann::json sweep_to_json(const SweepSpec& spec);
+
+// {"parameter", "parameter2", "section", "points": {columns}, "runs": {columns}, "stats"}:
+// one entry per section point, and one per run with its period, impacts per period and trust.
+nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& result);
+// The points as CSV with a header row, one line per point, each run's classification on it.
+std::string sweep_result_csv(const SweepResult& result);
+
+}  // namespace vibro

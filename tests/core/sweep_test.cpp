@@ -1,0 +1,213 @@
+// Parameter sweeps (core/sweep.h): section points against plain runs, the period a person reads
+// off the diagram, continuation's hysteresis, any thread count giving the same output, and bad
+// sweeps refused with the field named.
+#include <gtest/gtest.h>
+
+#include <algorithm>
+#include <cmath>
+#include <tuple>
+
+#include "core/parameter.h"
+#include "core/simulate.h"
+#include "core/sweep.h"
+
+namespace vibro {
+namespace {
+
+// A forced pendulum striking a stop at the bottom (k = 0.8): the impact oscillator.
+Model impact_oscillator(double Omega) {
+  Model m;
+  m.R = 0.5;
+  m.pellets = {{0.1, 0.1, 0.0, {0.3, Omega, 0.0}}};
+  m.limiters = {{0.0, 0.8, false, -1, {}}};
+  return m;
+}
+
+SimOptions options(double rtol = 1e-10) {
+  SimOptions o;
+  o.rtol = rtol;
+  o.atol = rtol * 1e-3;
+  o.check = false;
+  return o;
+}
+
+SweepSpec over_omega(double from, double to, int count, int transient = 100, int record = 32) {
+  SweepSpec s;
+  s.axis = {"model.pellets[0].Omega", from, to, count};
+  s.transient = transient;
+  s.record = record;
+  return s;
+}
+
+SweepResult run(const Model& m, const SimOptions& o, const SweepSpec& s, int threads = 1) {
+  EXPECT_FALSE(validate_sweep(m, s));
+  SweepControl c;
+  c.threads = threads;
+  return run_sweep(m, o, s, c);
+}
+
+TEST(Sweep, EachSectionPointIsTheStateOfAPlainRunAtThatTime) {
+  const SweepSpec spec = over_omega(4.0, 7.0, 3, 5, 4);
+  const SweepResult r = run(impact_oscillator(5.0), options(1e-12), spec);
+  ASSERT_EQ(r.runs.size(), 3u);
+  for (const SweepRun& run : r.runs) {
+    ASSERT_EQ(run.points.size(), 5u);  // k = 5 … 9
+    const Model m = impact_oscillator(run.value);
+    const double T = 2.0 * M_PI / run.value;
+    for (std::size_t k = 0; k < run.points.size(); ++k) {
+      const SectionPoint& p = run.points[k];
+      EXPECT_NEAR(p.t, (5 + static_cast<double>(k)) * T, 1e-12 * p.t);
+      SimOptions plain = options(1e-12);
+      plain.t_end = p.t;
+      const RunResult ref = simulate(m, plain);
+      EXPECT_NEAR(p.phi, ref.summary.final[0].phi, 1e-9) << run.value << " k " << k;
+      EXPECT_NEAR(p.dphi, ref.summary.final[0].dphi, 1e-8) << run.value << " k " << k;
+    }
+  }
+}
+
+// At Ω = 7 the oscillator settles on one impact per period (period 1); at Ω = 3.7 on a motion
+// that repeats every second period, its two section points apart.
+TEST(Sweep, ThePeriodOfTheMotionIsReadOffTheSection) {
+  const SweepResult r = run(impact_oscillator(7.0), options(), over_omega(3.7, 7.0, 2));
+  ASSERT_EQ(r.runs.size(), 2u);
+  const SweepRun& doubled = r.runs[0];
+  const SweepRun& single = r.runs[1];
+  EXPECT_EQ(single.period, 1);
+  EXPECT_DOUBLE_EQ(single.impacts_per_period, 1.0);
+  EXPECT_EQ(doubled.period, 2);
+  // Period 2 for real: consecutive points differ, every other one agrees.
+  const auto& p = doubled.points;
+  ASSERT_GE(p.size(), 3u);
+  EXPECT_GT(std::abs(p[1].dphi - p[0].dphi), 1e-3);
+  EXPECT_LT(std::abs(p[2].dphi - p[0].dphi), 1e-6);
+  EXPECT_TRUE(single.trusted);
+}
+
+// Swept up in steps of 0.1, the oscillator keeps a motion of three impacts every two periods up
+// to Ω = 5.7; swept down, one impact per period down to Ω = 5.5: two coexisting motions. Each
+// persists when its last state is run on for a hundred periods more: attractors, not transients.
+TEST(Sweep, ContinuationBothWaysShowsTheHysteresisLoop) {
+  SweepSpec spec = over_omega(5.0, 6.0, 11);
+  spec.continuation = Continuation::both;
+  const SweepResult r = run(impact_oscillator(5.0), options(), spec);
+  ASSERT_EQ(r.runs.size(), 22u);
+  int differ = 0;
+  for (int i = 0; i < 11; ++i) {
+    const SweepRun& up = r.runs[i];
+    const SweepRun& down = r.runs[11 + i];
+    ASSERT_EQ(up.direction, +1);
+    ASSERT_EQ(down.direction, -1);
+    ASSERT_DOUBLE_EQ(up.value, down.value);
+    if (up.value > 5.45 && up.value < 5.75) {
+      EXPECT_DOUBLE_EQ(up.impacts_per_period, 1.5) << up.value;
+      EXPECT_DOUBLE_EQ(down.impacts_per_period, 1.0) << down.value;
+      ++differ;
+    }
+  }
+  EXPECT_GE(differ, 3);
+  // Both motions at Ω = 5.6, run on from the section's last points.
+  for (int i : {6, 17}) {
+    const SweepRun& run = r.runs[i];
+    ASSERT_NEAR(run.value, 5.6, 1e-12);
+    Model m = impact_oscillator(run.value);
+    m.pellets[0].phi0 = run.points.back().phi;
+    m.pellets[0].dphi0 = run.points.back().dphi;
+    SimOptions o = options();
+    o.t_end = 100 * 2.0 * M_PI / run.value;
+    const RunResult on = simulate(m, o);
+    const auto impacts = std::count_if(on.events.begin(), on.events.end(),
+                                       [](const Event& e) { return e.kind == EventKind::limiter; });
+    EXPECT_NEAR(static_cast<double>(impacts) / 100.0, run.impacts_per_period, 0.02) << i;
+  }
+}
+
+TEST(Sweep, TheOutputIsTheSameForAnyNumberOfThreads) {
+  SweepSpec spec = over_omega(3.0, 8.0, 12, 20, 8);
+  spec.initial_states = 2;
+  spec.axis2 = SweepAxis{"model.pellets[0].F0", 0.2, 0.4, 2};
+  const Model m = impact_oscillator(5.0);
+  const SweepResult one = run(m, options(1e-8), spec, 1);
+  const SweepResult two = run(m, options(1e-8), spec, 2);
+  const SweepResult three = run(m, options(1e-8), spec, 3);
+  ASSERT_EQ(one.runs.size(), 48u);
+  for (const SweepResult* other : {&two, &three}) {
+    ASSERT_EQ(other->runs.size(), one.runs.size());
+    for (std::size_t r = 0; r < one.runs.size(); ++r) {
+      const SweepRun& a = one.runs[r];
+      const SweepRun& b = other->runs[r];
+      ASSERT_EQ(std::tie(a.value, a.value2, a.start, a.direction, a.period),
+                std::tie(b.value, b.value2, b.start, b.direction, b.period));
+      ASSERT_EQ(a.points.size(), b.points.size());
+      for (std::size_t k = 0; k < a.points.size(); ++k) {
+        ASSERT_EQ(a.points[k].phi, b.points[k].phi);
+        ASSERT_EQ(a.points[k].dphi, b.points[k].dphi);
+      }
+    }
+  }
+}
+
+TEST(Sweep, TheImpactSectionKeepsTheStateBeforeEveryLimiterImpact) {
+  SweepSpec spec = over_omega(7.0, 7.0, 1, 50, 10);
+  spec.section = SectionKind::impact;
+  const SweepResult r = run(impact_oscillator(7.0), options(), spec);
+  ASSERT_EQ(r.runs.size(), 1u);
+  const SweepRun& run = r.runs[0];
+  ASSERT_EQ(run.points.size(), 10u);  // one impact per period
+  for (const SectionPoint& p : run.points) {
+    EXPECT_EQ(p.limiter, 0);
+    EXPECT_NEAR(std::remainder(p.phi, 2.0 * M_PI), 0.0, 1e-12);
+    EXPECT_LT(p.dphi, 0.0);  // arriving from above the stop, moving down
+    EXPECT_NEAR(p.phase, run.points[0].phase, 1e-4);  // a period-1 motion strikes at one phase
+  }
+}
+
+TEST(Sweep, BadSweepsAreRefusedNamingTheField) {
+  const Model m = impact_oscillator(5.0);
+  auto field = [&](const SweepSpec& s) {
+    const auto e = validate_sweep(m, s);
+    return e ? e->field : std::string("accepted");
+  };
+  SweepSpec s = over_omega(3.0, 8.0, 10);
+  EXPECT_EQ(field(s), "accepted");
+  s.axis.parameter = "model.pellets[3].F0";
+  EXPECT_EQ(field(s), "sweep.parameter");
+  s.axis.parameter = "model.pellets[0].colour";
+  EXPECT_EQ(field(s), "sweep.parameter");
+  s = over_omega(3.0, 8.0, 0);
+  EXPECT_EQ(field(s), "sweep.count");
+  s = over_omega(3.0, 8.0, 10);
+  s.axis2 = SweepAxis{"model.pellets[0].F0", 0.5, 0.2, 5};
+  EXPECT_EQ(field(s), "sweep.parameter2.to");
+  s = over_omega(3.0, 8.0, 10);
+  s.record = 0;
+  EXPECT_EQ(field(s), "sweep.record");
+  // A value that makes the model invalid names the model's field.
+  SweepSpec r{};
+  r.axis = {"model.R", -1.0, 1.0, 3};
+  EXPECT_EQ(field(r), "model.R");
+  // No forcing: only the impact section.
+  Model free = m;
+  free.pellets[0].force = {};
+  SweepSpec k{};
+  k.axis = {"model.limiters[0].k", 0.5, 0.9, 3};
+  EXPECT_EQ(validate_sweep(free, k)->field, "sweep.section");
+  k.section = SectionKind::impact;
+  EXPECT_FALSE(validate_sweep(free, k));
+}
+
+TEST(Parameter, PathsNameTheModelsNumericFields) {
+  Model m = impact_oscillator(5.0);
+  EXPECT_FALSE(set_parameter(m, "model.pellets[0].F0", 0.7));
+  EXPECT_EQ(m.pellets[0].force.F0, 0.7);
+  EXPECT_FALSE(set_parameter(m, "model.limiters[0].k", 0.5));
+  EXPECT_EQ(m.limiters[0].k, 0.5);
+  EXPECT_EQ(get_parameter(m, "model.R"), 0.5);
+  EXPECT_TRUE(set_parameter(m, "model.pellets[1].F0", 1.0));
+  EXPECT_TRUE(set_parameter(m, "model.pellets[0]F0", 1.0));
+  EXPECT_TRUE(set_parameter(m, "pellets[0].F0", 1.0));
+  EXPECT_FALSE(get_parameter(m, "model.limiters[2].angle"));
+}
+
+}  // namespace
+}  // namespace vibro
