@@ -16,7 +16,8 @@ const std::vector<Command>& commands() {
        "vibro work-precision SCENE.json | - | --preset NAME [-o OUT.png|OUT.svg] [--repeats N]",
        work_precision_command},
       {"sweep",
-       "vibro sweep SCENE.json | - | --preset NAME [-o OUT.json|OUT.csv] [--threads N] [overrides]",
+       "vibro sweep SCENE.json | - | --preset NAME [-o OUT.json|.csv|.png|.svg] [--threads N] "
+       "[--pellet I] [--coordinate dphi|phi]",
        sweep_command},
       {"serve", "vibro serve [--host 127.0.0.1] [--port 8080] [--threads N] [--web DIR] "
                 "[--quiet] (--help: every flag)",

@@ -40,7 +40,7 @@ int render_command(const Args& args) {
   std::optional<WorkPrecisionReport> sweep;
   if (plan.needs_work_precision) sweep = work_precision(scene->model, scene->sim);
   const RenderResult image =
-      render_figure(scene->figure, scene->model, run, format, sweep ? &*sweep : nullptr);
+      render_figure(scene->figure, scene->model, run, format, {sweep ? &*sweep : nullptr});
   if (!image.ok()) {
     std::cerr << nlohmann::json{{"error", image.error->message}, {"field", image.error->field}}.dump() << "\n";
     return 1;

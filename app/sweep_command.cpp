@@ -1,6 +1,7 @@
-// `vibro sweep SCENE | --preset NAME [-o OUT.json|OUT.csv] [--threads N]`: runs the scene's
-// sweep on every core (or N threads), writes its points (JSON to stdout without -o), and shows a
-// progress bar with the time left on stderr when that is a terminal.
+// `vibro sweep SCENE | --preset NAME [-o OUT.json|.csv|.png|.svg] [--threads N] [--pellet I]
+// [--coordinate dphi|phi]`: runs the scene's sweep on every core (or N threads), writes its points
+// (JSON to stdout without -o) or draws its bifurcation diagram, and shows a progress bar with the
+// time left on stderr when that is a terminal.
 #include <unistd.h>
 
 #include <algorithm>
@@ -15,6 +16,7 @@
 #include "app/commands.h"
 #include "core/sweep.h"
 #include "io/sweep_json.h"
+#include "render/figure.h"
 
 namespace vibro {
 namespace {
@@ -54,6 +56,8 @@ int sweep_command(const Args& args) {
   if (!scene) return 2;
   std::string out;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  PlotSpec plot;
+  plot.kind = PlotKind::bifurcation;
   for (; next < args.size(); ++next) {
     const std::string& a = args[next];
     if ((a == "-o" || a == "--output") && next + 1 < args.size()) {
@@ -68,6 +72,20 @@ int sweep_command(const Args& args) {
         usage_error("--threads", "must be an integer in [1, 1024]");
         return 2;
       }
+    } else if (a == "--pellet" && next + 1 < args.size()) {
+      const std::string& v = args[++next];
+      plot.pellet = v.size() == 1 && v[0] >= '0' && v[0] <= '9' ? v[0] - '0' : -1;
+      if (plot.pellet < 0 || plot.pellet >= scene->model.size()) {
+        usage_error("--pellet", "must be a pellet index in 0.." + std::to_string(scene->model.size() - 1));
+        return 2;
+      }
+    } else if (a == "--coordinate" && next + 1 < args.size()) {
+      const std::string& v = args[++next];
+      if (v != "dphi" && v != "phi") {
+        usage_error("--coordinate", "must be \"dphi\" or \"phi\"");
+        return 2;
+      }
+      plot.coordinate = v == "phi" ? SectionCoordinate::phi : SectionCoordinate::dphi;
     } else {
       usage_error(a, "is not an option of `vibro sweep`");
       return 2;
@@ -77,8 +95,9 @@ int sweep_command(const Args& args) {
     usage_error("sweep", "the scene has no sweep: add one (API.md, \"Sweeps\")");
     return 2;
   }
-  if (!out.empty() && !out.ends_with(".json") && !out.ends_with(".csv")) {
-    usage_error("-o", "name the output OUT.json or OUT.csv");
+  const bool image = out.ends_with(".png") || out.ends_with(".svg");
+  if (!out.empty() && !out.ends_with(".json") && !out.ends_with(".csv") && !image) {
+    usage_error("-o", "name the output OUT.json, OUT.csv, OUT.png or OUT.svg");
     return 2;
   }
   ProgressBar bar;
@@ -86,9 +105,24 @@ int sweep_command(const Args& args) {
   control.threads = threads;
   if (isatty(STDERR_FILENO)) control.progress = [&bar](long done, long total) { bar(done, total); };
   const SweepResult result = run_sweep(scene->model, scene->sim, *scene->sweep, control);
-  const std::string text = out.ends_with(".csv")
-                               ? sweep_result_csv(result)
-                               : sweep_result_json(*scene->sweep, result).dump() + "\n";
+  std::string text;
+  if (image) {
+    FigureSpec figure;
+    figure.width = scene->figure.width;
+    figure.height = scene->figure.height;
+    figure.plots = {plot};
+    const ImageFormat format = out.ends_with(".svg") ? ImageFormat::svg : ImageFormat::png;
+    const RenderResult drawn =
+        render_figure(figure, scene->model, RunResult{}, format, {nullptr, &*scene->sweep, &result});
+    if (!drawn.ok()) {
+      usage_error(drawn.error->field, drawn.error->message);
+      return 1;
+    }
+    text.assign(drawn.bytes.begin(), drawn.bytes.end());
+  } else {
+    text = out.ends_with(".csv") ? sweep_result_csv(result)
+                                 : sweep_result_json(*scene->sweep, result).dump() + "\n";
+  }
   if (out.empty()) {
     std::cout << text;
     return 0;

@@ -58,7 +58,7 @@ int work_precision_command(const Args& args) {
     if (!scene->name.empty()) plot.title = "Work-precision, " + scene->name + " scene";
     figure.plots = {plot};
     const ImageFormat format = out.ends_with(".svg") ? ImageFormat::svg : ImageFormat::png;
-    const RenderResult image = render_figure(figure, scene->model, RunResult{}, format, &report);
+    const RenderResult image = render_figure(figure, scene->model, RunResult{}, format, {&report});
     if (!image.ok()) {
       usage_error(image.error->field, image.error->message);
       return 1;

@@ -356,6 +356,7 @@ json scene_to_json(const Scene& s) {
       case PlotKind::time: pj["kind"] = "time"; break;
       case PlotKind::cylinder: pj["kind"] = "cylinder"; break;
       case PlotKind::work_precision: pj["kind"] = "work_precision"; break;
+      case PlotKind::bifurcation: pj["kind"] = "bifurcation"; break;
     }
     if (p.kind == PlotKind::time) {
       pj["pellets"] = p.pellets;

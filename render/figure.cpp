@@ -36,13 +36,13 @@ std::optional<FieldError> check_tracks(const FigureSpec& figure, const Model& mo
 }
 
 std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, const Model& model,
-                                      const RunResult& run, const WorkPrecisionReport* wp) {
+                                      const RunResult& run, const PanelData& data) {
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
   cairo_paint(cr);
   const render::Style style = render::style_for(figure.width, figure.height);
   const auto layouts = render::figure_layout(figure);
   for (std::size_t i = 0; i < layouts.size(); ++i) {
-    const render::PanelInput in{figure.plots[i], model, run, layouts[i], style, wp};
+    const render::PanelInput in{figure.plots[i], model, run, layouts[i], style, data};
     switch (figure.plots[i].kind) {
       case PlotKind::phase:
         render::draw_phase_panel(cr, in);
@@ -55,8 +55,14 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
           return FieldError{"plots[" + std::to_string(i) + "].kind", *message};
         break;
       case PlotKind::work_precision:
-        if (!wp) return FieldError{"plots[" + std::to_string(i) + "].kind", "needs a work-precision sweep"};
+        if (!data.work_precision)
+          return FieldError{"plots[" + std::to_string(i) + "].kind", "needs a work-precision sweep"};
         render::draw_work_precision_panel(cr, in);
+        break;
+      case PlotKind::bifurcation:
+        if (!data.sweep || !data.sweep_spec)
+          return FieldError{"plots[" + std::to_string(i) + "].kind", "needs a sweep"};
+        render::draw_bifurcation_panel(cr, in);
         break;
     }
   }
@@ -69,10 +75,10 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
 RenderResult failure(FieldError error) { return {{}, {}, std::move(error)}; }
 
 RenderResult render_png(const FigureSpec& figure, const Model& model, const RunResult& run,
-                        const WorkPrecisionReport* wp) {
+                        const PanelData& data) {
   SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, figure.width, figure.height));
   CairoPtr cr(cairo_create(surface.get()));
-  if (auto e = draw_figure(cr.get(), figure, model, run, wp)) return failure(*e);
+  if (auto e = draw_figure(cr.get(), figure, model, run, data)) return failure(*e);
   cairo_surface_flush(surface.get());
   auto bytes =
       render::encode_png_argb32(cairo_image_surface_get_data(surface.get()), figure.width,
@@ -88,7 +94,7 @@ cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned i
 }
 
 RenderResult render_svg(const FigureSpec& figure, const Model& model, const RunResult& run,
-                        const WorkPrecisionReport* wp) {
+                        const PanelData& data) {
   std::vector<std::uint8_t> bytes;
   SurfacePtr surface(
       cairo_svg_surface_create_for_stream(append_bytes, &bytes, figure.width, figure.height));
@@ -96,7 +102,7 @@ RenderResult render_svg(const FigureSpec& figure, const Model& model, const RunR
   cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
   {
     CairoPtr cr(cairo_create(surface.get()));
-    if (auto e = draw_figure(cr.get(), figure, model, run, wp)) return failure(*e);
+    if (auto e = draw_figure(cr.get(), figure, model, run, data)) return failure(*e);
   }
   cairo_surface_finish(surface.get());
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
@@ -112,12 +118,12 @@ std::string_view content_type(ImageFormat format) {
 }
 
 RenderResult render_figure(const FigureSpec& figure, const Model& model, const RunResult& run,
-                           ImageFormat format, const WorkPrecisionReport* work_precision) {
+                           ImageFormat format, const PanelData& data) {
   try {
     if (auto e = validate_figure(figure, model, format)) return failure(*e);
     if (auto e = check_tracks(figure, model, run)) return failure(*e);
-    return format == ImageFormat::png ? render_png(figure, model, run, work_precision)
-                                      : render_svg(figure, model, run, work_precision);
+    return format == ImageFormat::png ? render_png(figure, model, run, data)
+                                      : render_svg(figure, model, run, data);
   } catch (const std::exception& e) {
     // Out of memory, mostly: an error value, never an exception across the module boundary.
     return failure({"", std::string("rendering failed: ") + e.what()});

@@ -18,6 +18,7 @@
 #include "core/model.h"
 #include "core/result.h"
 #include "core/validate.h"
+#include "core/sweep.h"
 #include "core/work_precision.h"
 #include "render/plot_spec.h"
 
@@ -45,11 +46,18 @@ struct RenderResult {
 std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model& model,
                                           ImageFormat format);
 
-// Validates, then draws every panel. Also an error: a pellet whose track the run did not record.
-// Work-precision panels draw `work_precision`, which must then be given.
+// What panels that draw more than the run draw: work-precision panels a report, bifurcation
+// panels a sweep and its spec.
+struct PanelData {
+  const WorkPrecisionReport* work_precision = nullptr;
+  const SweepSpec* sweep_spec = nullptr;
+  const SweepResult* sweep = nullptr;
+};
+
+// Validates, then draws every panel. Also errors: a pellet whose track the run did not record,
+// a panel whose data is not given.
 RenderResult render_figure(const FigureSpec& figure, const Model& model, const RunResult& run,
-                           ImageFormat format,
-                           const WorkPrecisionReport* work_precision = nullptr);
+                           ImageFormat format, const PanelData& data = {});
 
 // Whether this build can draw 3-D (cylinder) panels.
 bool cylinder_panels_available();

@@ -27,7 +27,7 @@ std::optional<FieldError> check_plot(std::size_t i, const PlotSpec& plot, const 
       if (auto e = check_pellet(field, plot.pellets[j], model.size())) return e;
     }
   } else if (plot.kind == PlotKind::work_precision) {
-    // Draws the sweep, not the run: no pellet to check.
+    // Draws the work-precision sweep, not the run: no pellet to check.
   } else if (auto e = check_pellet(plot_field(i, "pellet"), plot.pellet, model.size())) {
     return e;
   }

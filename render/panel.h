@@ -7,7 +7,7 @@
 
 #include "core/model.h"
 #include "core/result.h"
-#include "core/work_precision.h"
+#include "render/figure.h"
 #include "render/layout.h"
 #include "render/plot_spec.h"
 #include "render/style.h"
@@ -20,7 +20,7 @@ struct PanelInput {
   const RunResult& run;
   const PanelLayout& layout;
   const Style& style;
-  const WorkPrecisionReport* work_precision = nullptr;  // for work_precision panels
+  const PanelData& data;  // for work-precision and bifurcation panels
 };
 
 // The (φ, φ̇) portrait of one pellet: numbered branches, impacts, limiters, optional overlays.
@@ -31,5 +31,9 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in);
 
 // log10 error against log10 median run time, one line per method, points labelled by rtol.
 void draw_work_precision_panel(cairo_t* cr, const PanelInput& in);
+
+// A sweep's section points of one pellet against the swept parameter, a dot each, continuation
+// forward and backward told apart, runs not trusted marked.
+void draw_bifurcation_panel(cairo_t* cr, const PanelInput& in);
 
 }  // namespace vibro::render

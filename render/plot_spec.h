@@ -14,7 +14,11 @@ enum class PlotKind {
   time,      // φ(t) (optionally φ̇(t)) of the listed pellets
   cylinder,  // 3-D (OSMesa): the trajectory on the phase cylinder (cos φ, sin φ, φ̇)
   work_precision,  // log error against log run time, one line per method (a sweep, not the run)
+  bifurcation,     // a sweep's section points of one pellet against the swept parameter
 };
+
+// The section coordinate a bifurcation diagram draws against the parameter.
+enum class SectionCoordinate { dphi, phi };
 
 struct PhasePoint {
   double phi = 0.0;
@@ -39,6 +43,7 @@ struct PlotSpec {
   bool friction_zone = false;     // phase: shade |φ| ≤ α0 (mod 2π) where a pellet can rest
   std::string title;              // empty: a default title
   Camera camera;                  // cylinder
+  SectionCoordinate coordinate = SectionCoordinate::dphi;  // bifurcation
 };
 
 struct FigureSpec {

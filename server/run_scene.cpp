@@ -126,7 +126,7 @@ JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> im
   PlotSpec plot;
   plot.kind = PlotKind::work_precision;
   figure.plots = {plot};
-  RenderResult drawn = render_figure(figure, scene.model, RunResult{}, *image, &report);
+  RenderResult drawn = render_figure(figure, scene.model, RunResult{}, *image, {&report});
   if (!drawn.ok()) return ApiError::from(*drawn.error);
   return Produced{std::string(drawn.bytes.begin(), drawn.bytes.end()), drawn.content_type};
 }
