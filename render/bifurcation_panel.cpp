@@ -107,7 +107,7 @@ void draw_bifurcation_panel(cairo_t* cr, const PanelInput& in) {
     legend.push_back({"swept down", series_colour(1), Swatch::marker});
   }
   if (any_untrusted)
-    legend.push_back({"not trusted (hollow)", kInk, Swatch::marker, MarkerShape::circle, kInk});
+    legend.push_back({"not trusted", {1.0, 1.0, 1.0, 1.0}, Swatch::marker, MarkerShape::circle, kInk});
   draw_legend(cr, legend, area, avoid, style);
   cairo_restore(cr);
   draw_frame(cr, tr, ax, ay, style);
