@@ -8,6 +8,7 @@
 
 #include "io/presets.h"
 #include "io/scene_json.h"
+#include "io/sweep_json.h"
 #include "render/figure.h"
 #include "server/api_error.h"
 #include "server/etag.h"
@@ -83,6 +84,7 @@ Api::Api(const ServerConfig& config)
       preset_list_(make_preset_list()),
       web_(web_dir(config)),
       cache_(config.cache_bytes),
+      sweeps_({config.sweep_jobs, config.sweep_threads, config.sweep_queue}),
       workers_(worker_count(config), config.queue) {}
 
 void Api::health(const httplib::Request&, httplib::Response& res) const {
@@ -172,6 +174,99 @@ void Api::static_file(const httplib::Request& req, httplib::Response& res) const
   res.set_header("Cache-Control", "no-cache");
   res.set_header("X-Content-Type-Options", "nosniff");
   res.set_content(file->body, file->content_type);
+}
+
+namespace {
+
+json job_json(const JobStatus& s) {
+  return {{"id", s.id},
+          {"status", job_state_name(s.state)},
+          {"progress", {{"done", s.done}, {"total", s.total}}}};
+}
+
+void send_status(httplib::Response& res, const JobStatus& s) {
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(job_json(s).dump(), "application/json");
+}
+
+}  // namespace
+
+void Api::sweep_post(const httplib::Request& req, httplib::Response& res) {
+  if (auto e = only_params(req, {})) return send_error(res, *e);
+  SceneOrApiError parsed = scene_from_body(req, scene_limits_);
+  if (auto* e = std::get_if<ApiError>(&parsed)) return send_error(res, *e);
+  Scene scene = std::move(std::get<Scene>(parsed));
+  if (!scene.sweep)
+    return send_error(res, {400, "sweep", "is required: the sweep to run (API.md, \"Sweeps\")"});
+  if (auto e = check_sweep(scene, config_.limits)) return send_error(res, *e);
+  scene.sim = bounded_options(scene.sim, config_.limits);
+  const auto status = sweeps_.submit(std::move(scene));
+  if (!status) {
+    res.set_header("Retry-After", "10");
+    return send_error(res, {503, "server", "the sweep queue is full; try again later"});
+  }
+  res.status = 202;
+  res.set_header("Location", "/api/jobs/" + status->id);
+  send_status(res, *status);
+}
+
+void Api::job_get(const httplib::Request& req, httplib::Response& res) {
+  std::string id = req.path.substr(std::string_view("/api/jobs/").size());
+  const bool wants_result = id.ends_with("/result");
+  if (wants_result) id.resize(id.size() - std::string_view("/result").size());
+  if (!wants_result) {
+    if (auto e = only_params(req, {})) return send_error(res, *e);
+    const auto status = sweeps_.status(id);
+    if (!status) return send_error(res, {404, "id", "no sweep job \"" + id + "\" (finished ones are kept for a while)"});
+    return send_status(res, *status);
+  }
+  if (auto e = only_params(req, {"format", "pellet", "coordinate"})) return send_error(res, *e);
+  const auto job = sweeps_.finished(id);
+  if (!job) {
+    const auto status = sweeps_.status(id);
+    if (!status) return send_error(res, {404, "id", "no sweep job \"" + id + "\""});
+    return send_error(res, {409, "id", "the sweep is " + std::string(job_state_name(status->state)) +
+                                           ", not done: its result is not ready"});
+  }
+  const SweepSpec& spec = *job->scene.sweep;
+  const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
+  res.set_header("Cache-Control", "no-store");
+  if (format == "json") return res.set_content(sweep_result_json(spec, *job->result).dump(), "application/json");
+  if (format == "csv") return res.set_content(sweep_result_csv(*job->result), "text/csv");
+  if (format != "png" && format != "svg")
+    return send_error(res, {400, "format", "must be \"json\", \"csv\", \"png\" or \"svg\", got \"" + format + "\""});
+  PlotSpec plot;
+  plot.kind = PlotKind::bifurcation;
+  if (req.has_param("pellet")) {
+    const std::string p = req.get_param_value("pellet");
+    plot.pellet = p.size() == 1 && p[0] >= '0' && p[0] <= '9' ? p[0] - '0' : -1;
+    if (plot.pellet < 0 || plot.pellet >= job->scene.model.size())
+      return send_error(res, {400, "pellet", "must be a pellet index in 0.." +
+                                                 std::to_string(job->scene.model.size() - 1)});
+  }
+  if (req.has_param("coordinate")) {
+    const std::string c = req.get_param_value("coordinate");
+    if (c != "dphi" && c != "phi")
+      return send_error(res, {400, "coordinate", "must be \"dphi\" or \"phi\""});
+    plot.coordinate = c == "phi" ? SectionCoordinate::phi : SectionCoordinate::dphi;
+  }
+  FigureSpec figure;
+  figure.width = job->scene.figure.width;
+  figure.height = job->scene.figure.height;
+  figure.plots = {plot};
+  const ImageFormat f = format == "svg" ? ImageFormat::svg : ImageFormat::png;
+  const RenderResult image =
+      render_figure(figure, job->scene.model, RunResult{}, f, {nullptr, &spec, job->result.get()});
+  if (!image.ok()) return send_error(res, ApiError::from(*image.error, 500));
+  res.set_content(std::string(image.bytes.begin(), image.bytes.end()), image.content_type);
+}
+
+void Api::job_delete(const httplib::Request& req, httplib::Response& res) {
+  if (auto e = only_params(req, {})) return send_error(res, *e);
+  const std::string id = req.path.substr(std::string_view("/api/jobs/").size());
+  const auto status = sweeps_.cancel(id);
+  if (!status) return send_error(res, {404, "id", "no sweep job \"" + id + "\""});
+  send_status(res, *status);
 }
 
 void Api::simulate(const Scene& scene, const httplib::Request& req, httplib::Response& res) {

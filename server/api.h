@@ -11,6 +11,7 @@
 #include "server/response_cache.h"
 #include "server/run_scene.h"
 #include "server/static_files.h"
+#include "server/sweep_jobs.h"
 #include "server/worker_pool.h"
 
 namespace vibro::server {
@@ -31,6 +32,11 @@ class Api {
   // run, so it is never cached.
   void work_precision_post(const httplib::Request& req, httplib::Response& res);
   void static_file(const httplib::Request& req, httplib::Response& res) const;
+  // Sweeps as jobs: 202 with the id; /api/jobs/{id} its progress, /api/jobs/{id}/result?format=
+  // json|csv|png|svg its points or diagram, DELETE cancels.
+  void sweep_post(const httplib::Request& req, httplib::Response& res);
+  void job_get(const httplib::Request& req, httplib::Response& res);
+  void job_delete(const httplib::Request& req, httplib::Response& res);
 
   // Draws the paper preset into the cache, as GET /api/render?preset=paper asks for it, so the
   // page's first figure is ready. False (with the error) if that fails.
@@ -52,6 +58,7 @@ class Api {
   const std::string preset_list_;  // the JSON of GET /api/presets, made once
   StaticFiles web_;
   ResponseCache cache_;
+  SweepJobs sweeps_;
   WorkerPool workers_;  // last: its destructor runs queued jobs, which use the members above
 };
 

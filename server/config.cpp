@@ -22,7 +22,8 @@ nlohmann::json limits_json(const Limits& limits) {
           {"samples", limits.samples},       {"deadline_ms", limits.deadline_ms},
           {"width", limits.width},           {"height", limits.height},
           {"pixels", limits.pixels},         {"pellets", limits.pellets},
-          {"limiters", limits.limiters},     {"plots", limits.plots}};
+          {"limiters", limits.limiters},     {"plots", limits.plots},
+          {"sweep_periods", limits.sweep_periods}};
 }
 
 int worker_count(const ServerConfig& config) {

@@ -26,6 +26,7 @@ struct Limits {
   int pellets = 8;
   int limiters = 16;
   int plots = 8;
+  double sweep_periods = 1e6;  // a sweep's runs × (transient + record) periods
 };
 
 struct ServerConfig {
@@ -43,6 +44,9 @@ struct ServerConfig {
   std::size_t cache_bytes = 64 * 1024 * 1024;  // results and images, least recently used dropped
   bool access_log = true;                      // one line per request on stderr
   Limits limits;
+  int sweep_jobs = 1;         // sweeps running at once, on threads of their own
+  int sweep_threads = 1;      // threads of one sweep
+  std::size_t sweep_queue = 8;  // sweeps waiting; beyond it: 503
 };
 
 // The scene reader's bounds, from the server's limits.

@@ -12,7 +12,7 @@
 namespace vibro::server {
 
 struct Route {
-  std::string method;  // "GET" (which also answers HEAD) or "POST"
+  std::string method;  // "GET" (which also answers HEAD), "POST" or "DELETE"
   std::string path;    // exact, or every path under it when it ends with "/"
   httplib::Server::Handler handler;
 };

@@ -4,6 +4,7 @@
 #include <sstream>
 
 #include "core/simulate.h"
+#include "core/parameter.h"
 #include "core/work_precision.h"
 #include "io/work_precision_json.h"
 #include "io/result_json.h"
@@ -89,6 +90,35 @@ std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, con
   }
   if (auto e = validate_figure(f, scene.model, format)) return ApiError::from(*e);
   return std::nullopt;
+}
+
+std::optional<ApiError> check_sweep(const Scene& scene, const Limits& limits) {
+  const SweepSpec& spec = *scene.sweep;
+  const double periods = static_cast<double>(sweep_runs(spec)) * (spec.transient + spec.record);
+  if (periods > limits.sweep_periods)
+    return ApiError{400, "sweep.count",
+                    "the sweep asks for " + std::to_string(static_cast<long>(periods)) +
+                        " periods (runs × (transient + record)), over the server's limit of " +
+                        std::to_string(static_cast<long>(limits.sweep_periods))};
+  // The longest run: the period is longest where the swept values make it so, at a corner.
+  const SweepAxis one{"", 0.0, 0.0, 1};
+  const SweepAxis& a2 = spec.axis2 ? *spec.axis2 : one;
+  for (double v : {spec.axis.from, spec.axis.to})
+    for (double v2 : {a2.from, a2.to}) {
+      Model m = scene.model;
+      set_parameter(m, spec.axis.parameter, v);
+      if (spec.axis2) set_parameter(m, spec.axis2->parameter, v2);
+      const double span = (spec.transient + spec.record) * sweep_period(m);
+      if (span > limits.t_end)
+        return ApiError{400, "sweep.record",
+                        "a run would last " + std::to_string(span) + " s (transient + record "
+                        "periods), over the server's limit of " + std::to_string(limits.t_end) + " s"};
+    }
+  return std::nullopt;
+}
+
+SimOptions bounded_options(const SimOptions& options, const Limits& limits) {
+  return bounded(options, limits).options;
 }
 
 JobResult simulate_scene(const Scene& scene, const Limits& limits) {

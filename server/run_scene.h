@@ -28,6 +28,13 @@ std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, con
 // The run as API.md's JSON, with the sampled branches if the scene asks for trajectories.
 JobResult simulate_scene(const Scene& scene, const Limits& limits);
 
+// What a sweep may cost, known up front: its runs × periods, and each run's span, within the
+// server's limits. The error names the sweep's field.
+std::optional<ApiError> check_sweep(const Scene& scene, const Limits& limits);
+
+// The scene's run options within the server's limits (events, steps, deadline per run).
+SimOptions bounded_options(const SimOptions& options, const Limits& limits);
+
 // The scene's plots as one image, computing only what they draw.
 JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& limits);
 

@@ -42,6 +42,9 @@ std::vector<Route> api_routes(Api& api) {
       {"GET", "/api/render", bind(&Api::render_get)},
       {"POST", "/api/render", bind(&Api::render_post)},
       {"POST", "/api/work-precision", bind(&Api::work_precision_post)},
+      {"POST", "/api/sweep", bind(&Api::sweep_post)},
+      {"GET", "/api/jobs/", bind(&Api::job_get)},
+      {"DELETE", "/api/jobs/", bind(&Api::job_delete)},
   };
 }
 
