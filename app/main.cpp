@@ -17,7 +17,7 @@ const std::vector<Command>& commands() {
        work_precision_command},
       {"sweep",
        "vibro sweep SCENE.json | - | --preset NAME [-o OUT.json|.csv|.png|.svg] [--threads N] "
-       "[--pellet I] [--coordinate dphi|phi]",
+       "[--plot bifurcation|section|impact_map|regime_map] [--pellet I] [--coordinate dphi|phi]",
        sweep_command},
       {"serve", "vibro serve [--host 127.0.0.1] [--port 8080] [--threads N] [--web DIR] "
                 "[--quiet] (--help: every flag)",

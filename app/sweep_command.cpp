@@ -1,7 +1,8 @@
-// `vibro sweep SCENE | --preset NAME [-o OUT.json|.csv|.png|.svg] [--threads N] [--pellet I]
-// [--coordinate dphi|phi]`: runs the scene's sweep on every core (or N threads), writes its points
-// (JSON to stdout without -o) or draws its bifurcation diagram, and shows a progress bar with the
-// time left on stderr when that is a terminal.
+// `vibro sweep SCENE | --preset NAME [-o OUT.json|.csv|.png|.svg] [--threads N] [--plot KIND]
+// [--pellet I] [--coordinate dphi|phi]`: runs the scene's sweep on every core (or N threads),
+// writes its points (JSON to stdout without -o) or draws it (a bifurcation diagram, a section, an
+// impact map or a regime map), and shows a progress bar with the time left on stderr when that is
+// a terminal.
 #include <unistd.h>
 
 #include <algorithm>
@@ -57,7 +58,7 @@ int sweep_command(const Args& args) {
   std::string out;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   PlotSpec plot;
-  plot.kind = PlotKind::bifurcation;
+  std::string plot_name;
   for (; next < args.size(); ++next) {
     const std::string& a = args[next];
     if ((a == "-o" || a == "--output") && next + 1 < args.size()) {
@@ -79,6 +80,8 @@ int sweep_command(const Args& args) {
         usage_error("--pellet", "must be a pellet index in 0.." + std::to_string(scene->model.size() - 1));
         return 2;
       }
+    } else if (a == "--plot" && next + 1 < args.size()) {
+      plot_name = args[++next];
     } else if (a == "--coordinate" && next + 1 < args.size()) {
       const std::string& v = args[++next];
       if (v != "dphi" && v != "phi") {
@@ -95,6 +98,12 @@ int sweep_command(const Args& args) {
     usage_error("sweep", "the scene has no sweep: add one (API.md, \"Sweeps\")");
     return 2;
   }
+  const auto kind = sweep_plot_kind(plot_name, *scene->sweep);
+  if (!kind) {
+    usage_error("--plot", "must be \"bifurcation\", \"section\", \"impact_map\" or \"regime_map\"");
+    return 2;
+  }
+  plot.kind = *kind;
   const bool image = out.ends_with(".png") || out.ends_with(".svg");
   if (!out.empty() && !out.ends_with(".json") && !out.ends_with(".csv") && !image) {
     usage_error("-o", "name the output OUT.json, OUT.csv, OUT.png or OUT.svg");

@@ -107,7 +107,8 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
   if (spec.section == SectionKind::stroboscopic) {
     for (const StateAt& s : r.stops)
       for (int i = 0; i < m.size(); ++i) {
-        run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase(s.t), -1});
+        run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase(s.t), -1,
+                              s.t <= r.stats.trusted_until});
         run.sticks = run.sticks || held(s.pellets[i]);
       }
     run.period = section_period(r.stops, std::sqrt(m.g / m.R));
@@ -120,7 +121,8 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
       ++impacts;
     if (e.kind == EventKind::stick) run.sticks = true;
     if (spec.section == SectionKind::impact && e.kind == EventKind::limiter)
-      run.points.push_back({e.pellets[0], e.t, e.phi, e.dphi_before[0], phase(e.t), e.limiter});
+      run.points.push_back({e.pellets[0], e.t, e.phi, e.dphi_before[0], phase(e.t), e.limiter,
+                            e.t <= r.stats.trusted_until});
   }
   run.impacts_per_period = static_cast<double>(impacts) / spec.record;
   run.at_rest = std::all_of(r.summary.final.begin(), r.summary.final.end(), held);
@@ -129,6 +131,7 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
   run.trusted = run.termination == Termination::completed &&
                 r.stats.trusted_until >= r.stats.t_reached;
   run.error_estimate = r.stats.error_estimate;
+  run.trusted_until = r.stats.trusted_until;
   last.phi.clear();
   last.dphi.clear();
   for (const FinalState& f : r.summary.final) {

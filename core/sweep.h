@@ -63,6 +63,7 @@ struct SectionPoint {
   double dphi = 0.0;  // before the impact, for the impact section
   double phase = 0.0; // of the period at t, rad in [0, 2π)
   int limiter = -1;   // impact section: the limiter struck
+  bool trusted = true;  // before the run's stats.trusted_until
 };
 
 // One run: a value (pair), a start, a direction of continuation.
@@ -79,6 +80,7 @@ struct SweepRun {
   bool at_rest = false;   // every pellet ends stuck or resting on a limiter
   bool sticks = false;    // some pellet is stuck or resting at some section point
   bool trusted = true;    // stats.trusted_until reached the end (or the check is off)
+  double trusted_until = 0.0;  // s: its points before it are vouched for
   Termination termination = Termination::completed;
   std::string message;    // why the run stopped early
   double error_estimate = 0.0;

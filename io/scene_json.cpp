@@ -357,6 +357,9 @@ json scene_to_json(const Scene& s) {
       case PlotKind::cylinder: pj["kind"] = "cylinder"; break;
       case PlotKind::work_precision: pj["kind"] = "work_precision"; break;
       case PlotKind::bifurcation: pj["kind"] = "bifurcation"; break;
+      case PlotKind::section: pj["kind"] = "section"; break;
+      case PlotKind::impact_map: pj["kind"] = "impact_map"; break;
+      case PlotKind::regime_map: pj["kind"] = "regime_map"; break;
     }
     if (p.kind == PlotKind::time) {
       pj["pellets"] = p.pellets;

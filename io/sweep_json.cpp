@@ -101,12 +101,14 @@ json sweep_to_json(const SweepSpec& s) {
 json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
   json value = json::array(), value2 = json::array(), start = json::array(),
        direction = json::array(), pellet = json::array(), t = json::array(), phi = json::array(),
-       dphi = json::array(), phase = json::array(), limiter = json::array(), run_of = json::array();
+       dphi = json::array(), phase = json::array(), limiter = json::array(), run_of = json::array(),
+       point_trusted = json::array();
   json runs = {{"value", json::array()},     {"value2", json::array()},
                {"start", json::array()},     {"direction", json::array()},
                {"period", json::array()},    {"impacts_per_period", json::array()},
                {"at_rest", json::array()},   {"sticks", json::array()},
-               {"trusted", json::array()},   {"termination", json::array()},
+               {"trusted", json::array()},   {"trusted_until", json::array()},
+               {"termination", json::array()},
                {"message", json::array()},   {"error_estimate", json::array()}};
   for (std::size_t r = 0; r < result.runs.size(); ++r) {
     const SweepRun& run = result.runs[r];
@@ -121,6 +123,7 @@ json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
       dphi.push_back(finite(p.dphi));
       phase.push_back(finite(p.phase));
       limiter.push_back(p.limiter);
+      point_trusted.push_back(p.trusted);
       run_of.push_back(r);
     }
     runs["value"].push_back(run.value);
@@ -132,13 +135,15 @@ json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
     runs["at_rest"].push_back(run.at_rest);
     runs["sticks"].push_back(run.sticks);
     runs["trusted"].push_back(run.trusted);
+    runs["trusted_until"].push_back(finite(run.trusted_until));
     runs["termination"].push_back(termination_name(run.termination));
     runs["message"].push_back(run.message);
     runs["error_estimate"].push_back(finite(run.error_estimate));
   }
   json points = {{"value", value}, {"value2", value2}, {"start", start},   {"direction", direction},
                  {"pellet", pellet}, {"t", t},          {"phi", phi},       {"dphi", dphi},
-                 {"phase", phase},   {"limiter", limiter}, {"run", run_of}};
+                 {"phase", phase},   {"limiter", limiter}, {"trusted", point_trusted},
+                 {"run", run_of}};
   json j = {{"parameter", spec.axis.parameter}, {"section", section_name(spec.section)},
             {"points", points}, {"runs", runs},
             {"stats",
@@ -151,17 +156,26 @@ json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
   return j;
 }
 
+std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {
+  if (name.empty()) return spec.axis2 ? PlotKind::regime_map : PlotKind::bifurcation;
+  if (name == "bifurcation") return PlotKind::bifurcation;
+  if (name == "section") return PlotKind::section;
+  if (name == "impact_map") return PlotKind::impact_map;
+  if (name == "regime_map") return PlotKind::regime_map;
+  return std::nullopt;
+}
+
 std::string sweep_result_csv(const SweepResult& result) {
   std::ostringstream out;
   out << std::setprecision(17);
-  out << "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,period,impacts_per_period,"
-         "trusted\n";
+  out << "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
+         "impacts_per_period\n";
   for (const SweepRun& run : result.runs)
     for (const SectionPoint& p : run.points)
       out << run.value << ',' << run.value2 << ',' << run.start << ',' << run.direction << ','
           << p.pellet << ',' << p.t << ',' << p.phi << ',' << p.dphi << ',' << p.phase << ','
-          << p.limiter << ',' << run.period << ',' << run.impacts_per_period << ','
-          << (run.trusted ? 1 : 0) << '\n';
+          << p.limiter << ',' << (p.trusted ? 1 : 0) << ',' << run.period << ','
+          << run.impacts_per_period << '\n';
   return out.str();
 }
 

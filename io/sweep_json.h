@@ -3,9 +3,11 @@
 #pragma once
 
 #include <nlohmann/json.hpp>
+#include <optional>
 #include <string>
 
 #include "core/sweep.h"
+#include "render/plot_spec.h"
 
 namespace vibro {
 
@@ -18,5 +20,10 @@ nlohmann::json sweep_to_json(const SweepSpec& spec);
 nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& result);
 // The points as CSV with a header row, one line per point, each run's classification on it.
 std::string sweep_result_csv(const SweepResult& result);
+
+// The plot a sweep is drawn as: "bifurcation", "section", "impact_map" or "regime_map"; an empty
+// name picks the regime map for a 2-D sweep and the bifurcation diagram otherwise. Nothing for
+// another name.
+std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec& spec);
 
 }  // namespace vibro

@@ -60,9 +60,15 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
         render::draw_work_precision_panel(cr, in);
         break;
       case PlotKind::bifurcation:
+      case PlotKind::section:
+      case PlotKind::impact_map:
+      case PlotKind::regime_map:
         if (!data.sweep || !data.sweep_spec)
           return FieldError{"plots[" + std::to_string(i) + "].kind", "needs a sweep"};
-        render::draw_bifurcation_panel(cr, in);
+        if (figure.plots[i].kind == PlotKind::regime_map)
+          render::draw_regime_map_panel(cr, in);
+        else
+          render::draw_sweep_points_panel(cr, in);
         break;
     }
   }

@@ -32,8 +32,12 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in);
 // log10 error against log10 median run time, one line per method, points labelled by rtol.
 void draw_work_precision_panel(cairo_t* cr, const PanelInput& in);
 
-// A sweep's section points of one pellet against the swept parameter, a dot each, continuation
-// forward and backward told apart, runs not trusted marked.
-void draw_bifurcation_panel(cairo_t* cr, const PanelInput& in);
+// A sweep's section points of one pellet as a cloud of dots: against the swept parameter
+// (bifurcation), in the (φ, φ̇) plane (section) or against the forcing phase (impact map);
+// continuation forward and backward told apart, runs not trusted hollow.
+void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in);
+
+// A 2-D sweep's cells coloured by the period of the motion, with a legend of periods.
+void draw_regime_map_panel(cairo_t* cr, const PanelInput& in);
 
 }  // namespace vibro::render

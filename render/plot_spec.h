@@ -15,7 +15,15 @@ enum class PlotKind {
   cylinder,  // 3-D (OSMesa): the trajectory on the phase cylinder (cos φ, sin φ, φ̇)
   work_precision,  // log error against log run time, one line per method (a sweep, not the run)
   bifurcation,     // a sweep's section points of one pellet against the swept parameter
+  section,         // a sweep's section points of one pellet in the (φ, φ̇) plane
+  impact_map,      // a sweep's impacts of one pellet: φ̇ before impact against the forcing phase
+  regime_map,      // a 2-D sweep's cells coloured by the period of the motion
 };
+// The plot kinds that draw a sweep rather than a run.
+inline bool draws_sweep(PlotKind kind) {
+  return kind == PlotKind::bifurcation || kind == PlotKind::section ||
+         kind == PlotKind::impact_map || kind == PlotKind::regime_map;
+}
 
 // The section coordinate a bifurcation diagram draws against the parameter.
 enum class SectionCoordinate { dphi, phi };

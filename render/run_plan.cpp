@@ -14,7 +14,7 @@ RunPlan plan_run(const FigureSpec& figure, const SimOptions& base, int pellets) 
   for (const PlotSpec& p : figure.plots) {
     if (p.kind == PlotKind::work_precision) {
       plan.needs_work_precision = true;
-    } else if (p.kind == PlotKind::bifurcation) {
+    } else if (draws_sweep(p.kind)) {
       // Draws a sweep: nothing from the run.
     } else if (p.kind == PlotKind::time) {
       if (p.pellets.empty()) plan.options.record.assign(pellets, true);

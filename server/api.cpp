@@ -220,7 +220,7 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
     if (!status) return send_error(res, {404, "id", "no sweep job \"" + id + "\" (finished ones are kept for a while)"});
     return send_status(res, *status);
   }
-  if (auto e = only_params(req, {"format", "pellet", "coordinate"})) return send_error(res, *e);
+  if (auto e = only_params(req, {"format", "plot", "pellet", "coordinate"})) return send_error(res, *e);
   const auto job = sweeps_.finished(id);
   if (!job) {
     const auto status = sweeps_.status(id);
@@ -236,7 +236,10 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   if (format != "png" && format != "svg")
     return send_error(res, {400, "format", "must be \"json\", \"csv\", \"png\" or \"svg\", got \"" + format + "\""});
   PlotSpec plot;
-  plot.kind = PlotKind::bifurcation;
+  const auto kind = sweep_plot_kind(req.get_param_value("plot"), spec);
+  if (!kind)
+    return send_error(res, {400, "plot", "must be \"bifurcation\", \"section\", \"impact_map\" or \"regime_map\""});
+  plot.kind = *kind;
   if (req.has_param("pellet")) {
     const std::string p = req.get_param_value("pellet");
     plot.pellet = p.size() == 1 && p[0] >= '0' && p[0] <= '9' ? p[0] - '0' : -1;

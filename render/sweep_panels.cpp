@@ -1,0 +1,231 @@
+// The panels that draw a sweep. Point clouds (bifurcation diagram, section, impact map) draw every
+// section point of one pellet as a small translucent dot, so that a period-p motion reads as p
+// dots and a chaotic one as a dense cloud; continuation swept down is told apart from swept up
+// (hysteresis shows as two branches over one range), and the points of runs the trust check
+// could not vouch for are drawn hollow. The regime map colours each cell of a 2-D sweep by the
+// period of its motion.
+#include <algorithm>
+#include <cmath>
+#include <cstdlib>
+#include <functional>
+#include <string>
+
+#include "core/model.h"
+#include "render/axes.h"
+#include "render/legend.h"
+#include "render/markers.h"
+#include "render/panel.h"
+#include "render/text.h"
+
+namespace vibro::render {
+namespace {
+
+// "Ω of pellet 1 [rad/s]" for "model.pellets[0].Omega": the symbol, whose it is, and the unit.
+std::string parameter_label(const std::string& path) {
+  struct Name {
+    const char* field;
+    const char* symbol;
+    const char* unit;
+  };
+  static const Name names[] = {
+      {"F0", "F\u2080", "N"},          {"Omega", "\u03a9", "rad/s"}, {"psi", "\u03c8", "rad"},
+      {"m", "m", "kg"},                {"phi0", "\u03c6\u2080", "rad"},
+      {"dphi0", "\u03c6\u0307\u2080", "rad/s"},
+      {"angle", "angle", "rad"},       {"k", "k", ""},              {"R", "R", "m"},
+      {"g", "g", "m/s\u00b2"},         {"alpha0", "\u03b1\u2080", "rad"},
+      {"k_c", "k_c", ""},              {"mu_s", "\u03bc_s", ""}};
+  const std::size_t dot = path.rfind('.');
+  const std::string field = path.substr(dot + 1);
+  std::string whose;
+  for (const char* list : {"pellets[", "limiters["}) {
+    const std::size_t at = path.find(list);
+    if (at == std::string::npos) continue;
+    const int index = std::atoi(path.c_str() + at + std::string(list).size());
+    whose = std::string(" of ") + (list[0] == 'p' ? "pellet " : "limiter ") + std::to_string(index + 1);
+  }
+  for (const Name& n : names)
+    if (field == n.field)
+      return std::string(n.symbol) + whose + (*n.unit ? std::string(" [") + n.unit + "]" : "");
+  return path;
+}
+
+}  // namespace
+
+namespace {
+
+// Where a point goes in a point-cloud panel, and what the axes say.
+struct Cloud {
+  std::function<double(const SweepRun&, const SectionPoint&)> x, y;
+  std::string x_label, y_label;
+  bool x_angle = false, y_angle = false;
+  std::string title;
+};
+
+Cloud cloud_of(const PlotSpec& spec, const SweepSpec& sweep) {
+  const bool stroboscopic = sweep.section == SectionKind::stroboscopic;
+  const std::string where = stroboscopic ? " at t = kT" : " before impact";
+  const std::string section = stroboscopic ? "stroboscopic" : "impact";
+  const std::string pellet = "pellet " + std::to_string(spec.pellet + 1);
+  auto phi = [](const SweepRun&, const SectionPoint& p) { return wrap_angle(p.phi); };
+  auto dphi = [](const SweepRun&, const SectionPoint& p) { return p.dphi; };
+  Cloud c;
+  switch (spec.kind) {
+    case PlotKind::section:
+      c = {phi, dphi, std::string("\u03c6") + where + " [rad]",
+           std::string("\u03c6\u0307") + where + " [rad/s]", true, false,
+           "Poincar\u00e9 section (" + section + "), " + pellet};
+      break;
+    case PlotKind::impact_map:
+      c = {[](const SweepRun&, const SectionPoint& p) { return p.phase; }, dphi,
+           "phase of the forcing at impact, \u03a9t mod 2\u03c0 [rad]",
+           "\u03c6\u0307 before impact [rad/s]", true, false, "Impact map, " + pellet};
+      break;
+    default: {
+      const bool angle = spec.coordinate == SectionCoordinate::phi;
+      c = {[](const SweepRun& r, const SectionPoint&) { return r.value; }, angle ? phi : dphi,
+           parameter_label(sweep.axis.parameter),
+           std::string(angle ? "\u03c6" : "\u03c6\u0307") + where + (angle ? " [rad]" : " [rad/s]"),
+           false, angle, "Bifurcation diagram, " + section + " section, " + pellet};
+    }
+  }
+  return c;
+}
+
+// Distinct colours for periods 1 … 8 (Okabe and Ito's, told apart with any colour vision), grey
+// for longer periods and none.
+Colour period_colour(int period) {
+  static constexpr Colour colours[] = {rgb(0x0072b2), rgb(0xe69f00), rgb(0x009e73), rgb(0xcc79a7),
+                                       rgb(0xd55e00), rgb(0x56b4e9), rgb(0xf0e442), rgb(0x444444)};
+  if (period >= 1 && period <= 8) return colours[period - 1];
+  return rgb(0xbbbbbb);
+}
+
+}  // namespace
+
+void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
+  const SweepResult& sweep = *in.data.sweep;
+  const SweepSpec& spec = *in.data.sweep_spec;
+  const Style& style = in.style;
+  const int pellet = in.spec.pellet;
+  const Cloud cloud = cloud_of(in.spec, spec);
+
+  Range x, y;
+  if (in.spec.kind == PlotKind::bifurcation) {
+    x.include(spec.axis.from);
+    x.include(spec.axis.to);
+  }
+  for (const SweepRun& run : sweep.runs)
+    for (const SectionPoint& p : run.points)
+      if (p.pellet == pellet) {
+        x.include(cloud.x(run, p));
+        y.include(cloud.y(run, p));
+      }
+  if (in.spec.kind == PlotKind::impact_map) x = {0.0, 2.0 * M_PI};
+  if (x.empty()) x = {-1.0, 1.0};
+  if (x.span() <= 0.0) x = {x.lo - 0.5, x.lo + 0.5};
+  if (y.empty()) y = {-1.0, 1.0};
+  if (y.span() <= 0.0) y = {y.lo - 0.5, y.lo + 0.5};
+  const Rect& area = in.layout.plots.front();
+  const Axis ax = make_axis(in.spec.kind == PlotKind::impact_map ? x : padded(x, 0.02), area.w,
+                            cloud.x_angle, cloud.x_label);
+  const Axis ay = make_axis(padded(y, 0.05), area.h, cloud.y_angle, cloud.y_label);
+  const Transform tr(area, ax.range, ay.range);
+
+  draw_grid(cr, tr, ax, ay, style);
+  cairo_save(cr);
+  clip_to(cr, area);
+  // A dot a little over a pixel wide: dense clouds darken where points pile up.
+  const double r = style.px(1.3);
+  bool any_backward = false, any_untrusted = false;
+  Obstacles avoid;
+  std::vector<Point> drawn;
+  for (const SweepRun& run : sweep.runs) {
+    const Colour c = series_colour(run.direction < 0 ? 1 : 0);
+    for (const SectionPoint& p : run.points) {
+      if (p.pellet != pellet) continue;
+      any_backward = any_backward || run.direction < 0;
+      any_untrusted = any_untrusted || !p.trusted;
+      const Point at = tr.to_pixel(cloud.x(run, p), cloud.y(run, p));
+      add_marker_path(cr, at, MarkerShape::circle, r);
+      if (p.trusted) {
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.55);
+        cairo_fill(cr);
+      } else {
+        cairo_set_source_rgba(cr, c.r, c.g, c.b, 0.8);
+        cairo_set_line_width(cr, style.px(0.6));
+        cairo_stroke(cr);
+      }
+      drawn.push_back(at);
+    }
+  }
+  avoid.lines.push_back(drawn);
+  std::vector<LegendEntry> legend;
+  if (any_backward) {
+    legend.push_back({"swept up", series_colour(0), Swatch::marker});
+    legend.push_back({"swept down", series_colour(1), Swatch::marker});
+  }
+  if (any_untrusted)
+    legend.push_back({"not trusted", {1.0, 1.0, 1.0, 1.0}, Swatch::marker, MarkerShape::circle, kInk});
+  draw_legend(cr, legend, area, avoid, style);
+  cairo_restore(cr);
+  draw_frame(cr, tr, ax, ay, style);
+  draw_title(cr, in.layout.title_anchor, in.spec.title.empty() ? cloud.title : in.spec.title, style);
+}
+
+void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
+  const SweepResult& sweep = *in.data.sweep;
+  const SweepSpec& spec = *in.data.sweep_spec;
+  const Style& style = in.style;
+  const SweepAxis& a = spec.axis;
+  const SweepAxis one{"", 0.0, 0.0, 1};
+  const SweepAxis& b = spec.axis2 ? *spec.axis2 : one;
+  // Each value is the centre of its cell.
+  auto cell_range = [](const SweepAxis& axis) {
+    const double half = axis.count > 1 ? 0.5 * (axis.to - axis.from) / (axis.count - 1) : 0.5;
+    return Range{axis.from - half, axis.to + half};
+  };
+  const Range x = cell_range(a), y = cell_range(b);
+  const Rect& area = in.layout.plots.front();
+  const Axis ax = make_axis(x, area.w, false, parameter_label(a.parameter));
+  const Axis ay = make_axis(y, area.h, false, spec.axis2 ? parameter_label(b.parameter) : "");
+  const Transform tr(area, ax.range, ay.range);
+  const double w = x.span() / std::max(a.count, 1), h = y.span() / std::max(b.count, 1);
+  std::vector<int> periods;
+  bool rest = false, untrusted = false;
+  for (const SweepRun& run : sweep.runs) {
+    if (run.start != 0 || run.direction < 0) continue;  // the first start, swept up: one per cell
+    const Point lo = tr.to_pixel(run.value - 0.5 * w, run.value2 - 0.5 * h);
+    const Point hi = tr.to_pixel(run.value + 0.5 * w, run.value2 + 0.5 * h);
+    const Colour c = run.at_rest ? Colour{1.0, 1.0, 1.0, 1.0} : period_colour(run.period);
+    cairo_rectangle(cr, lo.x, hi.y, hi.x - lo.x + 0.5, lo.y - hi.y + 0.5);
+    set_colour(cr, c);
+    cairo_fill(cr);
+    if (!run.trusted) {  // hatched: the trust check could not vouch for it
+      cairo_move_to(cr, lo.x, lo.y);
+      cairo_line_to(cr, hi.x, hi.y);
+      set_colour(cr, kInk);
+      cairo_set_line_width(cr, style.px(0.5));
+      cairo_stroke(cr);
+      untrusted = true;
+    }
+    rest = rest || run.at_rest;
+    if (!run.at_rest && std::find(periods.begin(), periods.end(), run.period) == periods.end())
+      periods.push_back(run.period);
+  }
+  std::sort(periods.begin(), periods.end(), [](int p, int q) {
+    return (p == 0 ? 1000 : p) < (q == 0 ? 1000 : q);
+  });
+  std::vector<LegendEntry> legend;
+  for (int p : periods)
+    legend.push_back({p == 0 ? "not periodic" : p > 8 ? "period > 8" : "period " + std::to_string(p),
+                      period_colour(p), Swatch::area});
+  if (rest) legend.push_back({"at rest", {1.0, 1.0, 1.0, 1.0}, Swatch::area});
+  if (untrusted) legend.push_back({"not trusted (struck through)", kInk, Swatch::line});
+  draw_frame(cr, tr, ax, ay, style);
+  // The legend goes outside the data: to the right of the plot if there is room, else over it.
+  draw_legend(cr, legend, area, {}, style);
+  draw_title(cr, in.layout.title_anchor,
+             in.spec.title.empty() ? "Regime map: the period of the motion" : in.spec.title, style);
+}
+
+}  // namespace vibro::render

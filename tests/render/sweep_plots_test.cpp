@@ -1,0 +1,101 @@
+// The plots of a sweep: the bifurcation diagram, the section, the impact map and the regime map
+// draw their points (the series colours appear where the data is), as PNG and well-formed SVG;
+// without a sweep they are refused.
+#include <gtest/gtest.h>
+
+#include <string>
+
+#include "core/sweep.h"
+#include "png_decode.h"
+#include "render/figure.h"
+#include "svg_check.h"
+
+namespace vibro {
+namespace {
+
+Model impact_oscillator() {
+  Model m;
+  m.R = 0.5;
+  m.pellets = {{0.1, 0.1, 0.0, {0.3, 5.0, 0.0}}};
+  m.limiters = {{0.0, 0.8, false, -1, {}}};
+  return m;
+}
+
+struct Swept {
+  SweepSpec spec;
+  SweepResult result;
+};
+
+Swept sweep(SectionKind section, bool grid) {
+  Swept s;
+  s.spec.axis = {"model.pellets[0].Omega", 3.0, 8.0, 12};
+  if (grid) s.spec.axis2 = SweepAxis{"model.pellets[0].F0", 0.1, 0.5, 4};
+  s.spec.transient = 20;
+  s.spec.record = 16;
+  s.spec.section = section;
+  SimOptions o;
+  o.rtol = 1e-8;
+  o.atol = 1e-11;
+  o.check = false;
+  EXPECT_FALSE(validate_sweep(impact_oscillator(), s.spec));
+  s.result = run_sweep(impact_oscillator(), o, s.spec, {});
+  return s;
+}
+
+// The share of the image's pixels in a blue of the first series colour (translucent dots over
+// white included): blue well above red. The axes, text and grid are grey.
+double share_of_blue(const testing::Decoded& image) {
+  long n = 0;
+  for (std::uint32_t p : image.argb) {
+    const int r = (p >> 16) & 0xff, b = p & 0xff;
+    n += b - r > 40 ? 1 : 0;
+  }
+  return static_cast<double>(n) / static_cast<double>(image.argb.size());
+}
+
+RenderResult draw(PlotKind kind, const Swept& s, ImageFormat format) {
+  FigureSpec figure;
+  PlotSpec plot;
+  plot.kind = kind;
+  figure.plots = {plot};
+  return render_figure(figure, impact_oscillator(), RunResult{}, format,
+                       {nullptr, &s.spec, &s.result});
+}
+
+TEST(SweepPlots, EachKindDrawsItsPoints) {
+  const Swept strobe = sweep(SectionKind::stroboscopic, false);
+  const Swept impacts = sweep(SectionKind::impact, false);
+  const Swept grid = sweep(SectionKind::stroboscopic, true);
+  const struct {
+    PlotKind kind;
+    const Swept* swept;
+    double at_least;  // share of pixels in the first series colour
+  } cases[] = {{PlotKind::bifurcation, &strobe, 2e-4},
+               {PlotKind::section, &strobe, 2e-4},
+               {PlotKind::impact_map, &impacts, 2e-4},
+               {PlotKind::regime_map, &grid, 0.03}};  // cells of period 1 fill part of it
+  for (const auto& c : cases) {
+    const RenderResult png = draw(c.kind, *c.swept, ImageFormat::png);
+    ASSERT_TRUE(png.ok()) << png.error->message;
+    const testing::Decoded image = testing::decode_png(png.bytes);
+    ASSERT_EQ(image.width, 1200);
+    EXPECT_GT(share_of_blue(image), c.at_least) << static_cast<int>(c.kind);
+    const RenderResult svg = draw(c.kind, *c.swept, ImageFormat::svg);
+    ASSERT_TRUE(svg.ok());
+    const std::string text(svg.bytes.begin(), svg.bytes.end());
+    EXPECT_EQ(testing::xml_balance_error(text), "") << static_cast<int>(c.kind);
+  }
+}
+
+TEST(SweepPlots, WithoutASweepTheyAreRefused) {
+  FigureSpec figure;
+  PlotSpec plot;
+  plot.kind = PlotKind::bifurcation;
+  figure.plots = {plot};
+  const RenderResult r = render_figure(figure, impact_oscillator(), RunResult{}, ImageFormat::png);
+  ASSERT_FALSE(r.ok());
+  EXPECT_EQ(r.error->field, "plots[0].kind");
+}
+
+}  // namespace
+}  // namespace vibro
