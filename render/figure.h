@@ -59,6 +59,15 @@ struct PanelData {
 RenderResult render_figure(const FigureSpec& figure, const Model& model, const RunResult& run,
                            ImageFormat format, const PanelData& data = {});
 
+// Where the swept parameter lies in the first panel of a figure drawn with a bifurcation or
+// regime-map panel first: its plot area in image pixels and the parameter values at its left and
+// right edges, so a click on the image can name a value. Nothing for other panels.
+struct ParameterAxis {
+  double left = 0.0, top = 0.0, width = 0.0, height = 0.0;  // px
+  double from = 0.0, to = 0.0;  // the parameter at the left and right edges
+};
+std::optional<ParameterAxis> parameter_axis(const FigureSpec& figure, const SweepSpec& spec);
+
 // Whether this build can draw 3-D (cylinder) panels.
 bool cylinder_panels_available();
 

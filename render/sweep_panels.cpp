@@ -14,6 +14,7 @@
 #include "render/axes.h"
 #include "render/legend.h"
 #include "render/markers.h"
+#include "render/layout.h"
 #include "render/panel.h"
 #include "render/text.h"
 
@@ -91,6 +92,19 @@ Cloud cloud_of(const PlotSpec& spec, const SweepSpec& sweep) {
   return c;
 }
 
+// The parameter's range on a bifurcation diagram's x axis: the sweep's values and a margin.
+Range bifurcation_range(const SweepAxis& axis) {
+  Range x{axis.from, axis.to};
+  if (x.span() <= 0.0) x = {x.lo - 0.5, x.lo + 0.5};
+  return padded(x, 0.02);
+}
+
+// A regime map's range on an axis: each value is the centre of its cell.
+Range cell_range(const SweepAxis& axis) {
+  const double half = axis.count > 1 ? 0.5 * (axis.to - axis.from) / (axis.count - 1) : 0.5;
+  return Range{axis.from - half, axis.to + half};
+}
+
 // Distinct colours for periods 1 … 8 (Okabe and Ito's, told apart with any colour vision), grey
 // for longer periods and none.
 Colour period_colour(int period) {
@@ -110,24 +124,21 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
   const Cloud cloud = cloud_of(in.spec, spec);
 
   Range x, y;
-  if (in.spec.kind == PlotKind::bifurcation) {
-    x.include(spec.axis.from);
-    x.include(spec.axis.to);
-  }
   for (const SweepRun& run : sweep.runs)
     for (const SectionPoint& p : run.points)
       if (p.pellet == pellet) {
         x.include(cloud.x(run, p));
         y.include(cloud.y(run, p));
       }
-  if (in.spec.kind == PlotKind::impact_map) x = {0.0, 2.0 * M_PI};
   if (x.empty()) x = {-1.0, 1.0};
   if (x.span() <= 0.0) x = {x.lo - 0.5, x.lo + 0.5};
+  x = padded(x, 0.02);
+  if (in.spec.kind == PlotKind::impact_map) x = {0.0, 2.0 * M_PI};
+  if (in.spec.kind == PlotKind::bifurcation) x = bifurcation_range(spec.axis);
   if (y.empty()) y = {-1.0, 1.0};
   if (y.span() <= 0.0) y = {y.lo - 0.5, y.lo + 0.5};
   const Rect& area = in.layout.plots.front();
-  const Axis ax = make_axis(in.spec.kind == PlotKind::impact_map ? x : padded(x, 0.02), area.w,
-                            cloud.x_angle, cloud.x_label);
+  const Axis ax = make_axis(x, area.w, cloud.x_angle, cloud.x_label);
   const Axis ay = make_axis(padded(y, 0.05), area.h, cloud.y_angle, cloud.y_label);
   const Transform tr(area, ax.range, ay.range);
 
@@ -179,11 +190,6 @@ void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
   const SweepAxis& a = spec.axis;
   const SweepAxis one{"", 0.0, 0.0, 1};
   const SweepAxis& b = spec.axis2 ? *spec.axis2 : one;
-  // Each value is the centre of its cell.
-  auto cell_range = [](const SweepAxis& axis) {
-    const double half = axis.count > 1 ? 0.5 * (axis.to - axis.from) / (axis.count - 1) : 0.5;
-    return Range{axis.from - half, axis.to + half};
-  };
   const Range x = cell_range(a), y = cell_range(b);
   const Rect& area = in.layout.plots.front();
   const Axis ax = make_axis(x, area.w, false, parameter_label(a.parameter));
@@ -229,3 +235,17 @@ void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
 }
 
 }  // namespace vibro::render
+
+namespace vibro {
+
+std::optional<ParameterAxis> parameter_axis(const FigureSpec& figure, const SweepSpec& spec) {
+  if (figure.plots.empty()) return std::nullopt;
+  const PlotKind kind = figure.plots.front().kind;
+  if (kind != PlotKind::bifurcation && kind != PlotKind::regime_map) return std::nullopt;
+  const render::Rect area = render::figure_layout(figure).front().plots.front();
+  const render::Range x =
+      kind == PlotKind::bifurcation ? render::bifurcation_range(spec.axis) : render::cell_range(spec.axis);
+  return ParameterAxis{area.x, area.y, area.w, area.h, x.lo, x.hi};
+}
+
+}  // namespace vibro

@@ -5,6 +5,7 @@
 #include <memory>
 #include <nlohmann/json.hpp>
 #include <optional>
+#include <sstream>
 
 #include "io/presets.h"
 #include "io/scene_json.h"
@@ -261,6 +262,14 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   const RenderResult image =
       render_figure(figure, job->scene.model, RunResult{}, f, {nullptr, &spec, job->result.get()});
   if (!image.ok()) return send_error(res, ApiError::from(*image.error, 500));
+  // Where the parameter lies on the image, so that a click on it can name a value (the page).
+  if (const auto axis = parameter_axis(figure, spec)) {
+    std::ostringstream h;
+    h.precision(17);
+    h << axis->left << ',' << axis->top << ',' << axis->width << ',' << axis->height << ','
+      << axis->from << ',' << axis->to;
+    res.set_header("X-Vibro-Parameter-Axis", h.str());
+  }
   res.set_content(std::string(image.bytes.begin(), image.bytes.end()), image.content_type);
 }
 

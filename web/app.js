@@ -9,6 +9,8 @@ import { clearFieldErrors, revealField, showFieldError } from "./js/field_errors
 import { readHash, sceneLink } from "./js/permalink.js";
 import { describePreset, fillPicker, sameScene } from "./js/presets.js";
 import { SceneForm } from "./js/scene_form.js";
+import { setPath } from "./js/scene_path.js";
+import { clickedValue, defaultSweep, runSweep, sweepablePaths } from "./js/sweep.js";
 import { showSummary, showWarnings } from "./js/summary.js";
 
 const $ = (id) => document.getElementById(id);
@@ -57,6 +59,7 @@ async function loadPreset(name) {
   state.presetAsForm = asForm(scene);
   ui.picker.value = name;
   form.load(scene);
+  fillSweep(scene);
   edited();
 }
 
@@ -177,6 +180,112 @@ for (const format of ["png", "svg"]) {
   });
 }
 
+// [SECTION] sweep
+
+const sweepUi = {
+  parameter: $("sweep-parameter"),
+  from: $("sweep-from"),
+  to: $("sweep-to"),
+  count: $("sweep-count"),
+  transient: $("sweep-transient"),
+  record: $("sweep-record"),
+  continuation: $("sweep-continuation"),
+  run: $("sweep-run"),
+  cancel: $("sweep-cancel"),
+  progress: $("sweep-progress"),
+  status: $("sweep-status"),
+  box: $("sweep-box"),
+};
+const sweepState = { job: null, scene: null, axis: null, url: null };
+
+// The panel's fields from a scene: its own sweep, or a first one around its forcing.
+function fillSweep(scene) {
+  const sweep = defaultSweep(scene);
+  sweepUi.parameter.replaceChildren(...sweepablePaths(scene).map((path) => new Option(path, path)));
+  sweepUi.parameter.value = sweep.parameter;
+  sweepUi.from.value = sweep.from;
+  sweepUi.to.value = sweep.to;
+  sweepUi.count.value = sweep.count;
+  sweepUi.transient.value = sweep.transient ?? 50;
+  sweepUi.record.value = sweep.record ?? 20;
+  sweepUi.continuation.value = sweep.continuation ?? "none";
+}
+
+async function startSweep() {
+  const { scene, problems } = form.read();
+  if (problems.length) {
+    sweepUi.status.textContent = "Fix the scene's fields first.";
+    return;
+  }
+  const sweep = {
+    parameter: sweepUi.parameter.value,
+    from: Number(sweepUi.from.value),
+    to: Number(sweepUi.to.value),
+    count: Number(sweepUi.count.value),
+    transient: Number(sweepUi.transient.value),
+    record: Number(sweepUi.record.value),
+    section: "stroboscopic",
+    continuation: sweepUi.continuation.value,
+  };
+  const job = {};
+  sweepState.job = job;
+  sweepUi.run.disabled = true;
+  sweepUi.cancel.disabled = false;
+  sweepUi.box.dataset.state = "busy";
+  sweepUi.progress.value = 0;
+  sweepUi.status.textContent = "Queued…";
+  const started = performance.now();
+  try {
+    const done = await runSweep({ ...scene, sweep }, job, ({ done, total }) => {
+      sweepUi.progress.max = Math.max(total, 1);
+      sweepUi.progress.value = done;
+      sweepUi.status.textContent = `${done} of ${total} runs`;
+    });
+    if (!done) {
+      sweepUi.status.textContent = "Cancelled.";
+      sweepUi.box.dataset.state = "cancelled";
+      return;
+    }
+    if (sweepState.url) URL.revokeObjectURL(sweepState.url);
+    sweepState.url = URL.createObjectURL(done.image);
+    sweepState.scene = scene;
+    sweepState.axis = done.axis;
+    sweepState.parameter = sweep.parameter;
+    const img = new Image();
+    img.src = sweepState.url;
+    img.id = "sweep-figure";
+    img.alt = `Bifurcation diagram: the stroboscopic section against ${sweep.parameter} from ${sweep.from} to ${sweep.to}. Click to render the scene at a value.`;
+    fill(sweepUi.box, img);
+    sweepUi.box.dataset.state = "done";
+    sweepUi.status.textContent = `${sweep.count} values in ${((performance.now() - started) / 1000).toFixed(1)} s. Click the diagram to render a value.`;
+  } catch (e) {
+    sweepUi.box.dataset.state = "error";
+    sweepUi.status.textContent = e instanceof ApiError && e.field ? `${e.field}: ${e.message}` : e.message;
+  } finally {
+    if (sweepState.job === job) sweepState.job = null;
+    sweepUi.run.disabled = false;
+    sweepUi.cancel.disabled = true;
+  }
+}
+
+sweepUi.run.addEventListener("click", startSweep);
+sweepUi.cancel.addEventListener("click", () => sweepState.job?.cancel?.());
+// A click on the diagram: the scene at that parameter value, rendered above.
+sweepUi.box.addEventListener("click", async (e) => {
+  const img = e.target.closest("img");
+  if (!img || !sweepState.scene) return;
+  const scale = img.naturalWidth / img.getBoundingClientRect().width;
+  const rect = img.getBoundingClientRect();
+  const value = clickedValue(sweepState.axis, (e.clientX - rect.left) * scale, (e.clientY - rect.top) * scale);
+  if (value === null) return;
+  const scene = structuredClone(sweepState.scene);
+  setPath(scene, sweepState.parameter, Number(value.toPrecision(6)));
+  form.load(scene);
+  edited();
+  sweepUi.status.textContent = `Rendering the scene at ${sweepState.parameter} = ${value.toPrecision(6)}.`;
+  await render();
+});
+
 // [SECTION] errors and status
 
 function showRequestError(e) {
@@ -276,6 +385,7 @@ async function start() {
     ui.picker.value = state.preset ? name : "";
     try {
       form.load(wanted.scene);
+      fillSweep(wanted.scene);
       edited();
     } catch (e) {
       showNotice(`The link's scene could not be shown in the form (${e.message}); the paper scene is shown instead.`);

@@ -233,6 +233,42 @@ try {
     await second.close();
   });
 
+  await check("the sweep panel runs the impact oscillator's sweep, and a click renders that value", async () => {
+    const before = await runCount(page);
+    await page.selectOption("#preset", "impact-oscillator");
+    const picked = await waitForRun(page, before);
+    expect((await page.inputValue("#sweep-parameter")) === "model.pellets[0].Omega", "the preset's sweep is not in the panel");
+    await page.fill("#sweep-count", "24");
+    await page.fill("#sweep-transient", "30");
+    await page.fill("#sweep-record", "12");
+    await page.selectOption("#sweep-continuation", "none");
+    await page.click("#sweep-run");
+    await page.waitForFunction(() => document.getElementById("sweep-box").dataset.state === "done", null, { timeout: 60000 });
+    const progress = await page.evaluate(() => [document.getElementById("sweep-progress").value, document.getElementById("sweep-progress").max]);
+    expect(progress[0] === 24 && progress[1] === 24, `progress ${progress}`);
+    const ink = await page.evaluate(async () => {
+      const img = document.getElementById("sweep-figure");
+      await img.decode();
+      const c = document.createElement("canvas");
+      c.width = img.naturalWidth;
+      c.height = img.naturalHeight;
+      const ctx = c.getContext("2d");
+      ctx.drawImage(img, 0, 0);
+      const { data } = ctx.getImageData(0, 0, c.width, c.height);
+      let blue = 0;
+      for (let i = 0; i < data.length; i += 4) if (data[i + 2] - data[i] > 40) blue += 1;
+      return blue;
+    });
+    expect(ink > 100, `the diagram has ${ink} points' pixels`);
+    await page.screenshot({ path: join(shots, "sweep.png"), fullPage: true });
+    // The middle of the image is inside the plot: Ω there is about the middle of 3 … 9 rad/s.
+    const box = await page.locator("#sweep-figure").boundingBox();
+    await page.mouse.click(box.x + box.width / 2, box.y + box.height / 2);
+    await waitForRun(page, picked);
+    const omega = Number(await page.inputValue('[data-field="model.pellets[0].Omega"]'));
+    expect(Math.abs(omega - 6) < 0.3, `the click set Ω = ${omega}, not about 6 rad/s`);
+  });
+
   await check("no script errors on the page", async () => {
     expect(pageErrors.length === 0, pageErrors.join("; "));
   });

@@ -1,0 +1,89 @@
+// The sweep panel: a parameter of the scene swept over a range as a server job (API.md,
+// "Sweeps"), its progress, cancel, the diagram, and the parameter value under a click on it.
+
+import { ApiError } from "./api.js";
+import { parsePath } from "./scene_path.js";
+
+// The numeric fields of a scene that a sweep can vary, as paths.
+export function sweepablePaths(scene) {
+  const m = scene.model ?? {};
+  const paths = [];
+  (m.pellets ?? []).forEach((p, i) => {
+    for (const f of ["F0", "Omega", "psi", "m", "phi0", "dphi0"]) paths.push(`model.pellets[${i}].${f}`);
+  });
+  (m.limiters ?? []).forEach((_, j) => {
+    for (const f of ["k", "angle"]) paths.push(`model.limiters[${j}].${f}`);
+  });
+  paths.push("model.R", "model.alpha0", "model.k_c", "model.g");
+  return paths;
+}
+
+export function valueAt(scene, path) {
+  let node = scene;
+  for (const key of parsePath(path) ?? []) node = node?.[key];
+  return typeof node === "number" ? node : undefined;
+}
+
+// A first sweep for a scene: its own, or the first forced pellet's Ω around its value.
+export function defaultSweep(scene) {
+  if (scene.sweep) return { ...scene.sweep };
+  const pellets = scene.model?.pellets ?? [];
+  const i = Math.max(0, pellets.findIndex((p) => (p.Omega ?? 0) > 0 && (p.F0 ?? 0) !== 0));
+  const parameter = pellets[i] && (pellets[i].Omega ?? 0) > 0 ? `model.pellets[${i}].Omega` : `model.pellets[0].F0`;
+  const v = valueAt(scene, parameter) ?? 1;
+  return { parameter, from: v / 2, to: v * 1.5, count: 100, transient: 50, record: 20, section: "stroboscopic", continuation: "none" };
+}
+
+async function json(response) {
+  let body = null;
+  try {
+    body = await response.json();
+  } catch {
+    // not JSON: the status alone
+  }
+  if (!response.ok) {
+    throw new ApiError(body?.error ?? `${response.status} ${response.statusText}`, { status: response.status, field: body?.field ?? null });
+  }
+  return body;
+}
+
+// Runs the sweep as a job: onProgress({done, total}) while it runs; resolves to
+// {image: Blob, axis: {left, top, width, height, from, to} | null, id} when done, or null when
+// cancelled through `job.cancel()` (job: an object this fills with cancel()).
+export async function runSweep(scene, job, onProgress) {
+  const started = await json(await fetch("/api/sweep", {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(scene),
+  }));
+  const at = `/api/jobs/${started.id}`;
+  let cancelled = false;
+  job.cancel = async () => {
+    cancelled = true;
+    await fetch(at, { method: "DELETE" });
+  };
+  for (;;) {
+    const status = await json(await fetch(at));
+    onProgress(status.progress);
+    if (status.status === "done") break;
+    if (status.status === "cancelled" || cancelled) return null;
+    if (status.status === "failed") throw new ApiError("the sweep failed on the server");
+    await new Promise((r) => setTimeout(r, 250));
+  }
+  const response = await fetch(`${at}/result?format=png`);
+  if (!response.ok) await json(response);
+  const header = response.headers.get("X-Vibro-Parameter-Axis");
+  let axis = null;
+  if (header) {
+    const [left, top, width, height, from, to] = header.split(",").map(Number);
+    axis = { left, top, width, height, from, to };
+  }
+  return { image: await response.blob(), axis, id: started.id };
+}
+
+// The parameter value under a click at (x, y) in the image's own pixels, or null outside the
+// plot area.
+export function clickedValue(axis, x, y) {
+  if (!axis || x < axis.left || x > axis.left + axis.width || y < axis.top || y > axis.top + axis.height) return null;
+  return axis.from + ((x - axis.left) / axis.width) * (axis.to - axis.from);
+}
