@@ -25,12 +25,12 @@ int render_command(const Args& args) {
       return 2;
     }
   }
-  const bool svg = out.size() > 4 && out.ends_with(".svg");
-  if (out.empty() || (!svg && !out.ends_with(".png"))) {
-    std::cerr << nlohmann::json{{"error", "name the image with -o OUT.png or -o OUT.svg"}, {"field", "-o"}}.dump() << "\n";
+  const auto named = image_format_of_file(out);
+  if (out.empty() || !named) {
+    std::cerr << nlohmann::json{{"error", "name the image with -o OUT.png, OUT.svg or OUT.pdf"}, {"field", "-o"}}.dump() << "\n";
     return 2;
   }
-  const ImageFormat format = svg ? ImageFormat::svg : ImageFormat::png;
+  const ImageFormat format = *named;
   if (auto e = validate_figure(scene->figure, scene->model, format)) {
     std::cerr << nlohmann::json{{"error", e->message}, {"field", e->field}}.dump() << "\n";
     return 2;

@@ -104,9 +104,9 @@ int sweep_command(const Args& args) {
     return 2;
   }
   plot.kind = *kind;
-  const bool image = out.ends_with(".png") || out.ends_with(".svg");
+  const auto image = image_format_of_file(out);
   if (!out.empty() && !out.ends_with(".json") && !out.ends_with(".csv") && !image) {
-    usage_error("-o", "name the output OUT.json, OUT.csv, OUT.png or OUT.svg");
+    usage_error("-o", "name the output OUT.json, OUT.csv, OUT.png, OUT.svg or OUT.pdf");
     return 2;
   }
   ProgressBar bar;
@@ -120,9 +120,8 @@ int sweep_command(const Args& args) {
     figure.width = scene->figure.width;
     figure.height = scene->figure.height;
     figure.plots = {plot};
-    const ImageFormat format = out.ends_with(".svg") ? ImageFormat::svg : ImageFormat::png;
     const RenderResult drawn =
-        render_figure(figure, scene->model, RunResult{}, format, {nullptr, &*scene->sweep, &result});
+        render_figure(figure, scene->model, RunResult{}, *image, {nullptr, &*scene->sweep, &result});
     if (!drawn.ok()) {
       usage_error(drawn.error->field, drawn.error->message);
       return 1;

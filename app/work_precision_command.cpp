@@ -44,8 +44,8 @@ int work_precision_command(const Args& args) {
       return 2;
     }
   }
-  if (!out.empty() && !out.ends_with(".png") && !out.ends_with(".svg")) {
-    usage_error("-o", "name the image OUT.png or OUT.svg");
+  if (!out.empty() && !image_format_of_file(out)) {
+    usage_error("-o", "name the image OUT.png, OUT.svg or OUT.pdf");
     return 2;
   }
   const WorkPrecisionReport report = work_precision(scene->model, scene->sim, options);
@@ -57,7 +57,7 @@ int work_precision_command(const Args& args) {
     plot.kind = PlotKind::work_precision;
     if (!scene->name.empty()) plot.title = "Work-precision, " + scene->name + " scene";
     figure.plots = {plot};
-    const ImageFormat format = out.ends_with(".svg") ? ImageFormat::svg : ImageFormat::png;
+    const ImageFormat format = *image_format_of_file(out);
     const RenderResult image = render_figure(figure, scene->model, RunResult{}, format, {&report});
     if (!image.ok()) {
       usage_error(image.error->field, image.error->message);

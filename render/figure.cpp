@@ -1,5 +1,6 @@
 #include "render/figure.h"
 
+#include <cairo-pdf.h>
 #include <cairo-svg.h>
 #include <cairo.h>
 
@@ -99,28 +100,54 @@ cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned i
   return CAIRO_STATUS_SUCCESS;
 }
 
-RenderResult render_svg(const FigureSpec& figure, const Model& model, const RunResult& run,
-                        const PanelData& data) {
+// SVG or PDF: vector output from the same drawing calls.
+RenderResult render_vector(const FigureSpec& figure, const Model& model, const RunResult& run,
+                           const PanelData& data, ImageFormat format) {
   std::vector<std::uint8_t> bytes;
-  SurfacePtr surface(
-      cairo_svg_surface_create_for_stream(append_bytes, &bytes, figure.width, figure.height));
+  // A PDF is measured in points: 0.75 pt per pixel, the CSS ratio, so that 1200 px print 12.5 in.
+  const double scale = format == ImageFormat::pdf ? 0.75 : 1.0;
+  SurfacePtr surface(format == ImageFormat::pdf
+                         ? cairo_pdf_surface_create_for_stream(append_bytes, &bytes,
+                                                               scale * figure.width,
+                                                               scale * figure.height)
+                         : cairo_svg_surface_create_for_stream(append_bytes, &bytes, figure.width,
+                                                               figure.height));
   // Pixels, not cairo's default points, so that the SVG shows at the size asked for.
-  cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
+  if (format == ImageFormat::svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
   {
     CairoPtr cr(cairo_create(surface.get()));
+    cairo_scale(cr.get(), scale, scale);
     if (auto e = draw_figure(cr.get(), figure, model, run, data)) return failure(*e);
   }
   cairo_surface_finish(surface.get());
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
-    return failure({"", std::string("SVG output failed: ") +
+    return failure({"", std::string(format == ImageFormat::pdf ? "PDF" : "SVG") + " output failed: " +
                             cairo_status_to_string(cairo_surface_status(surface.get()))});
-  return {std::move(bytes), std::string(content_type(ImageFormat::svg)), std::nullopt};
+  return {std::move(bytes), std::string(content_type(format)), std::nullopt};
 }
 
 }  // namespace
 
 std::string_view content_type(ImageFormat format) {
-  return format == ImageFormat::png ? "image/png" : "image/svg+xml";
+  switch (format) {
+    case ImageFormat::png: return "image/png";
+    case ImageFormat::svg: return "image/svg+xml";
+    case ImageFormat::pdf: return "application/pdf";
+  }
+  return "application/octet-stream";
+}
+
+std::optional<ImageFormat> image_format_named(std::string_view name) {
+  if (name == "png") return ImageFormat::png;
+  if (name == "svg") return ImageFormat::svg;
+  if (name == "pdf") return ImageFormat::pdf;
+  return std::nullopt;
+}
+
+std::optional<ImageFormat> image_format_of_file(std::string_view path) {
+  const std::size_t dot = path.rfind('.');
+  if (dot == std::string_view::npos || dot == 0 || path.substr(0, dot).ends_with('/')) return std::nullopt;
+  return image_format_named(path.substr(dot + 1));
 }
 
 RenderResult render_figure(const FigureSpec& figure, const Model& model, const RunResult& run,
@@ -129,7 +156,7 @@ RenderResult render_figure(const FigureSpec& figure, const Model& model, const R
     if (auto e = validate_figure(figure, model, format)) return failure(*e);
     if (auto e = check_tracks(figure, model, run)) return failure(*e);
     return format == ImageFormat::png ? render_png(figure, model, run, data)
-                                      : render_svg(figure, model, run, data);
+                                      : render_vector(figure, model, run, data, format);
   } catch (const std::exception& e) {
     // Out of memory, mostly: an error value, never an exception across the module boundary.
     return failure({"", std::string("rendering failed: ") + e.what()});

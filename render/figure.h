@@ -1,5 +1,5 @@
 // The public entry point of render/: a figure (one or more panels in a grid) drawn from a run,
-// as PNG or SVG bytes from the same drawing code.
+// as PNG, SVG or PDF bytes from the same drawing code (text stays text in SVG and PDF).
 //
 // What the caller must provide:
 //  - a RunResult whose `tracks` hold every pellet a panel draws (phase and cylinder panels:
@@ -24,7 +24,12 @@
 
 namespace vibro {
 
-enum class ImageFormat { png, svg };
+enum class ImageFormat { png, svg, pdf };
+
+// "png", "svg", "pdf", or nothing.
+std::optional<ImageFormat> image_format_named(std::string_view name);
+// The format a file name asks for by its extension (".png", ".svg", ".pdf"), or nothing.
+std::optional<ImageFormat> image_format_of_file(std::string_view path);
 
 inline constexpr int kMaxFigureSide = 8192;           // pixels, width and height each
 inline constexpr long kMaxFigurePixels = 40'000'000;  // width × height
@@ -33,7 +38,7 @@ inline constexpr int kMaxPanels = 16;
 
 struct RenderResult {
   std::vector<std::uint8_t> bytes;
-  std::string content_type;  // "image/png" or "image/svg+xml"
+  std::string content_type;  // "image/png", "image/svg+xml" or "application/pdf"
   // The offending field as the scene JSON spells it ("width", "plots[1].pellet") and what was
   // expected; FieldError is core's error type, so the server reports both kinds alike.
   std::optional<FieldError> error;

@@ -54,9 +54,8 @@ std::string render_key(const Scene& scene, ImageFormat format) {
 std::variant<ImageFormat, ApiError> format_of(const httplib::Request& req) {
   if (!req.has_param("format")) return ImageFormat::png;
   const std::string f = req.get_param_value("format");
-  if (f == "png") return ImageFormat::png;
-  if (f == "svg") return ImageFormat::svg;
-  return ApiError{400, "format", "must be \"png\" or \"svg\", got \"" + f + "\""};
+  if (const auto format = image_format_named(f)) return *format;
+  return ApiError{400, "format", "must be \"png\", \"svg\" or \"pdf\", got \"" + f + "\""};
 }
 
 // Parameters a POST may carry in its query: the scene itself is in the body.
@@ -234,8 +233,9 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   res.set_header("Cache-Control", "no-store");
   if (format == "json") return res.set_content(sweep_result_json(spec, *job->result).dump(), "application/json");
   if (format == "csv") return res.set_content(sweep_result_csv(*job->result), "text/csv");
-  if (format != "png" && format != "svg")
-    return send_error(res, {400, "format", "must be \"json\", \"csv\", \"png\" or \"svg\", got \"" + format + "\""});
+  const auto image_format = image_format_named(format);
+  if (!image_format)
+    return send_error(res, {400, "format", "must be \"json\", \"csv\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
   PlotSpec plot;
   const auto kind = sweep_plot_kind(req.get_param_value("plot"), spec);
   if (!kind)
@@ -258,9 +258,8 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   figure.width = job->scene.figure.width;
   figure.height = job->scene.figure.height;
   figure.plots = {plot};
-  const ImageFormat f = format == "svg" ? ImageFormat::svg : ImageFormat::png;
-  const RenderResult image =
-      render_figure(figure, job->scene.model, RunResult{}, f, {nullptr, &spec, job->result.get()});
+  const RenderResult image = render_figure(figure, job->scene.model, RunResult{}, *image_format,
+                                           {nullptr, &spec, job->result.get()});
   if (!image.ok()) return send_error(res, ApiError::from(*image.error, 500));
   // Where the parameter lies on the image, so that a click on it can name a value (the page).
   if (const auto axis = parameter_axis(figure, spec)) {

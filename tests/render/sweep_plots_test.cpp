@@ -1,6 +1,6 @@
 // The plots of a sweep: the bifurcation diagram, the section, the impact map and the regime map
-// draw their points (the series colours appear where the data is), as PNG and well-formed SVG;
-// without a sweep they are refused.
+// draw their points (the series colours appear where the data is), as PNG, well-formed SVG and
+// PDF; without a sweep they are refused.
 #include <gtest/gtest.h>
 
 #include <string>
@@ -84,6 +84,12 @@ TEST(SweepPlots, EachKindDrawsItsPoints) {
     ASSERT_TRUE(svg.ok());
     const std::string text(svg.bytes.begin(), svg.bytes.end());
     EXPECT_EQ(testing::xml_balance_error(text), "") << static_cast<int>(c.kind);
+    const RenderResult pdf = draw(c.kind, *c.swept, ImageFormat::pdf);
+    ASSERT_TRUE(pdf.ok());
+    EXPECT_EQ(pdf.content_type, "application/pdf");
+    const std::string doc(pdf.bytes.begin(), pdf.bytes.end());
+    EXPECT_TRUE(doc.starts_with("%PDF-")) << static_cast<int>(c.kind);
+    EXPECT_NE(doc.rfind("%%EOF"), std::string::npos);
   }
 }
 

@@ -104,6 +104,12 @@ TEST_F(Endpoints, PostRenderDrawsPngAndSvg) {
   ASSERT_EQ(svg->status, 200) << svg->body;
   EXPECT_EQ(svg->get_header_value("Content-Type"), "image/svg+xml");
   EXPECT_NE(svg->body.find("<svg"), std::string::npos);
+
+  auto pdf = server->client().Post("/api/render?format=pdf", paper_scene(5.0), "application/json");
+  ASSERT_TRUE(pdf);
+  ASSERT_EQ(pdf->status, 200) << pdf->body;
+  EXPECT_EQ(pdf->get_header_value("Content-Type"), "application/pdf");
+  EXPECT_TRUE(pdf->body.starts_with("%PDF-"));
 }
 
 TEST_F(Endpoints, GetRenderOfThePaperPresetIsAPng) {
