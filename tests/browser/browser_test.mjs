@@ -111,10 +111,11 @@ async function waitForRefusal(page) {
   await page.waitForFunction(() => document.getElementById("results").dataset.state === "error", null, { timeout: 30000 });
 }
 
-// Fraction of the figure's pixels that are not near-white, measured by drawing it on a canvas.
-async function inkFraction(page) {
-  return page.evaluate(async () => {
-    const img = document.getElementById("figure");
+// Pixels of an image on the page, counted by drawing it on a canvas: the fraction that is not
+// near-white (ink), and how many are a series blue (blue well above red).
+async function pixelsOf(page, id) {
+  return page.evaluate(async (imageId) => {
+    const img = document.getElementById(imageId);
     await img.decode();
     const c = document.createElement("canvas");
     c.width = img.naturalWidth;
@@ -123,9 +124,13 @@ async function inkFraction(page) {
     ctx.drawImage(img, 0, 0);
     const { data } = ctx.getImageData(0, 0, c.width, c.height);
     let ink = 0;
-    for (let i = 0; i < data.length; i += 4) if (data[i] + data[i + 1] + data[i + 2] < 600) ink += 1;
-    return { width: img.naturalWidth, height: img.naturalHeight, ink: ink / (data.length / 4) };
-  });
+    let blue = 0;
+    for (let i = 0; i < data.length; i += 4) {
+      if (data[i] + data[i + 1] + data[i + 2] < 600) ink += 1;
+      if (data[i + 2] - data[i] > 40) blue += 1;
+    }
+    return { width: img.naturalWidth, height: img.naturalHeight, ink: ink / (data.length / 4), blue };
+  }, id);
 }
 
 // The error text shown for the input with data-field = path (via its aria-describedby slot).
@@ -176,7 +181,7 @@ try {
     expect((await page.inputValue('[data-field="model.R"]')) === "0.5", "the form does not hold the paper scene");
     await page.click("#render");
     await waitForRun(page, picked);
-    const fig = await inkFraction(page);
+    const fig = await pixelsOf(page, "figure");
     expect(fig.width > 0 && fig.height > 0, "the figure has no size");
     expect(fig.ink > 0.005, `the figure is blank (${(fig.ink * 100).toFixed(2)} % ink)`);
     const rows = await page.locator("table.events tbody tr").count();
@@ -246,19 +251,7 @@ try {
     await page.waitForFunction(() => document.getElementById("sweep-box").dataset.state === "done", null, { timeout: 60000 });
     const progress = await page.evaluate(() => [document.getElementById("sweep-progress").value, document.getElementById("sweep-progress").max]);
     expect(progress[0] === 24 && progress[1] === 24, `progress ${progress}`);
-    const ink = await page.evaluate(async () => {
-      const img = document.getElementById("sweep-figure");
-      await img.decode();
-      const c = document.createElement("canvas");
-      c.width = img.naturalWidth;
-      c.height = img.naturalHeight;
-      const ctx = c.getContext("2d");
-      ctx.drawImage(img, 0, 0);
-      const { data } = ctx.getImageData(0, 0, c.width, c.height);
-      let blue = 0;
-      for (let i = 0; i < data.length; i += 4) if (data[i + 2] - data[i] > 40) blue += 1;
-      return blue;
-    });
+    const { blue: ink } = await pixelsOf(page, "sweep-figure");
     expect(ink > 100, `the diagram has ${ink} points' pixels`);
     await page.screenshot({ path: join(shots, "sweep.png"), fullPage: true });
     // The middle of the image is inside the plot: Ω there is about the middle of 3 … 9 rad/s.
