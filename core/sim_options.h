@@ -30,6 +30,9 @@ struct SimOptions {
   // land on them, so each state is a step's end, not an interpolation; at an instant, the state
   // after it.
   std::vector<double> stops;
+  // Events before this time are not kept (a sweep's transient): a long run's memory is then its
+  // record's. They count in no limit and no summary; the trust check compares the kept ones.
+  double keep_events_from = -std::numeric_limits<double>::infinity();
 };
 
 // Limits on what validate() accepts; a server tightens them.

@@ -152,7 +152,7 @@ std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
     // A chatter that accumulates after the run's end is listed at the end; its t_accumulation
     // says when it would come to rest.
     e.t = std::min(e.t, opt_.t_end);
-    events_.push_back(std::move(e));
+    if (e.t >= opt_.keep_events_from) events_.push_back(std::move(e));
   }
   for (int i = 0; i < model_.size(); ++i)
     if (out.touched[i]) recorder_.end_branch(i);

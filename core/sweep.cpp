@@ -93,6 +93,7 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
   o.t_end = (spec.transient + spec.record) * T;
   o.record.clear();
   o.stops.clear();
+  o.keep_events_from = t_record;
   if (spec.section == SectionKind::stroboscopic)
     for (int k = spec.transient; k <= spec.transient + spec.record; ++k) o.stops.push_back(k * T);
   Model m = model;

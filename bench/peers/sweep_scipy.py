@@ -2,10 +2,12 @@
 """The impact-oscillator sweep the way a researcher scripts it today: SciPy's solve_ivp (DOP853)
 with a terminal event at the stop, restarted after every impact, per value of Omega.
 
-Usage: /usr/bin/python3 bench/peers/sweep_scipy.py [--values N] [--rtol X] [--vibro build/vibro]
+Usage: /usr/bin/python3 bench/peers/sweep_scipy.py [--values N] [--rtols 1e-6,1e-8,...] [--vibro build/vibro]
 Runs N values of the preset's 1,000-value sweep (every 1000/N-th), 50 transient and 20 recorded
-periods each, times them, runs vibro on the same values at the same tolerance on one thread, and
-prints seconds per run for both, their ratio, and how far their stroboscopic points lie apart.
+periods each, with SciPy and with vibro (DOP853, one thread, the check off) at each tolerance, and
+prints per tolerance the seconds per run of both and the median error of their stroboscopic
+points against a truth computed by SciPy at rtol 1e-13; then the ratio at the same tolerance and
+at matched error (SciPy's seconds at vibro's error, interpolated log-log on SciPy's curve).
 The model: phi'' = F0 cos(Omega t)/(m R) - (g/R) sin phi, a stop at phi = 0 (restitution k) that
 the pellet strikes from phi > 0; a strike slower than 1e-9 rad/s leaves it resting against the
 stop until the force pulls it away (the script's own stand-in for a summed chatter series).
@@ -70,39 +72,69 @@ def section(scene, Omega, transient, record, rtol):
     return points
 
 
+def vibro_sections(vibro, scene, omegas, transient, record, rtol):
+    """vibro on the same values: one sweep per value on one thread, the check off.
+    Returns (seconds per run, {Omega: [(phi, dphi)]})."""
+    seconds, points = 0.0, {}
+    for Om in omegas:
+        s = dict(scene)
+        s["solver"] = {"method": "dop853", "rtol": rtol, "atol": rtol * 1e-3, "check": False}
+        s["sweep"] = dict(scene["sweep"], **{"from": Om, "to": Om, "count": 1, "transient": transient,
+                                             "record": record, "continuation": "none"})
+        out = json.loads(subprocess.run([vibro, "sweep", "-", "--threads", "1"], input=json.dumps(s),
+                                        capture_output=True, text=True, check=True).stdout)
+        seconds += out["stats"]["wall_ms"] / 1e3
+        points[Om] = list(zip(out["points"]["phi"], out["points"]["dphi"]))
+    return seconds / len(omegas), points
+
+
+def error(points, truth, speed):
+    """The median distance of the section points from the truth's (φ̇ scaled by sqrt(R/g))."""
+    far = [max(abs(a[0] - b[0]), abs(a[1] - b[1]) / speed)
+           for Om in truth for a, b in zip(points[Om], truth[Om])]
+    return float(np.median(far))
+
+
+def seconds_at(error_wanted, curve):
+    """The seconds per run of a (error, seconds) curve at an error, interpolated log-log; None
+    outside the curve's range."""
+    curve = sorted(curve)
+    for (e0, s0), (e1, s1) in zip(curve, curve[1:]):
+        if e0 <= error_wanted <= e1 and e0 > 0:
+            w = math.log(error_wanted / e0) / math.log(e1 / e0) if e1 > e0 else 0.0
+            return math.exp(math.log(s0) + w * math.log(s1 / s0))
+    return None
+
+
 def main():
     a = argparse.ArgumentParser()
     a.add_argument("--values", type=int, default=20)
-    a.add_argument("--rtol", type=float, default=1e-8)
+    a.add_argument("--rtols", default="1e-6,1e-8,1e-10,1e-12")
     a.add_argument("--vibro", default=os.path.join(ROOT, "build", "vibro"))
     o = a.parse_args()
     scene = load_preset(o.vibro)
     sweep = scene["sweep"]
     omegas = [sweep["from"] + (sweep["to"] - sweep["from"]) * i / 999 for i in range(0, 1000, 1000 // o.values)]
     transient, record = 50, 20
+    speed = math.sqrt(9.81 / scene["model"]["R"])
 
-    started = time.perf_counter()
-    peer = {Om: section(scene, Om, transient, record, o.rtol) for Om in omegas}
-    scipy_s = (time.perf_counter() - started) / len(omegas)
-
-    # vibro on the same values: one sweep per value on one thread, the check off, as above.
-    vibro_s, far = 0.0, []
-    for Om in omegas:
-        s = dict(scene)
-        s["solver"] = {"method": "dop853", "rtol": o.rtol, "atol": o.rtol * 1e-3, "check": False}
-        s["sweep"] = dict(sweep, **{"from": Om, "to": Om, "count": 1, "transient": transient,
-                                    "record": record, "continuation": "none"})
-        out = json.loads(subprocess.run([o.vibro, "sweep", "-", "--threads", "1"], input=json.dumps(s),
-                                        capture_output=True, text=True, check=True).stdout)
-        vibro_s += out["stats"]["wall_ms"] / 1e3
-        pts = out["points"]
-        for (t, phi, dphi), vphi, vdphi in zip(peer[Om], pts["phi"], pts["dphi"]):
-            far.append(max(abs(phi - vphi), abs(dphi - vdphi) / math.sqrt(9.81 / scene["model"]["R"])))
-    vibro_s /= len(omegas)
-    print(json.dumps({"values": len(omegas), "rtol": o.rtol, "periods_per_run": transient + record,
-                      "scipy_s_per_run": scipy_s, "vibro_s_per_run": vibro_s,
-                      "ratio": scipy_s / vibro_s,
-                      "points_apart_median": float(np.median(far)), "points_apart_max": float(np.max(far))}, indent=1))
+    # The truth: SciPy at 1e-13, independent of vibro.
+    truth = {Om: [(p[1], p[2]) for p in section(scene, Om, transient, record, 1e-13)] for Om in omegas}
+    rows = []
+    for rtol in [float(x) for x in o.rtols.split(",")]:
+        started = time.perf_counter()
+        peer = {Om: [(p[1], p[2]) for p in section(scene, Om, transient, record, rtol)] for Om in omegas}
+        scipy_s = (time.perf_counter() - started) / len(omegas)
+        vibro_s, ours = vibro_sections(o.vibro, scene, omegas, transient, record, rtol)
+        rows.append({"rtol": rtol, "scipy_s_per_run": scipy_s, "scipy_error": error(peer, truth, speed),
+                     "vibro_s_per_run": vibro_s, "vibro_error": error(ours, truth, speed),
+                     "ratio_same_rtol": scipy_s / vibro_s})
+    scipy_curve = [(r["scipy_error"], r["scipy_s_per_run"]) for r in rows]
+    for r in rows:
+        s = seconds_at(r["vibro_error"], scipy_curve)
+        r["ratio_matched_error"] = s / r["vibro_s_per_run"] if s else None
+    print(json.dumps({"values": len(omegas), "periods_per_run": transient + record,
+                      "truth": "SciPy DOP853 at rtol 1e-13", "rows": rows}, indent=1))
 
 
 if __name__ == "__main__":

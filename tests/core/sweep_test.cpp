@@ -162,6 +162,33 @@ TEST(Sweep, TheImpactSectionKeepsTheStateBeforeEveryLimiterImpact) {
   }
 }
 
+// A run's memory is its record's: the transient's events are not kept, so a transient longer
+// than the event limit allows still runs, and the events kept are the full run's from t on.
+TEST(Sweep, TheTransientsEventsAreNotKept) {
+  const Model m = impact_oscillator(7.0);
+  SimOptions full = options();
+  full.t_end = 60 * 2.0 * M_PI / 7.0;
+  SimOptions tail = full;
+  tail.keep_events_from = 50 * 2.0 * M_PI / 7.0;
+  const RunResult a = simulate(m, full);
+  const RunResult b = simulate(m, tail);
+  std::vector<double> kept;
+  for (const Event& e : a.events)
+    if (e.t >= tail.keep_events_from) kept.push_back(e.t);
+  ASSERT_EQ(b.events.size(), kept.size());
+  ASSERT_GT(a.events.size(), 2 * b.events.size());
+  for (std::size_t k = 0; k < kept.size(); ++k) EXPECT_EQ(b.events[k].t, kept[k]);
+
+  SimOptions tight = options();
+  tight.max_events = static_cast<long>(b.events.size()) + 2;  // the record's, not the transient's
+  SweepSpec spec = over_omega(7.0, 7.0, 1, 50, 10);
+  spec.section = SectionKind::impact;
+  const SweepResult r = run(m, tight, spec);
+  ASSERT_EQ(r.runs.size(), 1u);
+  EXPECT_EQ(r.runs[0].termination, Termination::completed) << r.runs[0].message;
+  EXPECT_EQ(r.runs[0].points.size(), 10u);
+}
+
 TEST(Sweep, BadSweepsAreRefusedNamingTheField) {
   const Model m = impact_oscillator(5.0);
   auto field = [&](const SweepSpec& s) {
