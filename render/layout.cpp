@@ -45,10 +45,10 @@ std::vector<Rect> grid_cells(int count, int width, int height) {
   return cells;
 }
 
-PanelLayout panel_layout(Rect cell, const Style& style, int stacked) {
+PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double legend_column) {
   PanelLayout layout{cell, {cell.x + 0.5 * cell.w, cell.y + style.px(kTitleTop)}, {}};
   const double left = cell.x + style.px(kLeft), top = cell.y + style.px(kTop);
-  const double width = std::max(1.0, cell.w - style.px(kLeft + kRight));
+  const double width = std::max(1.0, cell.w - style.px(kLeft + kRight + legend_column));
   const double height = std::max(1.0, cell.h - style.px(kTop + kBottom));
   const int n = std::max(1, stacked);
   const double gap = style.px(kStackGap);
@@ -74,7 +74,8 @@ std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
                          {{c.x, c.y + top, c.w, std::max(1.0, c.h - top)}}});
     } else {
       const int stacked = plot.kind == PlotKind::time && plot.show_dphi ? 2 : 1;
-      layouts.push_back(panel_layout(cells[i], style, stacked));
+      layouts.push_back(panel_layout(cells[i], style, stacked,
+                                     plot.kind == PlotKind::regime_map ? kRegimeLegendColumn : 0.0));
     }
   }
   return layouts;

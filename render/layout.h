@@ -21,8 +21,13 @@ struct PanelLayout {
   std::vector<Rect> plots;  // plot areas, top to bottom; stacked ones share the x axis
 };
 
-// A 2-D panel with `stacked` plot areas (1, or 2 for φ(t) over φ̇(t)) above a shared x axis.
-PanelLayout panel_layout(Rect cell, const Style& style, int stacked);
+// A 2-D panel with `stacked` plot areas (1, or 2 for φ(t) over φ̇(t)) above a shared x axis,
+// `legend_column` pixels (at scale 1) kept free right of the plot for a legend beside the data.
+PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double legend_column = 0.0);
+
+// The width (at scale 1) a regime map keeps right of its plot for the legend of periods: every
+// cell is data, so no corner of the plot is free for it.
+inline constexpr double kRegimeLegendColumn = 130.0;
 
 // The layout of every panel of a figure: 3-D panels get one plot area, the rest of the cell below
 // the title.

@@ -105,6 +105,15 @@ Range cell_range(const SweepAxis& axis) {
   return Range{axis.from - half, axis.to + half};
 }
 
+Point on_pixels(Point p) { return {std::round(p.x), std::round(p.y)}; }
+
+// The index of a value on its axis (the cell it is the centre of).
+int cell_index(const SweepAxis& axis, double v) {
+  return axis.count > 1 && axis.to > axis.from
+             ? static_cast<int>(std::lround((v - axis.from) / (axis.to - axis.from) * (axis.count - 1)))
+                        : 0;
+}
+
 // Distinct colours for periods 1 … 8 (Okabe and Ito's, told apart with any colour vision), grey
 // for longer periods and none.
 Colour period_colour(int period) {
@@ -200,12 +209,17 @@ void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
   bool rest = false, untrusted = false;
   for (const SweepRun& run : sweep.runs) {
     if (run.start != 0 || run.direction < 0) continue;  // the first start, swept up: one per cell
-    const Point lo = tr.to_pixel(run.value - 0.5 * w, run.value2 - 0.5 * h);
-    const Point hi = tr.to_pixel(run.value + 0.5 * w, run.value2 + 0.5 * h);
+    // Cells on whole pixels, their edges computed alike from the index, filled without
+    // antialiasing: neighbours meet without a seam or an overlap.
+    const int i = cell_index(a, run.value), j = cell_index(b, run.value2);
+    const Point lo = on_pixels(tr.to_pixel(x.lo + i * w, y.lo + j * h));
+    const Point hi = on_pixels(tr.to_pixel(x.lo + (i + 1) * w, y.lo + (j + 1) * h));
     const Colour c = run.at_rest ? Colour{1.0, 1.0, 1.0, 1.0} : period_colour(run.period);
-    cairo_rectangle(cr, lo.x, hi.y, hi.x - lo.x + 0.5, lo.y - hi.y + 0.5);
+    cairo_rectangle(cr, lo.x, hi.y, hi.x - lo.x, lo.y - hi.y);
     set_colour(cr, c);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
     cairo_fill(cr);
+    cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
     if (!run.trusted) {  // hatched: the trust check could not vouch for it
       cairo_move_to(cr, lo.x, lo.y);
       cairo_line_to(cr, hi.x, hi.y);
@@ -226,10 +240,11 @@ void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
     legend.push_back({p == 0 ? "not periodic" : p > 8 ? "period > 8" : "period " + std::to_string(p),
                       period_colour(p), Swatch::area});
   if (rest) legend.push_back({"at rest", {1.0, 1.0, 1.0, 1.0}, Swatch::area});
-  if (untrusted) legend.push_back({"not trusted (struck through)", kInk, Swatch::line});
+  if (untrusted) legend.push_back({"not trusted", kInk, Swatch::line});
   draw_frame(cr, tr, ax, ay, style);
-  // The legend goes outside the data: to the right of the plot if there is room, else over it.
-  draw_legend(cr, legend, area, {}, style);
+  // Beside the data, in the column the layout keeps free (kRegimeLegendColumn).
+  const Rect column{area.right(), area.y, style.px(kRegimeLegendColumn), area.h};
+  draw_legend(cr, legend, column, {}, style);
   draw_title(cr, in.layout.title_anchor,
              in.spec.title.empty() ? "Regime map: the period of the motion" : in.spec.title, style);
 }

@@ -8,6 +8,7 @@
 #include "core/sweep.h"
 #include "png_decode.h"
 #include "render/figure.h"
+#include "render/layout.h"
 #include "svg_check.h"
 
 namespace vibro {
@@ -91,6 +92,42 @@ TEST(SweepPlots, EachKindDrawsItsPoints) {
     EXPECT_TRUE(doc.starts_with("%PDF-")) << static_cast<int>(c.kind);
     EXPECT_NE(doc.rfind("%%EOF"), std::string::npos);
   }
+}
+
+// A regime map's every cell is data: the legend sits beside the plot, and neighbouring cells
+// meet without seams, so a map of one period is that period's colour everywhere inside its frame.
+TEST(SweepPlots, TheRegimeMapsLegendAndSeamsHideNoCell) {
+  Swept s;
+  s.spec.axis = {"model.pellets[0].Omega", 3.0, 8.0, 37};
+  s.spec.axis2 = SweepAxis{"model.pellets[0].F0", 0.1, 0.5, 23};
+  for (int j = 0; j < s.spec.axis2->count; ++j)
+    for (int i = 0; i < s.spec.axis.count; ++i) {
+      SweepRun run;
+      run.value = s.spec.axis.value(i);
+      run.value2 = s.spec.axis2->value(j);
+      run.period = 1;
+      s.result.runs.push_back(run);
+    }
+  FigureSpec figure;
+  PlotSpec plot;
+  plot.kind = PlotKind::regime_map;
+  figure.plots = {plot};
+  const RenderResult png = draw(PlotKind::regime_map, s, ImageFormat::png);
+  ASSERT_TRUE(png.ok()) << png.error->message;
+  const testing::Decoded image = testing::decode_png(png.bytes);
+  const render::Rect area = render::figure_layout(figure).front().plots.front();
+  const std::uint32_t period_1 = 0xff0072b2;
+  long other = 0;
+  for (int y = static_cast<int>(area.y) + 2; y < static_cast<int>(area.bottom()) - 2; ++y)
+    for (int x = static_cast<int>(area.x) + 2; x < static_cast<int>(area.right()) - 2; ++x)
+      other += image.argb[static_cast<std::size_t>(y) * image.width + x] != period_1 ? 1 : 0;
+  EXPECT_EQ(other, 0);
+  // The legend is drawn: the period's swatch right of the plot.
+  long swatch = 0;
+  for (int y = static_cast<int>(area.y); y < static_cast<int>(area.bottom()); ++y)
+    for (int x = static_cast<int>(area.right()) + 4; x < image.width; ++x)
+      swatch += image.argb[static_cast<std::size_t>(y) * image.width + x] == period_1 ? 1 : 0;
+  EXPECT_GT(swatch, 50);
 }
 
 TEST(SweepPlots, WithoutASweepTheyAreRefused) {
