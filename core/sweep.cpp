@@ -154,24 +154,17 @@ struct Chain {
   std::vector<Link> links;
 };
 
-std::vector<Chain> chains_of(const SweepSpec& spec) {
+// Chain c, in the order start, value2, and (without continuation) value.
+Chain chain_at(const SweepSpec& spec, int c) {
   const int n = spec.axis.count;
   const int n2 = spec.axis2 ? spec.axis2->count : 1;
-  std::vector<Chain> chains;
-  for (int s = 0; s < spec.initial_states; ++s)
-    for (int j = 0; j < n2; ++j) {
-      if (spec.continuation == Continuation::none) {
-        for (int i = 0; i < n; ++i) chains.push_back({s, j, {{i, 0}}});
-        continue;
-      }
-      Chain c{s, j, {}};
-      if (spec.continuation != Continuation::backward)
-        for (int i = 0; i < n; ++i) c.links.push_back({i, +1});
-      if (spec.continuation != Continuation::forward)
-        for (int i = n - 1; i >= 0; --i) c.links.push_back({i, -1});
-      chains.push_back(std::move(c));
-    }
-  return chains;
+  if (spec.continuation == Continuation::none) return {c / (n2 * n), (c / n) % n2, {{c % n, 0}}};
+  Chain chain{c / n2, c % n2, {}};
+  if (spec.continuation != Continuation::backward)
+    for (int i = 0; i < n; ++i) chain.links.push_back({i, +1});
+  if (spec.continuation != Continuation::forward)
+    for (int i = n - 1; i >= 0; --i) chain.links.push_back({i, -1});
+  return chain;
 }
 
 }  // namespace
@@ -228,51 +221,81 @@ std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& sp
   return std::nullopt;
 }
 
+int sweep_chain_count(const SweepSpec& spec) {
+  const long rows = static_cast<long>(spec.initial_states) * (spec.axis2 ? spec.axis2->count : 1);
+  return static_cast<int>(spec.continuation == Continuation::none ? rows * spec.axis.count : rows);
+}
+
+std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& options,
+                                      const SweepSpec& spec, int c,
+                                      const std::atomic<bool>* cancel,
+                                      const std::function<void()>& run_done,
+                                      const std::function<void(double v, double v2)>& before_run) {
+  const Chain chain = chain_at(spec, c);
+  const int n = model.size();
+  const double v2 = spec.axis2 ? spec.axis2->value(chain.j) : 0.0;
+  std::vector<SweepRun> runs;
+  Start state;
+  bool fresh = true;
+  for (const Link& link : chain.links) {
+    if (cancel && cancel->load()) break;
+    const double v = spec.axis.value(link.i);
+    const Model m = with_values(model, spec, v, v2);
+    if (fresh || spec.continuation == Continuation::none) {
+      state = Start{};
+      const std::vector<double> speeds =
+          chain.start > 0 ? seeded_speeds(spec.seed, chain.start, n) : std::vector<double>{};
+      for (int p = 0; p < n; ++p) {
+        state.phi.push_back(m.pellets[p].phi0);
+        state.dphi.push_back(chain.start > 0 ? 2.0 * std::sqrt(m.g / m.R) * speeds[p]
+                                             : m.pellets[p].dphi0);
+      }
+      fresh = false;
+    }
+    if (before_run) before_run(v, v2);
+    Start last;
+    SweepRun run = run_one(m, options, spec, state, last);
+    run.value = v;
+    run.value2 = v2;
+    run.start = chain.start;
+    run.direction = link.direction;
+    runs.push_back(std::move(run));
+    state = std::move(last);
+    if (run_done) run_done();
+  }
+  return runs;
+}
+
+void order_sweep_runs(std::vector<SweepRun>& runs) {
+  auto key = [](const SweepRun& r) {
+    return std::make_tuple(r.start, r.value2, r.direction < 0 ? 1 : 0, r.value);
+  };
+  std::stable_sort(runs.begin(), runs.end(),
+                   [&](const SweepRun& a, const SweepRun& b) { return key(a) < key(b); });
+}
+
 SweepResult run_sweep(const Model& model, const SimOptions& options, const SweepSpec& spec,
                       const SweepControl& control) {
   const auto t0 = std::chrono::steady_clock::now();
-  const std::vector<Chain> chains = chains_of(spec);
-  std::vector<std::vector<SweepRun>> done_chains(chains.size());
+  const int chains = sweep_chain_count(spec);
+  std::vector<std::vector<SweepRun>> done_chains(chains);
   const long total = sweep_runs(spec);
-  std::atomic<std::size_t> next{0};
+  std::atomic<int> next{0};
   std::atomic<long> done{0};
   std::atomic<bool> cancelled{false};
-  const int n = model.size();
+  auto run_done = [&] {
+    const long d = ++done;
+    if (control.progress) control.progress(d, total);
+  };
   auto work = [&] {
-    for (std::size_t c = next++; c < chains.size(); c = next++) {
-      const Chain& chain = chains[c];
-      const double v2 = spec.axis2 ? spec.axis2->value(chain.j) : 0.0;
-      Start state;
-      bool fresh = true;
-      for (const Link& link : chain.links) {
-        if (control.cancel && control.cancel->load()) {
-          cancelled = true;
-          return;
-        }
-        const double v = spec.axis.value(link.i);
-        const Model m = with_values(model, spec, v, v2);
-        if (fresh || spec.continuation == Continuation::none) {
-          state = Start{};
-          const std::vector<double> speeds =
-              chain.start > 0 ? seeded_speeds(spec.seed, chain.start, n) : std::vector<double>{};
-          for (int p = 0; p < n; ++p) {
-            state.phi.push_back(m.pellets[p].phi0);
-            state.dphi.push_back(chain.start > 0 ? 2.0 * std::sqrt(m.g / m.R) * speeds[p]
-                                                 : m.pellets[p].dphi0);
-          }
-          fresh = false;
-        }
-        Start last;
-        SweepRun run = run_one(m, options, spec, state, last);
-        run.value = v;
-        run.value2 = v2;
-        run.start = chain.start;
-        run.direction = link.direction;
-        done_chains[c].push_back(std::move(run));
-        state = std::move(last);
-        const long d = ++done;
-        if (control.progress) control.progress(d, total);
+    for (int c = next++; c < chains; c = next++) {
+      if (control.skip && control.skip(c)) continue;
+      done_chains[c] = run_sweep_chain(model, options, spec, c, control.cancel, run_done);
+      if (control.cancel && control.cancel->load()) {
+        cancelled = true;
+        return;
       }
+      if (control.chain_done) control.chain_done(c, done_chains[c]);
     }
   };
   const int threads = std::max(1, control.threads);
@@ -284,12 +307,8 @@ SweepResult run_sweep(const Model& model, const SimOptions& options, const Sweep
   SweepResult result;
   for (auto& runs : done_chains)
     for (SweepRun& r : runs) result.runs.push_back(std::move(r));
-  // A fixed order, whatever thread made which run: start, value2, direction, value.
-  auto key = [&](const SweepRun& r) {
-    return std::make_tuple(r.start, r.value2, r.direction < 0 ? 1 : 0, r.value);
-  };
-  std::stable_sort(result.runs.begin(), result.runs.end(),
-                   [&](const SweepRun& a, const SweepRun& b) { return key(a) < key(b); });
+  // A fixed order, whatever thread made which run.
+  order_sweep_runs(result.runs);
   result.threads = threads;
   result.cancelled = cancelled;
   result.wall_ms =

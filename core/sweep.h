@@ -98,10 +98,31 @@ struct SweepControl {
   // Called after every finished run, from any thread, with the runs done and in all.
   std::function<void(long done, long total)> progress;
   const std::atomic<bool>* cancel = nullptr;  // set: no new run starts
+  // Chains not to run (done before: a resumed sweep); their runs are not in the result.
+  std::function<bool(int chain)> skip;
+  // Called after every whole chain, from any thread (a checkpoint keeps them).
+  std::function<void(int chain, const std::vector<SweepRun>& runs)> chain_done;
 };
 
 // The number of runs the sweep makes.
 long sweep_runs(const SweepSpec& spec);
+
+// A sweep's runs come in chains: one run per value without continuation; with it, the values of
+// a row in order, each from the last state of the one before. Chains are the units a sweep is
+// spread over threads and processes by, and a chain's runs are the same wherever it runs.
+// Chains are numbered 0 … sweep_chain_count − 1.
+int sweep_chain_count(const SweepSpec& spec);
+
+// Runs chain c; stops before the next run once `cancel` is set. `before_run` is called with
+// each run's value (pair) before it starts, `run_done` after it.
+std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& options,
+                                      const SweepSpec& spec, int c,
+                                      const std::atomic<bool>* cancel = nullptr,
+                                      const std::function<void()>& run_done = {},
+                                      const std::function<void(double v, double v2)>& before_run = {});
+
+// Puts runs in a sweep result's fixed order: start, value2, direction, value.
+void order_sweep_runs(std::vector<SweepRun>& runs);
 
 // Runs the sweep with `options` for every run (t_end is set from the spec). The result is the
 // same for any number of threads. Call validate_sweep first.
