@@ -136,7 +136,7 @@ struct Coordinator {
       MPI_Status status;
       MPI_Improbe(MPI_ANY_SOURCE, kRequestTag, MPI_COMM_WORLD, &arrived, &message, &status);
       if (!arrived) {  // polled: a blocking probe would spin a core the workers need
-        std::this_thread::sleep_for(std::chrono::microseconds(200));
+        std::this_thread::sleep_for(std::chrono::milliseconds(1));
         continue;
       }
       int n = 0;
