@@ -84,7 +84,8 @@ Api::Api(const ServerConfig& config)
       preset_list_(make_preset_list()),
       web_(web_dir(config)),
       cache_(config.cache_bytes),
-      sweeps_({config.sweep_jobs, config.sweep_threads, config.sweep_queue}),
+      sweeps_({config.sweep_jobs, config.sweep_threads, config.sweep_queue, 600.0, 32,
+               config.replica > 0 ? "r" + std::to_string(config.replica) + "-" : ""}),
       workers_(worker_count(config), config.queue) {}
 
 void Api::health(const httplib::Request&, httplib::Response& res) const {

@@ -108,6 +108,14 @@ const std::vector<Flag>& flags() {
       number_flag("--max-limiters", "limiters per scene (default 16)", 0, 256,
                   in_limits(&L::limiters)),
       number_flag("--max-plots", "plots per image (default 8)", 1, 16, in_limits(&L::plots)),
+      number_flag("--sweep-jobs", "sweeps running at once (default 1)", 1, 64,
+                  in_config(&C::sweep_jobs)),
+      number_flag("--sweep-threads", "threads of one sweep (default 1)", 1, 256,
+                  in_config(&C::sweep_threads)),
+      number_flag("--sweep-queue", "sweeps that may wait before 503 (default 8)", 0, 1000,
+                  in_config(&C::sweep_queue)),
+      number_flag("--replica", "behind scripts/deploy.sh: this replica's number, the prefix "
+                  "r<N>- of its sweep job ids (default 0: none)", 0, 999, in_config(&C::replica)),
   };
   return list;
 }

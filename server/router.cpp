@@ -28,6 +28,12 @@ std::string media_type(const std::string& content_type) {
 }  // namespace
 
 Result Router::route(const httplib::Request& req, httplib::Response& res) const {
+  // Two Content-Length headers: which one frames the body is the parser's guess, and a proxy in
+  // front may guess the other (request smuggling). Refused before the body is read.
+  if (req.get_header_value_count("Content-Length") > 1) {
+    send_error(res, {400, "Content-Length", "is given more than once"}, true);
+    return Result::Handled;
+  }
   // A refusal sent before the body is read must also end the connection: the unread body
   // would otherwise be taken for the next request.
   const std::string length_text = req.get_header_value("Content-Length");

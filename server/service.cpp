@@ -1,5 +1,6 @@
 #include "server/service.h"
 
+#include <malloc.h>
 #include <sys/socket.h>
 
 #include <atomic>
@@ -16,6 +17,9 @@
 
 namespace vibro::server {
 namespace {
+
+// Header lines a request may have; browsers send about 20.
+constexpr std::size_t kMaxHeaderLines = 100;
 
 using httplib::Request;
 using httplib::Response;
@@ -107,6 +111,16 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
   http.set_tcp_nodelay(true);
   http.set_pre_routing_handler([&s](const Request& req, Response& res) {
     s.log.start();
+    // cpp-httplib 0.11 reads and keeps any number of header lines (10^6 of them: 200 MB), with
+    // no setting to stop it; the most this server can do is refuse such a request and give the
+    // memory back. A front door (scripts/deploy.sh) refuses it after 33 KiB instead.
+    if (req.headers.size() > kMaxHeaderLines) {
+      const_cast<Request&>(req).headers.clear();
+      malloc_trim(0);
+      send_error(res, {431, "headers", "more than " + std::to_string(kMaxHeaderLines) + " header lines"},
+                 true);
+      return httplib::Server::HandlerResponse::Handled;
+    }
     // cpp-httplib 0.11 compresses JSON and SVG answers on every response, with brotli at its
     // slowest quality when the client accepts "br" (every browser): some 200 ms of CPU for one
     // cached SVG on a connection thread. On loopback compression buys nothing, so the server

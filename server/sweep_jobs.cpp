@@ -45,7 +45,7 @@ std::optional<JobStatus> SweepJobs::submit(Scene scene) {
   char id[24];
   std::snprintf(id, sizeof id, "s%016llx",
                 static_cast<unsigned long long>((++counter_ * 0x9E3779B97F4A7C15ULL) ^ salt_));
-  job->id = id;
+  job->id = options_.id_prefix + id;
   job->total = sweep_runs(*scene.sweep);
   job->scene = std::move(scene);
   jobs_[job->id] = job;

@@ -42,6 +42,7 @@ struct SweepJobOptions {
   std::size_t queue = 8;   // sweeps waiting; beyond it, submit refuses
   double keep_s = 600.0;   // a finished sweep's result is kept this long
   std::size_t kept = 32;   // and at most this many finished sweeps
+  std::string id_prefix;   // the ids' first characters ("r2-" for replica 2 of a front door)
 };
 
 // A snapshot of a job, for the status answer.
