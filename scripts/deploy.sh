@@ -50,11 +50,16 @@ for ((i = 0; i < ${#serve_flags[@]}; i++)); do
 done
 
 mkdir -p "$run"/tmp/{body,proxy,fastcgi,uwsgi,scgi}
+# The page is served from a copy in the run directory: nginx's workers may not be able to read
+# the repository (a clone in /root, workers running as nobody).
+rm -rf "$run/web"
+cp -r "$repo/web" "$run/web"
 user_line=""
 if [[ $(id -u) -eq 0 ]]; then
   # nginx's workers drop root; they read the page and write their temporary files as nobody.
   user_line="user nobody nogroup;"
   chown -R nobody:nogroup "$run/tmp"
+  chmod -R a+rX "$run/web"
   chmod 755 "$run"
 fi
 servers="" replica_upstreams="" job_routes=""
@@ -64,7 +69,7 @@ for ((k = 1; k <= replicas; k++)); do
   job_routes+="        location ^~ /api/jobs/r$k- { proxy_pass http://replica$k; }"$'\n'
 done
 conf="$run/nginx.conf"
-awk -v run="$run" -v user="$user_line" -v host="$host" -v port="$port" -v web="$repo/web" \
+awk -v run="$run" -v user="$user_line" -v host="$host" -v port="$port" -v web="$run/web" \
     -v body="$max_body" -v count="$replicas" -v servers="$servers" \
     -v replicas="$replica_upstreams" -v routes="$job_routes" '
   { gsub(/@RUN@/, run); gsub(/@USER@/, user); gsub(/@HOST@/, host); gsub(/@PORT@/, port);
