@@ -9,6 +9,7 @@
 #include "core/simulate.h"
 #include "io/presets.h"
 #include "io/result_json.h"
+#include "io/run_csv.h"
 #include "io/scene_json.h"
 
 namespace vibro {
@@ -119,14 +120,44 @@ int simulate_command(const Args& args) {
   std::size_t next = 0;
   auto scene = load_scene(args, next);
   if (!scene) return 2;
-  if (next < args.size()) {
-    print_error(args[next], "is not an option of `vibro simulate`");
+  std::string out;
+  std::optional<RunTable> table;
+  for (; next < args.size(); ++next) {
+    if ((args[next] == "-o" || args[next] == "--output") && next + 1 < args.size()) {
+      out = args[++next];
+    } else if (args[next] == "--what" && next + 1 < args.size()) {
+      table = run_table_named(args[++next]);
+      if (!table) {
+        print_error("--what", "must be \"events\" or \"trajectory\"");
+        return 2;
+      }
+    } else {
+      print_error(args[next], "is not an option of `vibro simulate`");
+      return 2;
+    }
+  }
+  const bool csv = out.ends_with(".csv");
+  if (!out.empty() && !csv && !out.ends_with(".json")) {
+    print_error("-o", "name the output OUT.json or OUT.csv");
     return 2;
   }
+  if (table && !csv) {
+    print_error("--what", "applies to a CSV output (-o OUT.csv)");
+    return 2;
+  }
+  if (csv && !table) table = RunTable::events;
   SimOptions options = scene->sim;
-  options.record.assign(scene->model.size(), scene->trajectories);
+  options.record.assign(scene->model.size(),
+                        table ? *table == RunTable::trajectory : scene->trajectories);
   const RunResult run = simulate(scene->model, options);
-  std::cout << result_to_json(run, scene->model).dump(2) << "\n";
+  const std::string text =
+      table ? run_csv(run, *table) : result_to_json(run, scene->model).dump(2) + "\n";
+  if (out.empty()) {
+    std::cout << text;
+  } else if (!(std::ofstream(out, std::ios::binary) << text)) {
+    print_error("-o", "cannot write " + out);
+    return 1;
+  }
   return run.stats.termination == Termination::completed ? 0 : 1;
 }
 

@@ -8,7 +8,7 @@ namespace vibro {
 const std::vector<Command>& commands() {
   static const std::vector<Command> list = {
       {"simulate", "vibro simulate SCENE.json | - | --preset NAME [--t-end S] [--method M] "
-                   "[--rtol X] [--atol X] [--deadline-ms MS] [--no-check] [--trajectories]",
+                   "[--rtol X] [--atol X] [--deadline-ms MS] [--no-check] [--trajectories] [-o OUT.json|OUT.csv] [--what events|trajectory]",
        simulate_command},
       {"render", "vibro render SCENE.json | - | --preset NAME -o OUT.png|OUT.svg [overrides]",
        render_command},

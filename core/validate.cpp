@@ -103,6 +103,18 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
         if (l.pellets[q] == p) return FieldError{field, "lists pellet " + std::to_string(p) + " twice"};
       }
     }
+    // Two limiters at one angle that stop the same pellet: which one it strikes (its k, its
+    // re-arming) would be decided by their order in the list.
+    for (int j = 0; j < i; ++j) {
+      const Limiter& o = m.limiters[j];
+      if (std::abs(wrap_angle(l.angle - o.angle)) >= 1e-9) continue;
+      for (int p = 0; p < n; ++p)
+        if (o.acts_on(p) && l.acts_on(p))
+          return FieldError{limiter_field(i, "angle"),
+                            "coincides with limiter " + std::to_string(j) +
+                                " (mod 2π), and both stop pellet " + std::to_string(p) +
+                                ": merge them, or list different pellets"};
+    }
   }
   return std::nullopt;
 }

@@ -45,6 +45,20 @@ std::string canonical(const Scene& scene, bool with_figure) {
   return j.dump();
 }
 
+// What a simulate request asks for: nothing for JSON, or a table as CSV (format=csv, what=events
+// by default or trajectory).
+std::variant<std::optional<RunTable>, ApiError> table_of(const httplib::Request& req) {
+  const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
+  if (format != "json" && format != "csv")
+    return ApiError{400, "format", "must be \"json\" or \"csv\", got \"" + format + "\""};
+  if (!req.has_param("what"))
+    return format == "csv" ? std::optional<RunTable>(RunTable::events) : std::nullopt;
+  if (format != "csv") return ApiError{400, "what", "applies to format=csv only"};
+  const auto table = run_table_named(req.get_param_value("what"));
+  if (!table) return ApiError{400, "what", "must be \"events\" or \"trajectory\""};
+  return std::optional<RunTable>(*table);
+}
+
 std::string simulate_key(const Scene& scene) { return "simulate " + canonical(scene, false); }
 
 std::string render_key(const Scene& scene, ImageFormat format) {
@@ -118,7 +132,7 @@ void Api::preset(const httplib::Request& req, httplib::Response& res) const {
 }
 
 void Api::simulate_post(const httplib::Request& req, httplib::Response& res) {
-  if (auto e = only_params(req, {})) return send_error(res, *e);
+  if (auto e = only_params(req, {"format", "what"})) return send_error(res, *e);
   SceneOrApiError scene = scene_from_body(req, scene_limits_);
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   simulate(std::get<Scene>(scene), req, res);
@@ -126,7 +140,8 @@ void Api::simulate_post(const httplib::Request& req, httplib::Response& res) {
 
 void Api::simulate_get(const httplib::Request& req, httplib::Response& res) {
   SceneOrApiError scene =
-      scene_from_query(req, scene_limits_, {"t_end", "method", "rtol", "atol", "trajectories", "check"});
+      scene_from_query(req, scene_limits_,
+                       {"t_end", "method", "rtol", "atol", "trajectories", "check", "format", "what"});
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   simulate(std::get<Scene>(scene), req, res);
 }
@@ -282,9 +297,12 @@ void Api::job_delete(const httplib::Request& req, httplib::Response& res) {
 }
 
 void Api::simulate(const Scene& scene, const httplib::Request& req, httplib::Response& res) {
-  answer(
-      simulate_key(scene), [scene, this] { return simulate_scene(scene, config_.limits); }, req,
-      res);
+  const auto table = table_of(req);
+  if (auto* e = std::get_if<ApiError>(&table)) return send_error(res, *e);
+  const std::optional<RunTable> t = std::get<std::optional<RunTable>>(table);
+  const std::string key =
+      simulate_key(scene) + (t ? *t == RunTable::events ? " csv events" : " csv trajectory" : "");
+  answer(key, [scene, t, this] { return simulate_scene(scene, config_.limits, t); }, req, res);
 }
 
 void Api::render(const Scene& scene, const httplib::Request& req, httplib::Response& res) {

@@ -2,6 +2,8 @@
 
 #include <cctype>
 #include <charconv>
+#include <optional>
+#include <string>
 
 #include "server/api_error.h"
 
@@ -25,6 +27,29 @@ std::string media_type(const std::string& content_type) {
   return type;
 }
 
+// The query as sent: each parameter split at its first '=' (cpp-httplib 0.11 keeps what follows
+// the last one: "method=a=b" read as "b"), and a parameter given twice refused, naming it: which
+// value the client meant would be a guess, as for a JSON key given twice.
+std::optional<ApiError> read_query(const std::string& target, httplib::Params& params) {
+  const std::size_t q = target.find('?');
+  if (q == std::string::npos) return std::nullopt;
+  const std::string query = target.substr(q + 1);
+  for (std::size_t at = 0; at <= query.size();) {
+    std::size_t end = query.find('&', at);
+    if (end == std::string::npos) end = query.size();
+    const std::string piece = query.substr(at, end - at);
+    at = end + 1;
+    if (piece.empty()) continue;
+    const std::size_t eq = piece.find('=');
+    const std::string key = httplib::detail::decode_url(piece.substr(0, eq), true);
+    const std::string value =
+        eq == std::string::npos ? "" : httplib::detail::decode_url(piece.substr(eq + 1), true);
+    if (params.count(key)) return ApiError{400, key, "is given twice"};
+    params.emplace(key, value);
+  }
+  return std::nullopt;
+}
+
 }  // namespace
 
 Result Router::route(const httplib::Request& req, httplib::Response& res) const {
@@ -40,6 +65,13 @@ Result Router::route(const httplib::Request& req, httplib::Response& res) const 
   const bool has_body =
       req.has_header("Transfer-Encoding") || (!length_text.empty() && length_text != "0");
   const std::string method = req.method == "HEAD" ? "GET" : req.method;
+  httplib::Params params;
+  if (auto error = read_query(req.target, params)) {
+    send_error(res, *error, has_body);
+    return Result::Handled;
+  }
+  // The request is cpp-httplib's own non-const object, handed to this handler as const.
+  const_cast<httplib::Request&>(req).params = std::move(params);
 
   const Route* found = nullptr;
   std::string allowed;

@@ -121,12 +121,14 @@ SimOptions bounded_options(const SimOptions& options, const Limits& limits) {
   return bounded(options, limits).options;
 }
 
-JobResult simulate_scene(const Scene& scene, const Limits& limits) {
+JobResult simulate_scene(const Scene& scene, const Limits& limits, std::optional<RunTable> table) {
   SimOptions options = scene.sim;
-  options.record.assign(scene.model.size(), scene.trajectories);
+  options.record.assign(scene.model.size(),
+                        table ? *table == RunTable::trajectory : scene.trajectories);
   const BoundedOptions b = bounded(std::move(options), limits);
   const RunResult run = simulate(scene.model, b.options);
   if (auto error = stopped_by_limit(run, scene, b, limits)) return *error;
+  if (table) return Produced{run_csv(run, *table), "text/csv"};
   return Produced{result_to_json(run, scene.model).dump(), "application/json"};
 }
 

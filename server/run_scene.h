@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "io/run_csv.h"
 #include "io/scene.h"
 #include "render/figure.h"
 #include "server/api_error.h"
@@ -25,8 +26,10 @@ using JobResult = std::variant<Produced, ApiError>;
 // work-precision sweep (the command line draws those).
 std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, const Limits& limits);
 
-// The run as API.md's JSON, with the sampled branches if the scene asks for trajectories.
-JobResult simulate_scene(const Scene& scene, const Limits& limits);
+// The run as API.md's JSON, with the sampled branches if the scene asks for trajectories; or
+// (`table`) its events or its sampled trajectory as CSV.
+JobResult simulate_scene(const Scene& scene, const Limits& limits,
+                         std::optional<RunTable> table = std::nullopt);
 
 // What a sweep may cost, known up front: its runs × periods, and each run's span, within the
 // server's limits. The error names the sweep's field.

@@ -64,6 +64,8 @@ TEST(SceneJson, EveryBadFieldIsNamed) {
       {"rearm_by out of range", json::json_pointer("/model/limiters/0/rearm_by"), 5,
        "model.limiters[0].rearm_by"},
       {"rearm_by itself", json::json_pointer("/model/limiters/0/rearm_by"), 0, "model.limiters[0].rearm_by"},
+      {"limiters coincide", json::json_pointer("/model/limiters/1/angle"), 0.7 - 6.283185307179586,
+       "model.limiters[1].angle"},
       {"limiter pellets out of range", json::json_pointer("/model/limiters/1/pellets"), json{0, 4},
        "model.limiters[1].pellets[1]"},
       {"t_end zero", json::json_pointer("/t_end"), 0.0, "t_end"},
@@ -89,6 +91,16 @@ TEST(SceneJson, EveryBadFieldIsNamed) {
     scene[c.pointer] = c.value;
     EXPECT_EQ(field_of(scene), c.field) << c.what;
   }
+}
+
+// Limiters at one angle are refused only when both stop some pellet: which one it strikes would
+// depend on their order in the list.
+TEST(SceneJson, LimitersAtOneAngleMustStopDifferentPellets) {
+  json scene = base_scene();
+  scene["model"]["limiters"][1] = {{"angle", 0.7}, {"k", 0.9}, {"pellets", {1}}};
+  EXPECT_EQ(field_of(scene), "model.limiters[1].angle");
+  scene["model"]["limiters"][0]["pellets"] = {0};
+  EXPECT_EQ(field_of(scene), "(accepted)");
 }
 
 TEST(SceneJson, ATypoSuggestsTheFieldItMeant) {

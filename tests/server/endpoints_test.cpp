@@ -1,7 +1,9 @@
 // Every endpoint of API.md answers with the right status, content type and shape.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <nlohmann/json.hpp>
+#include <sstream>
 
 #include "tests/server/test_server.h"
 
@@ -77,6 +79,47 @@ TEST_F(Endpoints, TrajectoriesOnlyWhenAsked) {
   ASSERT_TRUE(run.contains("trajectories"));
   EXPECT_EQ(run["trajectories"].size(), 2u);
   EXPECT_FALSE(run["trajectories"][0]["branches"].empty());
+}
+
+// API.md "Exports": the events, or the sampled trajectory, as CSV: a row per event (the same
+// times as the JSON's, to the bit) or per sample; bad choices named.
+TEST_F(Endpoints, SimulateGivesEventsOrTheTrajectoryAsCsv) {
+  auto run = server->client().Post("/api/simulate", paper_scene(3.0), "application/json");
+  ASSERT_TRUE(run);
+  const json events = json::parse(run->body)["events"];
+  auto res = server->client().Post("/api/simulate?format=csv", paper_scene(3.0), "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_EQ(res->get_header_value("Content-Type"), "text/csv");
+  std::istringstream rows(res->body);
+  std::string line;
+  std::getline(rows, line);
+  EXPECT_EQ(line, "t,kind,pellets,limiter,phi,dphi_before,dphi_after");
+  std::size_t k = 0;
+  for (; std::getline(rows, line); ++k) {
+    ASSERT_LT(k, events.size());
+    EXPECT_EQ(std::stod(line.substr(0, line.find(','))), events[k]["t"].get<double>());
+    EXPECT_NE(line.find("," + events[k]["kind"].get<std::string>() + ","), std::string::npos) << line;
+  }
+  EXPECT_EQ(k, events.size());
+  // A collision lists its pellets and their speeds joined by ';', no limiter (−1).
+  EXPECT_NE(res->body.find(",collision,1;0,-1,"), std::string::npos);
+
+  res = server->client().Get("/api/simulate?preset=paper&t_end=1&format=csv&what=trajectory");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_TRUE(res->body.starts_with("t,pellet,branch,phi,dphi\n"));
+  EXPECT_GT(std::count(res->body.begin(), res->body.end(), '\n'), 100);
+  EXPECT_NE(res->body.find("\n0,1,1,"), std::string::npos);  // pellet 1 (index) from t = 0
+
+  for (const char* bad : {"/api/simulate?preset=paper&format=xml", "/api/simulate?preset=paper&what=events",
+                          "/api/simulate?preset=paper&format=csv&what=branches"}) {
+    res = server->client().Get(bad);
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 400) << bad;
+    const std::string field = json::parse(res->body)["field"];
+    EXPECT_EQ(field, std::string(bad).find("what") != std::string::npos ? "what" : "format") << bad;
+  }
 }
 
 TEST_F(Endpoints, GetSimulateReadsAPresetWithOverrides) {

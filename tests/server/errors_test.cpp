@@ -89,6 +89,20 @@ TEST_F(Errors, QueryValuesAreChecked) {
   EXPECT_EQ(field_of(get("/api/render?format=png"), 400), "preset");
 }
 
+// A parameter given twice is refused, naming it; a value is everything after the first '='.
+TEST_F(Errors, AQueryParameterGivenTwiceIsRefusedAndValuesAreReadWhole) {
+  auto get = [](const char* path) { return server->client().Get(path); };
+  EXPECT_EQ(field_of(get("/api/simulate?preset=paper&t_end=1&t_end=2"), 400), "t_end");
+  EXPECT_EQ(field_of(get("/api/render?preset=paper&preset=paper"), 400), "preset");
+  auto res = get("/api/simulate?preset=paper&method=dop853=x");
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 400);
+  EXPECT_NE(res->body.find("dop853=x"), std::string::npos) << res->body;  // not "x"
+  res = get("/api/simulate?preset=paper&t_end=0%2E5&method=dop853");  // still decoded
+  ASSERT_TRUE(res);
+  EXPECT_EQ(res->status, 200) << res->body;
+}
+
 TEST_F(Errors, AnUnknownPresetIs404) {
   EXPECT_EQ(field_of(server->client().Get("/api/presets/nope"), 404), "preset");
   EXPECT_EQ(field_of(server->client().Get("/api/render?preset=nope"), 404), "preset");

@@ -1,0 +1,25 @@
+// A run's events or its sampled trajectory as CSV with a header row (API.md, "Exports"), for a
+// spreadsheet or pandas: `POST /api/simulate?format=csv[&what=trajectory]`,
+// `vibro simulate -o run.csv [--what trajectory]`.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+
+#include "core/result.h"
+
+namespace vibro {
+
+enum class RunTable { events, trajectory };
+
+// "events" or "trajectory"; nothing for another name.
+std::optional<RunTable> run_table_named(std::string_view name);
+
+// events: t,kind,pellets,limiter,phi,dphi_before,dphi_after, one row per event, the lists of an
+// event's pellets and speeds joined by ';' and limiter −1 where none;
+// trajectory: t,pellet,branch,phi,dphi, one row per sample of the recorded branches.
+// Numbers to 17 significant digits: they read back as the same doubles.
+std::string run_csv(const RunResult& run, RunTable table);
+
+}  // namespace vibro
