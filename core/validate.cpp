@@ -1,16 +1,17 @@
 #include "core/validate.h"
 
+#include <charconv>
 #include <cmath>
 #include <numbers>
-#include <sstream>
 
 namespace vibro {
 namespace {
 
+// The shortest text that reads back as x: a value just past a bound shows how far (t_end
+// 1000.0000001, not "1000").
 std::string fmt(double x) {
-  std::ostringstream s;
-  s << x;
-  return s.str();
+  char text[32];
+  return {text, std::to_chars(text, text + sizeof text, x).ptr};
 }
 
 // Checks lo <= x <= hi (or lo < x when open_lo) and finiteness; returns the error if any.

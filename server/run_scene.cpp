@@ -1,6 +1,7 @@
 #include "server/run_scene.h"
 
 #include <algorithm>
+#include <iomanip>
 #include <sstream>
 
 #include "core/simulate.h"
@@ -63,8 +64,14 @@ std::optional<ApiError> stopped_by_limit(const RunResult& run, const Scene& scen
       }
       break;
   }
-  why << " (stopped at t = " << st.t_reached << " s of t_end = " << b.options.t_end
-      << " s); shorten t_end or loosen the tolerances";
+  why << " (stopped at t = " << st.t_reached << " s of t_end = " << b.options.t_end << " s); ";
+  if (st.termination == Termination::event_limit) {
+    // Events are the motion's own: no tolerance changes how many there are.
+    why << "shorten t_end to at most " << std::setprecision(3) << 0.95 * st.t_reached
+        << " s (no tolerance changes how many events the motion has)";
+  } else {
+    why << "shorten t_end or loosen the tolerances";
+  }
   ApiError error{422, "t_end", why.str()};
   error.extra["stats"] = result_to_json(run, scene.model)["stats"];
   return error;

@@ -60,6 +60,10 @@ TEST_F(Errors, TEndOverTheLimitIsRefusedUpFront) {
   scene["t_end"] = 1e5;
   EXPECT_EQ(field_of(post_scene("/api/simulate", scene.dump()), 400), "t_end");
   EXPECT_EQ(field_of(server->client().Get("/api/render?preset=paper&t_end=5000"), 400), "t_end");
+  // Just past the bound, the message shows how far: every digit the client sent.
+  auto res = server->client().Get("/api/simulate?preset=paper&t_end=1000.0000001");
+  ASSERT_TRUE(res);
+  EXPECT_NE(res->body.find("got 1000.0000001"), std::string::npos) << res->body;
 }
 
 TEST_F(Errors, AnImageTooLargeNamesItsSize) {
@@ -221,7 +225,9 @@ TEST_F(Errors, AHeaderFloodIsRefusedAndItsMemoryGivenBack) {
   request.shrink_to_fit();
   EXPECT_EQ(reply.status(), 431) << reply.bytes.substr(0, 200);
   EXPECT_NE(reply.bytes.find("\"field\":\"headers\""), std::string::npos);
-  if (kGlibcAllocator) EXPECT_LT(rss_kib() - before, 16 * 1024);  // 400,000 lines held: 55 MB
+  if (kGlibcAllocator) {
+    EXPECT_LT(rss_kib() - before, 16 * 1024);  // 400,000 lines held: 55 MB
+  }
   auto res = server->client().Get("/api/health");
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 200);
@@ -263,6 +269,10 @@ TEST(RunLimits, AnEventLimitStopsTheRunWithItsStats) {
   config.limits.events = 10;
   const json body = stopped_run(config, "/api/render?preset=paper&width=400&height=300");
   EXPECT_EQ(body["stats"]["termination"], "event_limit");
+  // Advice that works: the events are the motion's, so only a shorter span has fewer.
+  const std::string why = body["error"];
+  EXPECT_NE(why.find("shorten t_end to at most"), std::string::npos) << why;
+  EXPECT_EQ(why.find("loosen"), std::string::npos) << why;
 }
 
 }  // namespace
