@@ -16,6 +16,13 @@ double crisp(double v) { return std::floor(v) + 0.5; }
 
 }  // namespace
 
+Range with_zero_if_near(Range speeds) {
+  if (speeds.empty()) return speeds;
+  const double gap = speeds.lo > 0.0 ? speeds.lo : speeds.hi < 0.0 ? -speeds.hi : 0.0;
+  if (gap <= 0.25 * speeds.span()) speeds.include(0.0);
+  return speeds;
+}
+
 Axis make_axis(Range range, double length_px, bool angle, std::string label) {
   return {range, axis_ticks(range, length_px, angle), std::move(label), true};
 }

@@ -23,6 +23,11 @@ struct Axis {
 // An axis over `range` drawn `length_px` long; angle axes get π/4 ticks where they read well.
 Axis make_axis(Range range, double length_px, bool angle, std::string label);
 
+// A φ̇ range with 0 in it when the data comes near it (within a quarter of its own span): the
+// line φ̇ = 0, where a pellet turns, is then on the plot; far from the data it would flatten it
+// into a strip (a pellet swinging between 5.6 and 6 rad/s).
+Range with_zero_if_near(Range speeds);
+
 // The axis symbols, shared by every panel.
 inline constexpr const char* kPhiLabel = "\u03c6 [rad]";
 inline constexpr const char* kDphiLabel = "\u03c6\u0307 [rad/s]";  // φ with a combining dot above

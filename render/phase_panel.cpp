@@ -173,7 +173,7 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
   Range phi, dphi;
   for (const VisibleBranch& b : branches)
     for (const Point& p : b.data) phi.include(p.x), dphi.include(p.y);
-  dphi.include(0.0);
+  dphi = with_zero_if_near(dphi);
   if (spec.first_integral_through)
     phi.include(spec.first_integral_through->phi), dphi.include(spec.first_integral_through->dphi);
   const Axis x = make_axis(padded(phi, 0.03), area.w, true, kPhiLabel);

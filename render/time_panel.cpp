@@ -82,7 +82,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
     for (const Point& p : s.phi) t.include(p.x), phi.include(p.y);
     for (const Point& p : s.dphi) dphi.include(p.y);
   }
-  dphi.include(0.0);
+  dphi = with_zero_if_near(dphi);
   const std::vector<Rect>& plots = in.layout.plots;
   const bool stacked = plots.size() > 1;
   const Axis x = make_axis(t.empty() ? Range{0.0, 1.0} : t, plots.front().w, false, kTimeLabel);

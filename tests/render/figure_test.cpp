@@ -10,6 +10,7 @@
 #include "core/validate.h"
 #include "paper_scene.h"
 #include "png_decode.h"
+#include "render/axes.h"
 #include "render/layout.h"
 #include "render/style.h"
 #include "svg_check.h"
@@ -185,6 +186,39 @@ TEST(RealRun, PaperSceneRendersToPngAndCompactSvg) {
   ASSERT_TRUE(svg.ok()) << svg.error->message;
   EXPECT_LT(svg.bytes.size(), 300u * 1024u);
   EXPECT_EQ(testing::xml_balance_error(std::string(svg.bytes.begin(), svg.bytes.end())), "");
+}
+
+// The φ̇ axis fits the data: 0 joins the range only near it (a pellet turning), and a pellet
+// looping between 18 and 20 rad/s fills the plot's height instead of a strip at its top.
+TEST(AxisRange, ZeroJoinsTheSpeedsOnlyNearThem) {
+  using render::Range;
+  auto with_zero = [](Range r) { return render::with_zero_if_near(r); };
+  EXPECT_EQ(with_zero({5.6, 6.0}).lo, 5.6);
+  EXPECT_EQ(with_zero({0.5, 10.0}).lo, 0.0);
+  EXPECT_EQ(with_zero({-10.0, -1.0}).hi, 0.0);
+  EXPECT_EQ(with_zero({-3.0, -2.0}).hi, -2.0);
+  EXPECT_EQ(with_zero({-1.0, 2.0}).lo, -1.0);
+}
+
+TEST(RealRun, ALoopingPelletFillsThePlotHeight) {
+  Model m;
+  m.R = 0.5;
+  m.pellets = {{0.1, 0.0, 20.0, {}}};  // over the top and round: φ̇ from 20 down to ~18 rad/s
+  SimOptions o;
+  o.t_end = 0.6;
+  o.record = {true};
+  const RunResult run = simulate(m, o);
+  const FigureSpec figure = one_plot(PlotSpec{}, 900, 640);
+  const RenderResult result = render_figure(figure, m, run, ImageFormat::png);
+  ASSERT_TRUE(result.ok()) << result.error->message;
+  const auto image = testing::decode_png(result.bytes);
+  const render::Rect area = render::figure_layout(figure)[0].plots[0];
+  int top = image.height, bottom = -1;
+  for (int y = 0; y < image.height; ++y)
+    for (int x = static_cast<int>(area.x); x < static_cast<int>(area.right()); ++x)
+      if (testing::near_colour(image.at(x, y), kBranch1, 6)) top = std::min(top, y), bottom = std::max(bottom, y);
+  ASSERT_GE(bottom, 0);
+  EXPECT_GT((bottom - top) / area.h, 0.6) << top << " " << bottom;
 }
 
 TEST(RealRun, CylinderPanelCompositesIntoPng) {
