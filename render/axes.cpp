@@ -23,8 +23,8 @@ Range with_zero_if_near(Range speeds) {
   return speeds;
 }
 
-Axis make_axis(Range range, double length_px, bool angle, std::string label) {
-  return {range, axis_ticks(range, length_px, angle), std::move(label), true};
+Axis make_axis(Range range, double length_px, bool angle, std::string label, bool vertical) {
+  return {range, axis_ticks(range, length_px, angle, vertical), std::move(label), true};
 }
 
 void clip_to(cairo_t* cr, const Rect& area) {

@@ -21,7 +21,8 @@ struct Axis {
 };
 
 // An axis over `range` drawn `length_px` long; angle axes get π/4 ticks where they read well.
-Axis make_axis(Range range, double length_px, bool angle, std::string label);
+// A vertical axis's ticks may stand closer (a label's height apart, not its width).
+Axis make_axis(Range range, double length_px, bool angle, std::string label, bool vertical = false);
 
 // A φ̇ range with 0 in it when the data comes near it (within a quarter of its own span): the
 // line φ̇ = 0, where a pellet turns, is then on the plot; far from the data it would flatten it

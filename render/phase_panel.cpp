@@ -177,7 +177,7 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
   if (spec.first_integral_through)
     phi.include(spec.first_integral_through->phi), dphi.include(spec.first_integral_through->dphi);
   const Axis x = make_axis(padded(phi, 0.03), area.w, true, kPhiLabel);
-  const Axis y = make_axis(padded(dphi, 0.05), area.h, false, kDphiLabel);
+  const Axis y = make_axis(padded(dphi, 0.05), area.h, false, kDphiLabel, true);
   const Transform tr(area, x.range, y.range);
 
   draw_grid(cr, tr, x, y, style);

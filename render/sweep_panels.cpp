@@ -148,7 +148,7 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
   if (y.span() <= 0.0) y = {y.lo - 0.5, y.lo + 0.5};
   const Rect& area = in.layout.plots.front();
   const Axis ax = make_axis(x, area.w, cloud.x_angle, cloud.x_label);
-  const Axis ay = make_axis(padded(y, 0.05), area.h, cloud.y_angle, cloud.y_label);
+  const Axis ay = make_axis(padded(y, 0.05), area.h, cloud.y_angle, cloud.y_label, true);
   const Transform tr(area, ax.range, ay.range);
 
   draw_grid(cr, tr, ax, ay, style);
@@ -202,7 +202,7 @@ void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
   const Range x = cell_range(a), y = cell_range(b);
   const Rect& area = in.layout.plots.front();
   const Axis ax = make_axis(x, area.w, false, parameter_label(a.parameter));
-  const Axis ay = make_axis(y, area.h, false, spec.axis2 ? parameter_label(b.parameter) : "");
+  const Axis ay = make_axis(y, area.h, false, spec.axis2 ? parameter_label(b.parameter) : "", true);
   const Transform tr(area, ax.range, ay.range);
   const double w = x.span() / std::max(a.count, 1), h = y.span() / std::max(b.count, 1);
   std::vector<int> periods;

@@ -23,6 +23,13 @@ std::vector<Tick> multiples(Range r, double step, Label label) {
   return ticks;
 }
 
+// The next smaller 1-2-5 step: 10 → 5 → 2 → 1 → 0.5.
+double finer_step(double step) {
+  const double magnitude = std::pow(10.0, std::floor(std::log10(step) + 1e-9));
+  const double normalized = step / magnitude;
+  return normalized > 4.0 ? 2.0 * magnitude : normalized > 1.5 ? magnitude : 0.5 * magnitude;
+}
+
 }  // namespace
 
 double nice_step(double span, double intervals) {
@@ -45,10 +52,16 @@ std::string format_tick(double value, double step) {
   return value < 0 ? std::string(kMinus) + buffer : std::string(buffer);
 }
 
-std::vector<Tick> nice_ticks(Range r, double length_px, double spacing_px) {
+std::vector<Tick> nice_ticks(Range r, double length_px, double spacing_px, double min_gap_px) {
   if (r.empty() || !(r.span() > 0.0)) return {};
-  const double step = nice_step(r.span(), std::max(2.0, std::round(length_px / spacing_px)));
-  return multiples(r, step, [step](long k) { return format_tick(k * step, step); });
+  double step = nice_step(r.span(), std::max(2.0, std::round(length_px / spacing_px)));
+  auto at = [&r](double s) { return multiples(r, s, [s](long k) { return format_tick(k * s, s); }); };
+  std::vector<Tick> ticks = at(step);
+  while (ticks.size() < 3 && finer_step(step) / r.span() * length_px >= min_gap_px) {
+    step = finer_step(step);
+    ticks = at(step);
+  }
+  return ticks;
 }
 
 std::string pi_label(long quarters) {
@@ -77,12 +90,14 @@ std::vector<Tick> angle_ticks(Range r, double length_px, double min_spacing_px) 
   return {};
 }
 
-std::vector<Tick> axis_ticks(Range r, double length_px, bool angle_axis) {
+std::vector<Tick> axis_ticks(Range r, double length_px, bool angle_axis, bool vertical) {
   if (angle_axis) {
     auto ticks = angle_ticks(r, length_px);
+    // A short vertical axis: multiples of π as close as a label's height, before plain numbers.
+    if (ticks.empty() && vertical) ticks = angle_ticks(r, length_px, 20.0);
     if (!ticks.empty()) return ticks;
   }
-  return nice_ticks(r, length_px);
+  return nice_ticks(r, length_px, 100.0, vertical ? 18.0 : 35.0);
 }
 
 }  // namespace vibro::render

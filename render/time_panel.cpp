@@ -91,7 +91,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   const Rect& top = plots.front();
   Range phi_range = padded(phi, 0.05);
   phi_range.lo -= style.px(14.0) / top.h * phi_range.span();
-  const Axis y_phi = make_axis(phi_range, top.h, true, kPhiLabel);
+  const Axis y_phi = make_axis(phi_range, top.h, true, kPhiLabel, true);
   const Transform tr_phi(top, x.range, y_phi.range);
 
   Obstacles avoid;
@@ -118,7 +118,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   // Lower plot: φ̇(t).
   if (stacked) {
     const Rect& bottom = plots[1];
-    const Axis y_dphi = make_axis(padded(dphi, 0.05), bottom.h, false, kDphiLabel);
+    const Axis y_dphi = make_axis(padded(dphi, 0.05), bottom.h, false, kDphiLabel, true);
     const Transform tr_dphi(bottom, x.range, y_dphi.range);
     draw_grid(cr, tr_dphi, x, y_dphi, style);
     cairo_save(cr);

@@ -96,3 +96,32 @@ TEST(AngleTicks, FallBackToNiceTicksWhereThoseReadBetter) {
 
 }  // namespace
 }  // namespace vibro::render
+
+namespace vibro::render {
+namespace {
+
+// A small figure's axes (600×400: plots about 110 px tall) keep at least three labelled ticks,
+// never closer than a label's height: "0" alone told a reader nothing (issue 13).
+TEST(SmallAxes, AVerticalAxisKeepsThreeTicksALabelHeightApart) {
+  for (const Range r : {Range{-18.0, 9.0}, Range{-21.0, 52.0}, Range{0.3, 0.9}, Range{5.6, 6.05}}) {
+    const double length = 110.0;
+    const auto ticks = axis_ticks(r, length, false, true);
+    ASSERT_GE(ticks.size(), 3u) << r.lo << " " << r.hi;
+    const double gap = (ticks[1].value - ticks[0].value) / r.span() * length;
+    EXPECT_GE(gap, 18.0) << r.lo << " " << r.hi;
+  }
+  // φ(t) from −2 to 5 rad: multiples of π/2, not "0" and "5".
+  const auto angles = axis_ticks({-2.0, 5.0}, 110.0, true, true);
+  ASSERT_GE(angles.size(), 3u);
+  EXPECT_EQ(angles[1].label, "0");
+  EXPECT_EQ(angles[2].label, "\u03c0/2");
+}
+
+TEST(SmallAxes, AHorizontalAxisKeepsItsLabelsAWidthApart) {  // "−0.2" is some 25 px wide
+  const auto ticks = axis_ticks({-0.3, 0.35}, 120.0, false, false);
+  ASSERT_GE(ticks.size(), 2u);
+  EXPECT_GE((ticks[1].value - ticks[0].value) / 0.65 * 120.0, 35.0);
+}
+
+}  // namespace
+}  // namespace vibro::render
