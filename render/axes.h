@@ -41,6 +41,10 @@ void draw_zero_line(cairo_t* cr, const Transform& tr, const Style& style);
 
 void draw_title(cairo_t* cr, Point top_centre, const std::string& title, const Style& style);
 
+// "(a)", "(b)", … for panel `index` of a figure of several, at the top left of its cell, as a
+// journal's figures are lettered.
+void draw_panel_letter(cairo_t* cr, const Rect& cell, std::size_t index, const Style& style);
+
 // Clips drawing to the plot area (the caller resets the clip).
 void clip_to(cairo_t* cr, const Rect& area);
 

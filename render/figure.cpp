@@ -72,6 +72,7 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
           render::draw_sweep_points_panel(cr, in);
         break;
     }
+    if (layouts.size() > 1) render::draw_panel_letter(cr, layouts[i].cell, i, style);
   }
   if (cairo_status(cr) != CAIRO_STATUS_SUCCESS)
     return FieldError{"",

@@ -119,6 +119,26 @@ TEST_F(FigureTest, TwoPanelsShareTheImageSideBySide) {
   EXPECT_GT(count_colour(image, kBranch1, layouts[1].plots[1]).inside, 50);
 }
 
+// A figure of several panels letters them (a), (b) at each cell's top left; a single panel not.
+TEST_F(FigureTest, PanelsOfAFigureAreLettered) {
+  auto ink_at_top_left = [&](const FigureSpec& figure, std::size_t panel) {
+    const RenderResult result = render_figure(figure, model, run, ImageFormat::png);
+    EXPECT_TRUE(result.ok());
+    const auto image = testing::decode_png(result.bytes);
+    const render::Rect cell = render::figure_layout(figure)[panel].cell;
+    long ink = 0;
+    for (int y = static_cast<int>(cell.y) + 6; y < static_cast<int>(cell.y) + 30; ++y)
+      for (int x = static_cast<int>(cell.x) + 8; x < static_cast<int>(cell.x) + 45; ++x)
+        ink += (image.at(x, y) & 0xFF) < 100 ? 1 : 0;  // dark: text, not the white margin
+    return ink;
+  };
+  FigureSpec two = one_plot(PlotSpec{});
+  two.plots.push_back(time_plot({0}));
+  EXPECT_GT(ink_at_top_left(two, 0), 20);
+  EXPECT_GT(ink_at_top_left(two, 1), 20);
+  EXPECT_EQ(ink_at_top_left(one_plot(PlotSpec{}), 0), 0);
+}
+
 TEST_F(FigureTest, TimeWindowRestrictsWhatIsDrawn) {
   // The first branch of pellet 1 ends at its first event: a window before it shows branch 1 only.
   const double first_event = run.tracks[0].branches[0].samples.back().t;
