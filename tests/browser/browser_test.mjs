@@ -189,6 +189,11 @@ try {
     const answer = await page.textContent("#summary .answer");
     expect(/impact/.test(answer ?? ""), `no answer sentence in the summary: ${answer}`);
     expect((await page.locator("table.final tbody tr").count()) === 2, "final states are not listed for both pellets");
+    const shown = await page.evaluate(async () => {
+      const { formatState } = await import("/js/numbers.js");
+      return [formatState(1.8e-15), formatState(-3e-13, 5), formatState(2.5e-9), formatState(0.0340701)];
+    });
+    expect(shown.join(" ") === "0 0 2.5e-9 0.0340701", `round-off is not shown as 0: ${shown}`);
     const stats = await page.textContent("#summary .stats");
     expect(/error estimate/.test(stats), "no error estimate in the summary");
     expect(/trusted to the end/.test(stats) && /event times ± /.test(stats), `no trust beside the run time: ${stats}`);

@@ -3,7 +3,7 @@
 // summary.last_impact counts them, so "after impact 27" can be found in the table.
 
 import { fill, h } from "./dom.js";
-import { formatValue } from "./numbers.js";
+import { formatState, formatValue } from "./numbers.js";
 
 const IMPACT_KINDS = new Set(["limiter", "collision", "chatter"]);
 const KIND_LABELS = {
@@ -81,7 +81,7 @@ export function showEvents(container, events, lastImpact, trustedUntil = Infinit
 function row(e, i, impactNo, isLast, untrusted) {
   const pellets = e.pellets ?? [];
   const velocities = pellets.map((p, j) => {
-    const change = `${formatValue(e.dphi_before?.[j], 5)} → ${formatValue(e.dphi_after?.[j], 5)}`;
+    const change = `${formatState(e.dphi_before?.[j], 5)} → ${formatState(e.dphi_after?.[j], 5)}`;
     return h("div", {}, pellets.length > 1 ? h("span", { class: "who" }, `${p + 1}: `) : null, change);
   });
   let kind = KIND_LABELS[e.kind] ?? e.kind;
@@ -98,7 +98,7 @@ function row(e, i, impactNo, isLast, untrusted) {
     h("td", {}, h("span", { class: "dot" }), kind),
     h("td", {}, pellets.map((p) => p + 1).join(", ")),
     h("td", {}, e.limiter === undefined ? "" : String(e.limiter + 1)),
-    h("td", { class: "n", title: String(e.phi) }, formatValue(e.phi)),
+    h("td", { class: "n", title: String(e.phi) }, formatState(e.phi)),
     h("td", { class: "n" }, velocities),
   );
 }

@@ -87,6 +87,13 @@ export function formatInput(x, { angle = false } = {}) {
 }
 
 // A value for reading in tables: `digits` significant digits, no trailing zeros.
+// A state (an angle in rad, a speed in rad/s) as formatValue shows it, with round-off below
+// 1e-12 shown as 0: a pellet at rest reads "0", not "1.8e-15" (the exact value stays in the
+// cell's title).
+export function formatState(x, digits = 6) {
+  return typeof x === "number" && Math.abs(x) < 1e-12 ? "0" : formatValue(x, digits);
+}
+
 export function formatValue(x, digits = 6) {
   if (typeof x !== "number" || !Number.isFinite(x)) return String(x);
   if (x === 0) return "0";

@@ -3,7 +3,7 @@
 // so that one is never read without the other), and the warnings.
 
 import { fill, h } from "./dom.js";
-import { asPiFraction, formatValue } from "./numbers.js";
+import { asPiFraction, formatState, formatValue } from "./numbers.js";
 
 const STATE_LABELS = { sliding: "sliding", stuck: "stuck", resting_at_limiter: "resting at limiter" };
 
@@ -59,7 +59,7 @@ function finalTable(final) {
           h("td", {}, state),
           h("td", { class: "n", title: String(f.phi) }, angle(f.phi)),
           h("td", { class: "n", title: String(f.phi_wrapped) }, angle(f.phi_wrapped)),
-          h("td", { class: "n" }, formatValue(f.dphi)),
+          h("td", { class: "n", title: String(f.dphi) }, formatState(f.dphi)),
         );
       }),
     ),
@@ -69,7 +69,7 @@ function finalTable(final) {
 // A resting angle is often exactly a limiter's angle, such as 3π/2: say so.
 function angle(x) {
   const pi = typeof x === "number" ? asPiFraction(x) : null;
-  return pi ? `${formatValue(x)} = ${pi}` : formatValue(x);
+  return pi ? `${formatValue(x)} = ${pi}` : formatState(x);
 }
 
 function statsLine(st) {
