@@ -67,8 +67,9 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
     for (int j = 0; j < i; ++j) {
       if (std::abs(wrap_angle(p.phi0 - m.pellets[j].phi0)) < 1e-9) {
         return FieldError{pellet_field(i, "phi0"),
-                          "coincides with pellet " + std::to_string(j) +
-                              " (mod 2π); pellets are point masses and must start apart"};
+                          "coincides with pellet " + std::to_string(j + 1) + " (model.pellets[" +
+                              std::to_string(j) +
+                              "]) mod 2π; pellets are point masses and must start apart"};
       }
     }
   }
@@ -98,10 +99,13 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
           "model.limiters[" + std::to_string(i) + "].pellets[" + std::to_string(j) + "]";
       if (p < 0 || p >= n) {
         return FieldError{field, "must be a pellet index in 0.." + std::to_string(n - 1) +
-                                     ", got " + std::to_string(p)};
+                                     " (indices count from 0: pellet 1 is 0), got " +
+                                     std::to_string(p)};
       }
       for (std::size_t q = 0; q < j; ++q) {
-        if (l.pellets[q] == p) return FieldError{field, "lists pellet " + std::to_string(p) + " twice"};
+        if (l.pellets[q] == p)
+          return FieldError{field, "lists pellet " + std::to_string(p + 1) + " (index " +
+                                       std::to_string(p) + ") twice"};
       }
     }
     // Two limiters at one angle that stop the same pellet: which one it strikes (its k, its
@@ -112,9 +116,9 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
       for (int p = 0; p < n; ++p)
         if (o.acts_on(p) && l.acts_on(p))
           return FieldError{limiter_field(i, "angle"),
-                            "coincides with limiter " + std::to_string(j) +
-                                " (mod 2π), and both stop pellet " + std::to_string(p) +
-                                ": merge them, or list different pellets"};
+                            "coincides with limiter " + std::to_string(j + 1) + " (model.limiters[" +
+                                std::to_string(j) + "]) mod 2π, and both stop pellet " +
+                                std::to_string(p + 1) + ": merge them, or list different pellets"};
     }
   }
   return std::nullopt;

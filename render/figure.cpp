@@ -29,7 +29,7 @@ std::optional<FieldError> check_tracks(const FigureSpec& figure, const Model& mo
       if (render::find_track(run, pellet)) continue;
       return FieldError{"plots[" + std::to_string(i) + "]." +
                             (plot.kind == PlotKind::time ? "pellets" : "pellet"),
-                        "the run recorded no trajectory for pellet " + std::to_string(pellet) +
+                        "the run recorded no trajectory for pellet " + std::to_string(pellet + 1) +
                             "; ask for its branches"};
     }
   }

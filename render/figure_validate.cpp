@@ -13,8 +13,9 @@ std::string plot_field(std::size_t i, const char* name) {
 std::optional<FieldError> check_pellet(const std::string& field, int pellet, int count) {
   if (pellet >= 0 && pellet < count) return std::nullopt;
   if (count == 0) return FieldError{field, "the model has no pellets"};
-  return FieldError{field, "must be a pellet index in 0.." + std::to_string(count - 1) + " (got " +
-                               std::to_string(pellet) + ")"};
+  return FieldError{field, "must be a pellet index in 0.." + std::to_string(count - 1) +
+                               " (indices count from 0: pellet 1 is 0), got " +
+                               std::to_string(pellet)};
 }
 
 std::optional<FieldError> check_plot(std::size_t i, const PlotSpec& plot, const Model& model,

@@ -99,6 +99,11 @@ TEST(SceneJson, LimitersAtOneAngleMustStopDifferentPellets) {
   json scene = base_scene();
   scene["model"]["limiters"][1] = {{"angle", 0.7}, {"k", 0.9}, {"pellets", {1}}};
   EXPECT_EQ(field_of(scene), "model.limiters[1].angle");
+  // Prose counts from 1, as the figures and the event table do; JSON paths from 0.
+  const auto error = std::get<FieldError>(scene_from_json(scene));
+  EXPECT_NE(error.message.find("coincides with limiter 1 (model.limiters[0])"), std::string::npos)
+      << error.message;
+  EXPECT_NE(error.message.find("both stop pellet 2"), std::string::npos) << error.message;
   scene["model"]["limiters"][0]["pellets"] = {0};
   EXPECT_EQ(field_of(scene), "(accepted)");
 }
