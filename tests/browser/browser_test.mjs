@@ -189,6 +189,10 @@ try {
     const answer = await page.textContent("#summary .answer");
     expect(/impact/.test(answer ?? ""), `no answer sentence in the summary: ${answer}`);
     expect((await page.locator("table.final tbody tr").count()) === 2, "final states are not listed for both pellets");
+    // Beside the paper's three panels, work–precision (a figure of its own) is not offered.
+    expect(await page.isDisabled('[data-action="add-work_precision"]'), "work–precision can be added beside other panels");
+    const kinds = await page.locator('select[data-field="plots[0].kind"] option').allTextContents();
+    expect(!kinds.some((k) => /work/.test(k)), `a panel beside others offers work–precision: ${kinds}`);
     const shown = await page.evaluate(async () => {
       const { formatState } = await import("/js/numbers.js");
       return [formatState(1.8e-15), formatState(-3e-13, 5), formatState(2.5e-9), formatState(0.0340701)];

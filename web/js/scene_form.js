@@ -224,11 +224,16 @@ export class SceneForm {
   plotsSection(plots, pelletCount) {
     const n = plots.length;
     const cards = plots.map((p, i) => this.plotCard(p, i, pelletCount, n));
+    // A work–precision diagram is a figure of its own (a sweep over methods and tolerances, by its
+    // own endpoint): it is offered alone, never beside other panels, where it would be refused.
+    const hasWorkPrecision = plots.some((p) => p.kind === "work_precision");
     const adders = PLOT_KINDS.map((k) => {
-      const button = addButton(k.value, `+ ${k.short}`, n >= MAX_PLOTS, () =>
+      const alone = k.value === "work_precision" ? n > 0 : hasWorkPrecision;
+      const button = addButton(k.value, `+ ${k.short}`, n >= MAX_PLOTS || alone, () =>
         this.restructure((s) => (s.plots ??= []).push(newPlot(k.value, pelletCount)), `[data-field="plots[${n}].kind"]`),
       );
       button.setAttribute("aria-label", `Add a ${KIND_TITLES[k.value]} panel`);
+      if (alone) button.title = "a work–precision diagram is a figure of its own: remove the other panels first";
       return button;
     });
     return section(`Panels (${n} of ${MAX_PLOTS})`, [cards, h("div", { class: "adders" }, adders)], { field: "plots" });
@@ -241,7 +246,7 @@ export class SceneForm {
       path: `${path}.kind`,
       label: "Kind",
       value: kind,
-      options: PLOT_KINDS,
+      options: count > 1 && kind !== "work_precision" ? PLOT_KINDS.filter((k) => k.value !== "work_precision") : PLOT_KINDS,
       onChange: (e) => this.restructure((s) => (s.plots[i] = convertPlot(s.plots[i], e.target.value)), `[data-field="${path}.kind"]`),
     });
     const pelletField = selectField({ path: `${path}.pellet`, label: "Pellet", kind: "int", value: p.pellet ?? 0, options: pelletOptions(pelletCount) });
