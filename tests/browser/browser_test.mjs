@@ -247,6 +247,21 @@ try {
     await second.close();
   });
 
+  await check("a pellet added in the form starts apart from the others and the time panel draws it", async () => {
+    const before = await runCount(page);
+    await page.click('[data-action="add-pellet"]');
+    await page.click("#render");
+    await waitForRun(page, before);
+    const scene = JSON.parse((await page.inputValue("#curl")).split("\n")[2]);
+    expect(scene.model.pellets.length === 3, `the scene has ${scene.model.pellets.length} pellets`);
+    const phis = scene.model.pellets.map((p) => p.phi0);
+    expect(new Set(phis).size === 3, `the new pellet starts on another: ${phis}`);
+    const time = scene.plots.find((p) => p.kind === "time");
+    expect(time.pellets.includes(2), `the time panel draws pellets ${time.pellets}`);
+    const fig = await pixelsOf(page, "figure");
+    expect(fig.ink > 0.005, "the figure with three pellets is blank");
+  });
+
   await check("the sweep panel runs the impact oscillator's sweep, and a click renders that value", async () => {
     const before = await runCount(page);
     await page.selectOption("#preset", "impact-oscillator");

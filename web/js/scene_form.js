@@ -142,7 +142,7 @@ export class SceneForm {
       );
     });
     const add = addButton("pellet", "+ Pellet", n >= MAX_PELLETS, () =>
-      this.restructure((s) => s.model.pellets.push({ m: 0.2, phi0: 0, dphi0: 0 }), `[data-field="model.pellets[${n}].m"]`),
+      this.restructure((s) => addPellet(s), `[data-field="model.pellets[${n}].m"]`),
     );
     return section(`Pellets (${n} of 1–${MAX_PELLETS})`, [
       h("p", { class: "note" }, "Force F(t) = F₀ cos(Ωt + ψ). Angles from the lowest point, positive toward limiter 1; they accept π, e.g. π/12."),
@@ -372,6 +372,28 @@ function convertPlot(p, kind) {
 // Index lists after pellet `i` goes: drop it, shift the ones after it down.
 function renumber(list, i) {
   return list.filter((j) => j !== i).map((j) => (j > i ? j - 1 : j));
+}
+
+// A new pellet where none stands (pellets must start apart), drawn by every time panel that
+// drew all the pellets before it.
+function addPellet(scene) {
+  const pellets = scene.model.pellets;
+  const taken = (a) => pellets.some((p) => typeof p.phi0 === "number" && Math.abs(wrap(a - p.phi0)) < 1e-6);
+  let phi0 = 0;
+  while (taken(phi0)) phi0 += 0.25;
+  const n = pellets.length;
+  for (const p of scene.plots ?? []) {
+    // An empty or absent list means all pellets already; a list of every one is extended.
+    const listsAll = Array.isArray(p.pellets) && p.pellets.length === n && Array.from({ length: n }, (_, i) => i).every((i) => p.pellets.includes(i));
+    if (p.kind === "time" && listsAll) p.pellets.push(n);
+  }
+  pellets.push({ m: 0.2, phi0, dphi0: 0 });
+}
+
+// x wrapped to (−π, π].
+function wrap(x) {
+  const t = 2 * Math.PI;
+  return x - t * Math.round(x / t);
 }
 
 function removePellet(scene, i) {
