@@ -314,12 +314,16 @@ function showGeneralError(message) {
   ui.generalError.hidden = false;
 }
 
-// About the page itself (a broken link), kept across renders until dismissed.
+// About the page itself (a broken link): kept across renders until dismissed, or until a good
+// scene loads (a preset picked, a working link opened).
 function showNotice(message) {
   $("notice-text").textContent = message;
   $("notice").hidden = false;
 }
-$("notice-dismiss").addEventListener("click", () => ($("notice").hidden = true));
+function hideNotice() {
+  $("notice").hidden = true;
+}
+$("notice-dismiss").addEventListener("click", hideNotice);
 
 function hideGeneralError() {
   ui.generalError.hidden = true;
@@ -363,6 +367,7 @@ ui.picker.addEventListener("change", async () => {
   hideGeneralError();
   try {
     await loadPreset(name);
+    hideNotice();
     await render();
   } catch (e) {
     showRequestError(e);
@@ -377,6 +382,7 @@ window.addEventListener("hashchange", () => start().catch(showRequestError));
 async function start() {
   const wanted = readHash();
   if (wanted.error) showNotice(wanted.error);
+  else hideNotice();
   if (wanted.scene) {
     // A scene from a link: name the preset it came from, if the server still has it.
     const name = wanted.scene.name;
@@ -388,7 +394,8 @@ async function start() {
       fillSweep(wanted.scene);
       edited();
     } catch (e) {
-      showNotice(`The link's scene could not be shown in the form (${e.message}); the paper scene is shown instead.`);
+      console.warn("the link's scene does not fit the form:", e);
+      showNotice("The link's scene has fields this page cannot show; the paper scene is shown instead.");
       await loadPreset("paper");
     }
   } else {

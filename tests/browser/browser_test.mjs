@@ -247,6 +247,21 @@ try {
     await second.close();
   });
 
+  await check("a broken link's notice says what is wrong in words, and goes once a preset loads", async () => {
+    const third = await browser.newPage({ viewport: { width: 1280, height: 800 } });
+    third.on("pageerror", (e) => pageErrors.push(e.message));
+    await third.goto(`${server.base}/#scene=@@not-base64`);
+    await waitForRun(third, 0);
+    const notice = await third.textContent("#notice-text");
+    expect(await third.isVisible("#notice"), "no notice for a broken link");
+    expect(/damaged or cut short/.test(notice) && !/decoded|token|JSON/.test(notice), `the notice reads: ${notice}`);
+    const before = await runCount(third);
+    await third.selectOption("#preset", "chatter");
+    await waitForRun(third, before);
+    expect(!(await third.isVisible("#notice")), "the notice stays after a good scene loaded");
+    await third.close();
+  });
+
   await check("a pellet added in the form starts apart from the others and the time panel draws it", async () => {
     const before = await runCount(page);
     await page.click('[data-action="add-pellet"]');

@@ -30,8 +30,10 @@ export function readHash(hash = location.hash) {
   if (params.has("scene")) {
     try {
       return { scene: decodeScene(params.get("scene")) };
-    } catch (e) {
-      return { error: `The link's scene could not be read (${e.message}); the paper scene is shown instead.` };
+    } catch {
+      // atob's and JSON.parse's own words ("The string to be decoded is not correctly encoded")
+      // tell a reader nothing; the likely cause does.
+      return { error: "The link's scene could not be read: the link is damaged or cut short. The paper scene is shown instead." };
     }
   }
   if (params.has("preset")) return { preset: params.get("preset") };
