@@ -10,6 +10,7 @@
 #include "render/legend.h"
 #include "render/limiter_lines.h"
 #include "render/panel.h"
+#include "render/phase_jumps.h"
 #include "render/polyline.h"
 #include "render/text.h"
 #include "render/track_window.h"
@@ -23,11 +24,6 @@ struct VisibleBranch {
   std::vector<Point> pixels;  // thinned
 };
 
-// An impact seen in the portrait: φ̇ jumps from `before` to `after` at one φ.
-struct Jump {
-  Point before, after;
-  const EventMark* mark;
-};
 
 std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const PlotSpec& spec) {
   std::vector<VisibleBranch> branches;
@@ -43,30 +39,6 @@ std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const Plot
   return branches;
 }
 
-// Jumps between consecutive drawn branches that meet at one φ with different φ̇, both ends
-// inside the window. Branches that meet without a jump (reversals, sticks) are not impacts.
-std::vector<Jump> velocity_jumps(const PelletTrack& track, std::span<const Event> events,
-                                 const PlotSpec& spec) {
-  std::vector<Jump> jumps;
-  for (std::size_t i = 1; i < track.branches.size(); ++i) {
-    if (!branch_selected(spec, track.branches[i - 1].index) ||
-        !branch_selected(spec, track.branches[i].index))
-      continue;
-    const auto& prev = track.branches[i - 1].samples;
-    const auto& next = track.branches[i].samples;
-    if (prev.empty() || next.empty()) continue;
-    const Sample& e = prev.back();
-    const Sample& s = next.front();
-    if (!in_window(e.t, spec) || !in_window(s.t, spec)) continue;
-    const bool same_phi = std::abs(e.phi - s.phi) <= 1e-9 * (1.0 + std::abs(e.phi));
-    const bool jumped = std::abs(e.dphi - s.dphi) > 1e-9 * (1.0 + std::abs(e.dphi));
-    if (!same_phi || !jumped) continue;
-    const Event* event = find_impact(events, track.pellet, e.t);
-    const EventMark* mark = event_mark(event ? event->kind : EventKind::limiter);
-    jumps.push_back({{e.phi, e.dphi}, {s.phi, s.dphi}, mark});
-  }
-  return jumps;
-}
 
 // The first-integral curves through the point: the curve of direction s carries φ̇ of sign s
 // only, so a point with φ̇ ≠ 0 gets one curve and a point at rest both.

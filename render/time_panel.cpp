@@ -48,13 +48,15 @@ std::string default_title(const PlotSpec& spec, const std::vector<int>& pellets,
          window_suffix(spec, t_end);
 }
 
-// Marks the impacts touching the drawn pellets just above the time axis, one row per kind.
+// Marks the impacts touching the drawn pellets just above the time axis: limiter impacts and
+// collisions on one row, chatter on the row above.
 std::vector<const EventMark*> draw_event_row(cairo_t* cr, const Transform& tr, const PanelInput& in,
                                              const std::vector<int>& pellets) {
   std::vector<const EventMark*> shown;
   const Rect& a = tr.area();
-  const double y = a.bottom() - in.style.px(7.0);
   for (EventKind kind : {EventKind::limiter, EventKind::collision, EventKind::chatter}) {
+    // Chatter ends a run of impacts: on a row of its own above them, or the dots would hide it.
+    const double y = a.bottom() - in.style.px(kind == EventKind::chatter ? 16.0 : 7.0);
     std::vector<Point> centres;
     for (const Event& e : in.run.events) {
       if (e.kind != kind || !in_window(e.t, in.spec)) continue;

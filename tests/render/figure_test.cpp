@@ -12,6 +12,8 @@
 #include "png_decode.h"
 #include "render/axes.h"
 #include "render/layout.h"
+#include "render/phase_jumps.h"
+#include "render/track_window.h"
 #include "render/style.h"
 #include "svg_check.h"
 #include "synthetic_run.h"
@@ -239,6 +241,30 @@ TEST(RealRun, ALoopingPelletFillsThePlotHeight) {
       if (testing::near_colour(image.at(x, y), kBranch1, 6)) top = std::min(top, y), bottom = std::max(bottom, y);
   ASSERT_GE(bottom, 0);
   EXPECT_GT((bottom - top) / area.h, 0.6) << top << " " << bottom;
+}
+
+// The paper scene ends with pellet 1 chattering to rest on limiter 2 (3π/2): its portrait
+// marks that as a chatter jump to rest, though no branch ends at the accumulation time, and
+// its legend then lists the chatter mark. Limiter impacts and collisions keep their marks.
+TEST(RealRun, ThePortraitMarksAChatterSequenceToRest) {
+  const Model model = testing::paper_model();
+  const RunResult run = simulate(model, testing::paper_options());
+  const PelletTrack* track = render::find_track(run, 0);
+  ASSERT_NE(track, nullptr);
+  const auto jumps = render::velocity_jumps(*track, run.events, PlotSpec{});
+  int chatter = 0, limiter = 0, collision = 0;
+  for (const render::Jump& j : jumps) {
+    if (j.mark == render::event_mark(EventKind::chatter)) {
+      ++chatter;
+      EXPECT_NEAR(j.before.x, 1.5 * M_PI, 1e-9);
+      EXPECT_EQ(j.after.y, 0.0);
+    }
+    limiter += j.mark == render::event_mark(EventKind::limiter);
+    collision += j.mark == render::event_mark(EventKind::collision);
+  }
+  EXPECT_EQ(chatter, 1);
+  EXPECT_GT(limiter, 0);
+  EXPECT_GT(collision, 0);
 }
 
 TEST(RealRun, CylinderPanelCompositesIntoPng) {

@@ -1,0 +1,57 @@
+#include "render/phase_jumps.h"
+
+#include <algorithm>
+#include <cmath>
+
+#include "render/track_window.h"
+
+namespace vibro::render {
+namespace {
+
+// The branch whose span holds t (the latest, where two meet), or null.
+const Branch* branch_at(const PelletTrack& track, double t) {
+  const Branch* found = nullptr;
+  for (const Branch& b : track.branches)
+    if (!b.samples.empty() && b.samples.front().t <= t && t <= b.samples.back().t) found = &b;
+  return found;
+}
+
+}  // namespace
+
+std::vector<Jump> velocity_jumps(const PelletTrack& track, std::span<const Event> events,
+                                 const PlotSpec& spec) {
+  std::vector<Jump> jumps;
+  // Branches that meet without a jump (reversals, sticks) are not impacts.
+  for (std::size_t i = 1; i < track.branches.size(); ++i) {
+    if (!branch_selected(spec, track.branches[i - 1].index) ||
+        !branch_selected(spec, track.branches[i].index))
+      continue;
+    const auto& prev = track.branches[i - 1].samples;
+    const auto& next = track.branches[i].samples;
+    if (prev.empty() || next.empty()) continue;
+    const Sample& e = prev.back();
+    const Sample& s = next.front();
+    if (!in_window(e.t, spec) || !in_window(s.t, spec)) continue;
+    const bool same_phi = std::abs(e.phi - s.phi) <= 1e-9 * (1.0 + std::abs(e.phi));
+    const bool jumped = std::abs(e.dphi - s.dphi) > 1e-9 * (1.0 + std::abs(e.dphi));
+    if (!same_phi || !jumped) continue;
+    const Event* event = find_impact(events, track.pellet, e.t);
+    if (event && event->kind == EventKind::chatter) continue;  // below, from the event itself
+    const EventMark* mark = event_mark(event ? event->kind : EventKind::limiter);
+    jumps.push_back({{e.phi, e.dphi}, {s.phi, s.dphi}, mark});
+  }
+  // A chatter sequence: from the speed its summation started from to rest against the limiter.
+  for (const Event& e : events) {
+    if (e.kind != EventKind::chatter || !in_window(e.t, spec)) continue;
+    const auto at = std::find(e.pellets.begin(), e.pellets.end(), track.pellet);
+    if (at == e.pellets.end()) continue;
+    const Branch* during = branch_at(track, e.t);
+    if (!during || !branch_selected(spec, during->index)) continue;
+    // Listed at its accumulation time, where the pellet rests against the limiter: e.phi.
+    const double dphi = e.dphi_before[static_cast<std::size_t>(at - e.pellets.begin())];
+    jumps.push_back({{e.phi, dphi}, {e.phi, 0.0}, event_mark(EventKind::chatter)});
+  }
+  return jumps;
+}
+
+}  // namespace vibro::render

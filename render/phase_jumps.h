@@ -1,0 +1,27 @@
+// The impacts a phase portrait marks: where φ̇ jumps at one φ. Limiter impacts and collisions
+// show as jumps between consecutive branches; a chatter sequence summed to rest at a limiter
+// shows as a jump from the speed its summation started from to rest, at the limiter (no branch
+// ends there: the last ones before it are too short to see).
+#pragma once
+
+#include <span>
+#include <vector>
+
+#include "core/result.h"
+#include "render/event_marks.h"
+#include "render/geometry.h"
+#include "render/plot_spec.h"
+
+namespace vibro::render {
+
+// An impact seen in the portrait: φ̇ jumps from `before` to `after` at one φ.
+struct Jump {
+  Point before, after;
+  const EventMark* mark;
+};
+
+// The jumps of one pellet's track inside the plot's window and branch selection.
+std::vector<Jump> velocity_jumps(const PelletTrack& track, std::span<const Event> events,
+                                 const PlotSpec& spec);
+
+}  // namespace vibro::render
