@@ -102,6 +102,18 @@ void read_solver(const json& j, SimOptions& o) {
   f.done();
 }
 
+// An axis's [lo, hi], two finite numbers with lo < hi; nothing when the field is absent.
+std::optional<AxisLimits> axis_limits(Fields& f, const char* name) {
+  const json* list = f.array(name, 2);
+  if (!list) return std::nullopt;
+  if (list->size() != 2) throw FieldException(f.path(name), "must be [lo, hi]");
+  const double lo = as_number((*list)[0], item(f.path(name), 0));
+  const double hi = as_number((*list)[1], item(f.path(name), 1));
+  if (!(lo < hi)) throw FieldException(f.path(name), "must be [lo, hi] with lo < hi");
+  return AxisLimits{lo, hi};
+}
+
+
 PlotSpec read_plot(const json& j, const std::string& path, int pellets) {
   Fields f(j, path);
   PlotSpec p;
@@ -144,6 +156,12 @@ PlotSpec read_plot(const json& j, const std::string& path, int pellets) {
       g.done();
     }
     p.friction_zone = f.boolean("friction_zone", false);
+    p.wrap = f.boolean("wrap", false);
+    p.branch_labels = f.boolean("labels", true);
+  }
+  if (p.kind == PlotKind::phase || p.kind == PlotKind::time) {
+    p.phi_range = axis_limits(f, "phi_range");
+    p.dphi_range = axis_limits(f, "dphi_range");
   }
   if (auto title = f.string("title", 200)) p.title = *title;
   if (p.kind == PlotKind::cylinder) {
@@ -374,6 +392,10 @@ json scene_to_json(const Scene& s) {
       pj["first_integral"] = {{"phi", p.first_integral_through->phi},
                               {"dphi", p.first_integral_through->dphi}};
     if (p.friction_zone) pj["friction_zone"] = true;
+    if (p.wrap) pj["wrap"] = true;
+    if (!p.branch_labels) pj["labels"] = false;
+    if (p.phi_range) pj["phi_range"] = {p.phi_range->lo, p.phi_range->hi};
+    if (p.dphi_range) pj["dphi_range"] = {p.dphi_range->lo, p.dphi_range->hi};
     if (!p.title.empty()) pj["title"] = p.title;
     if (p.kind == PlotKind::cylinder)
       pj["camera"] = {{"azimuth", p.camera.azimuth_deg},

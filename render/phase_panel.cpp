@@ -22,8 +22,36 @@ struct VisibleBranch {
   int index = 1;
   std::vector<Point> data;    // (φ, φ̇) inside the window
   std::vector<Point> pixels;  // thinned
+  bool labelled = true;       // false on the shorter pieces of a branch cut by wrapping φ
 };
 
+
+constexpr double kPi = 0.5 * kTwoPi;
+
+// φ on one turn, [−π, π).
+double on_one_turn(double phi) { return phi - kTwoPi * std::floor((phi + kPi) / kTwoPi); }
+
+// A branch with φ on one turn, cut where it passes ±π (a line across the plot otherwise); only
+// its longest piece carries the branch's number.
+void wrap_into(VisibleBranch b, std::vector<VisibleBranch>& out) {
+  const std::size_t first = out.size();
+  VisibleBranch piece{b.index, {}, {}, true};
+  for (const Point& p : b.data) {
+    const Point w{on_one_turn(p.x), p.y};
+    if (!piece.data.empty() && std::abs(w.x - piece.data.back().x) > kPi) {
+      out.push_back(std::move(piece));
+      piece = VisibleBranch{b.index, {}, {}, true};
+    }
+    piece.data.push_back(w);
+  }
+  out.push_back(std::move(piece));
+  std::size_t longest = first;
+  for (std::size_t k = first; k < out.size(); ++k) {
+    if (out[k].data.size() > out[longest].data.size()) longest = k;
+    out[k].labelled = false;
+  }
+  out[longest].labelled = true;
+}
 
 std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const PlotSpec& spec) {
   std::vector<VisibleBranch> branches;
@@ -31,10 +59,13 @@ std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const Plot
     if (!branch_selected(spec, b.index)) continue;
     const auto samples = clip_to_window(b.samples, spec.t_from, spec.t_to);
     if (samples.empty()) continue;
-    VisibleBranch v{b.index, {}, {}};
+    VisibleBranch v{b.index, {}, {}, true};
     v.data.reserve(samples.size());
     for (const Sample& s : samples) v.data.push_back({s.phi, s.dphi});
-    branches.push_back(std::move(v));
+    if (spec.wrap)
+      wrap_into(std::move(v), branches);
+    else
+      branches.push_back(std::move(v));
   }
   return branches;
 }
@@ -92,7 +123,7 @@ std::vector<Rect> draw_branch_numbers(cairo_t* cr, const std::vector<VisibleBran
   std::vector<Rect> taken;
   const double offset = style.px(9.0);
   for (const VisibleBranch& b : branches) {
-    if (polyline_length(b.pixels) < style.px(40.0)) continue;
+    if (!b.labelled || polyline_length(b.pixels) < style.px(40.0)) continue;
     const std::string label = std::to_string(b.index);
     for (double fraction : {0.5, 0.3, 0.7}) {
       Point dir;
@@ -140,7 +171,9 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
   const Rect area = in.layout.plots.front();
   const PelletTrack& track = *find_track(in.run, spec.pellet);
   auto branches = visible_branches(track, spec);
-  const auto jumps = velocity_jumps(track, in.run.events, spec);
+  auto jumps = velocity_jumps(track, in.run.events, spec);
+  if (spec.wrap)
+    for (Jump& j : jumps) j.before.x = j.after.x = on_one_turn(j.before.x);
 
   Range phi, dphi;
   for (const VisibleBranch& b : branches)
@@ -148,8 +181,14 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
   dphi = with_zero_if_near(dphi);
   if (spec.first_integral_through)
     phi.include(spec.first_integral_through->phi), dphi.include(spec.first_integral_through->dphi);
-  const Axis x = make_axis(padded(phi, 0.03), area.w, true, kPhiLabel);
-  const Axis y = make_axis(padded(dphi, 0.05), area.h, false, kDphiLabel, true);
+  // The scene's limits where it sets them, exactly; one whole turn when φ is wrapped.
+  const Range phi_axis = spec.phi_range ? Range{spec.phi_range->lo, spec.phi_range->hi}
+                         : spec.wrap    ? Range{-kPi, kPi}
+                                        : padded(phi, 0.03);
+  const Range dphi_axis =
+      spec.dphi_range ? Range{spec.dphi_range->lo, spec.dphi_range->hi} : padded(dphi, 0.05);
+  const Axis x = make_axis(phi_axis, area.w, true, kPhiLabel);
+  const Axis y = make_axis(dphi_axis, area.h, false, kDphiLabel, true);
   const Transform tr(area, x.range, y.range);
 
   draw_grid(cr, tr, x, y, style);
@@ -214,7 +253,7 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
     marks_shown.push_back(mark);
   }
 
-  avoid.boxes = draw_branch_numbers(cr, branches, area, style);
+  if (spec.branch_labels) avoid.boxes = draw_branch_numbers(cr, branches, area, style);
   const auto limiter_boxes = draw_limiter_labels(cr, tr, limiters, Orientation::vertical, style);
   avoid.boxes.insert(avoid.boxes.end(), limiter_boxes.begin(), limiter_boxes.end());
   cairo_restore(cr);

@@ -39,6 +39,12 @@ struct Camera {
   double distance = 5.0;  // in cylinder radii; sets the strength of the perspective
 };
 
+// Axis limits a scene sets, lo < hi.
+struct AxisLimits {
+  double lo = 0.0;
+  double hi = 1.0;
+};
+
 struct PlotSpec {
   PlotKind kind = PlotKind::phase;
   int pellet = 0;                 // phase, cylinder
@@ -49,6 +55,10 @@ struct PlotSpec {
   std::vector<int> branches;      // phase: only these motion intervals (numbered from 1); empty: all
   std::optional<PhasePoint> first_integral_through;  // phase: exact unforced curve through it
   bool friction_zone = false;     // phase: shade |φ| ≤ α0 (mod 2π) where a pellet can rest
+  bool wrap = false;              // phase: φ on one turn, [−π, π)
+  bool branch_labels = true;      // phase: number the branches
+  std::optional<AxisLimits> phi_range;   // phase, time: the φ axis; default: the data's
+  std::optional<AxisLimits> dphi_range;  // phase, time: the φ̇ axis; default: the data's
   std::string title;              // empty: a default title
   Camera camera;                  // cylinder
   SectionCoordinate coordinate = SectionCoordinate::dphi;  // bifurcation

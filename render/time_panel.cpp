@@ -91,8 +91,8 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
 
   // Upper (or only) plot: φ(t). A bottom strip is left free for the event marks.
   const Rect& top = plots.front();
-  Range phi_range = padded(phi, 0.05);
-  phi_range.lo -= style.px(14.0) / top.h * phi_range.span();
+  Range phi_range = spec.phi_range ? Range{spec.phi_range->lo, spec.phi_range->hi} : padded(phi, 0.05);
+  phi_range.lo -= style.px(14.0) / top.h * phi_range.span();  // below the data, not over it
   const Axis y_phi = make_axis(phi_range, top.h, true, kPhiLabel, true);
   const Transform tr_phi(top, x.range, y_phi.range);
 
@@ -120,7 +120,9 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   // Lower plot: φ̇(t).
   if (stacked) {
     const Rect& bottom = plots[1];
-    const Axis y_dphi = make_axis(padded(dphi, 0.05), bottom.h, false, kDphiLabel, true);
+    const Axis y_dphi = make_axis(
+        spec.dphi_range ? Range{spec.dphi_range->lo, spec.dphi_range->hi} : padded(dphi, 0.05),
+        bottom.h, false, kDphiLabel, true);
     const Transform tr_dphi(bottom, x.range, y_dphi.range);
     draw_grid(cr, tr_dphi, x, y_dphi, style);
     cairo_save(cr);

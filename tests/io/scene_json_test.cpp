@@ -79,6 +79,10 @@ TEST(SceneJson, EveryBadFieldIsNamed) {
       {"plot pellets out of range", json::json_pointer("/plots/1/pellets"), json{0, 7}, "plots[1].pellets[1]"},
       {"plot window empty", json::json_pointer("/plots/0/t_to"), -1.0, "plots[0].t_to"},
       {"plot branch zero", json::json_pointer("/plots/0/branches"), json{0}, "plots[0].branches[0]"},
+      {"phi_range reversed", json::json_pointer("/plots/0/phi_range"), json{1.0, 0.0}, "plots[0].phi_range"},
+      {"dphi_range one number", json::json_pointer("/plots/1/dphi_range"), json{1.0}, "plots[1].dphi_range"},
+      {"phi_range a string", json::json_pointer("/plots/0/phi_range"), json{"a", 1.0}, "plots[0].phi_range[0]"},
+      {"wrap not a boolean", json::json_pointer("/plots/0/wrap"), 1, "plots[0].wrap"},
       {"width zero", json::json_pointer("/width"), 0, "width"},
       {"height over the limit", json::json_pointer("/height"), 100000, "height"},
       {"width fractional", json::json_pointer("/width"), 100.5, "width"},
@@ -160,6 +164,22 @@ TEST(SceneJson, EveryPresetParsesAndItsCanonicalFormIsStable) {
     EXPECT_EQ(scene_to_json(std::get<Scene>(again)).dump(), canonical.dump()) << p.name;
     EXPECT_EQ(canonical.value("name", ""), std::string(p.name));
   }
+}
+
+// A plot's axis limits, wrap and labels survive the canonical form.
+TEST(SceneJson, APlotsAxesWrapAndLabelsAreKept) {
+  json scene = base_scene();
+  scene["plots"][0]["phi_range"] = {-1.5, 2.0};
+  scene["plots"][0]["wrap"] = true;
+  scene["plots"][0]["labels"] = false;
+  scene["plots"][1]["dphi_range"] = {-3.0, 3.0};
+  const SceneOrError read = scene_from_json(scene);
+  ASSERT_TRUE(std::holds_alternative<Scene>(read));
+  const json canonical = scene_to_json(std::get<Scene>(read));
+  EXPECT_EQ(canonical["plots"][0]["phi_range"], json({-1.5, 2.0}));
+  EXPECT_EQ(canonical["plots"][0]["wrap"], true);
+  EXPECT_EQ(canonical["plots"][0]["labels"], false);
+  EXPECT_EQ(canonical["plots"][1]["dphi_range"], json({-3.0, 3.0}));
 }
 
 TEST(SceneJson, ThePaperPresetStatesItsAssumptionsAndComesFirst) {

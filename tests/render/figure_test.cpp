@@ -267,6 +267,47 @@ TEST(RealRun, ThePortraitMarksAChatterSequenceToRest) {
   EXPECT_GT(collision, 0);
 }
 
+// A scene sets the axes: a swing of ±0.3 rad on a φ axis of [−1, 1] fills the middle of the
+// plot only; wrapped, the same swing a turn on is drawn on one turn, [−π, π).
+TEST(RealRun, AScenesAxisLimitsAndWrapHold) {
+  auto columns = [](const Model& m, PlotSpec plot, double t_end) {
+    SimOptions o;
+    o.t_end = t_end;
+    o.record = {true};
+    const RunResult run = simulate(m, o);
+    const FigureSpec figure = one_plot(plot, 900, 640);
+    const RenderResult result = render_figure(figure, m, run, ImageFormat::png);
+    EXPECT_TRUE(result.ok());
+    const auto image = testing::decode_png(result.bytes);
+    const render::Rect area = render::figure_layout(figure)[0].plots[0];
+    double left = 1.0, right = 0.0;
+    for (int y = static_cast<int>(area.y); y < static_cast<int>(area.bottom()); ++y)
+      for (int x = static_cast<int>(area.x); x < static_cast<int>(area.right()); ++x)
+        if (testing::near_colour(image.at(x, y), kBranch1, 6)) {
+          left = std::min(left, (x - area.x) / area.w);
+          right = std::max(right, (x - area.x) / area.w);
+        }
+    return std::pair{left, right};
+  };
+  Model swing;
+  swing.R = 0.5;
+  swing.pellets = {{0.1, 0.3, 0.0, {}}};
+  PlotSpec limited;
+  limited.phi_range = AxisLimits{-1.0, 1.0};
+  const auto [l1, r1] = columns(swing, limited, 1.0);  // past half a swing (0.71 s)
+  EXPECT_NEAR(l1, 0.35, 0.03);
+  EXPECT_NEAR(r1, 0.65, 0.03);
+
+  // The same swing a turn further on: wrapped, it is drawn about 0 in the middle of [−π, π).
+  Model turned = swing;
+  turned.pellets[0].phi0 += 2.0 * M_PI;
+  PlotSpec wrapped;
+  wrapped.wrap = true;
+  const auto [l2, r2] = columns(turned, wrapped, 1.0);
+  EXPECT_NEAR(l2, 0.5 - 0.3 / (2.0 * M_PI), 0.01);
+  EXPECT_NEAR(r2, 0.5 + 0.3 / (2.0 * M_PI), 0.01);
+}
+
 TEST(RealRun, CylinderPanelCompositesIntoPng) {
   if (!cylinder_panels_available()) GTEST_SKIP() << "built without render/gl";
   const Model model = testing::synthetic_model();
