@@ -12,11 +12,13 @@ constexpr std::size_t kMaxWarnings = 100;
 const double kNone = std::numeric_limits<double>::quiet_NaN();
 }  // namespace
 
-Recorder::Recorder(const Model& model, const std::vector<bool>& record, double record_until)
+Recorder::Recorder(const Model& model, const std::vector<bool>& record, double record_until,
+                   long max_samples)
     : model_(model),
       track_of_(model.size(), -1),
       open_(model.size(), false),
       record_until_(record_until),
+      max_samples_(max_samples),
       negative_since_(model.size(), kNone) {
   for (int i = 0; i < model.size(); ++i) {
     if (i < static_cast<int>(record.size()) && record[i]) {
@@ -24,19 +26,53 @@ Recorder::Recorder(const Model& model, const std::vector<bool>& record, double r
       tracks_.push_back({i, {}});
     }
   }
+  pending_.resize(tracks_.size());
 }
 
 void Recorder::sample(double t, const Vec& y) {
-  if (t <= record_until_) {
-    for (PelletTrack& track : tracks_) {
-      const int i = track.pellet;
-      if (!open_[i]) {
-        track.branches.push_back({static_cast<int>(track.branches.size()) + 1, {}});
-        open_[i] = true;
-      }
-      track.branches.back().samples.push_back({t, y[phi_index(i)], y[dphi_index(i)]});
+  if (t > record_until_) return;
+  const bool on_stride = ++calls_ % stride_ == 0;
+  for (std::size_t k = 0; k < tracks_.size(); ++k) {
+    PelletTrack& track = tracks_[k];
+    const int i = track.pellet;
+    const Sample s{t, y[phi_index(i)], y[dphi_index(i)]};
+    if (!open_[i]) {
+      track.branches.push_back({static_cast<int>(track.branches.size()) + 1, {}});
+      open_[i] = true;
+      keep(track, s);
+    } else if (on_stride) {
+      pending_[k].reset();
+      keep(track, s);
+    } else {
+      pending_[k] = s;  // kept if it turns out to end the branch
     }
   }
+  if (max_samples_ > 0 && kept_ > max_samples_) thin();
+}
+
+void Recorder::keep(PelletTrack& track, const Sample& s) {
+  track.branches.back().samples.push_back(s);
+  ++kept_;
+}
+
+void Recorder::flush_pending(int k) {
+  if (!pending_[k]) return;
+  keep(tracks_[k], *pending_[k]);
+  pending_[k].reset();
+}
+
+void Recorder::thin() {
+  kept_ = 0;
+  for (PelletTrack& track : tracks_)
+    for (Branch& b : track.branches) {
+      std::vector<Sample>& v = b.samples;
+      std::size_t out = 0;
+      for (std::size_t j = 0; j < v.size(); ++j)
+        if (j % 2 == 0 || j + 1 == v.size()) v[out++] = v[j];
+      v.resize(out);
+      kept_ += static_cast<long>(out);
+    }
+  stride_ *= 2;
 }
 
 void Recorder::check_normal_force(double t, const Vec& y, const std::vector<Body>& bodies) {
@@ -63,9 +99,13 @@ void Recorder::close_warning(int pellet, double t) {
   negative_since_[pellet] = kNone;
 }
 
-void Recorder::end_branch(int pellet) { open_[pellet] = false; }
+void Recorder::end_branch(int pellet) {
+  if (track_of_[pellet] >= 0) flush_pending(track_of_[pellet]);
+  open_[pellet] = false;
+}
 
 void Recorder::finish(double t, RunResult& result) {
+  for (std::size_t k = 0; k < tracks_.size(); ++k) flush_pending(static_cast<int>(k));
   for (int i = 0; i < model_.size(); ++i) close_warning(i, t);
   result.tracks = std::move(tracks_);
   result.warnings = std::move(warnings_);

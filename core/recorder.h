@@ -2,6 +2,7 @@
 // trajectories, and the intervals where the paper law's normal force is negative.
 #pragma once
 
+#include <optional>
 #include <vector>
 
 #include "core/model.h"
@@ -13,7 +14,9 @@ namespace vibro {
 
 class Recorder {
  public:
-  Recorder(const Model& model, const std::vector<bool>& record, double record_until);
+  // max_samples: SimOptions::max_samples.
+  Recorder(const Model& model, const std::vector<bool>& record, double record_until,
+           long max_samples);
 
   // A state of the whole system at time t, kept for the recorded pellets.
   void sample(double t, const Vec& y);
@@ -27,12 +30,21 @@ class Recorder {
 
  private:
   void close_warning(int pellet, double t);
+  void keep(PelletTrack& track, const Sample& s);
+  void flush_pending(int track);
+  // Drops every other sample of every branch, keeping its ends; doubles the stride.
+  void thin();
 
   const Model& model_;
   std::vector<int> track_of_;  // pellet -> index in tracks_, or -1
   std::vector<PelletTrack> tracks_;
   std::vector<bool> open_;     // pellet's current branch is open
   double record_until_;
+  long max_samples_;
+  long kept_ = 0;      // samples in tracks_
+  long calls_ = 0;     // sample() calls
+  long stride_ = 1;    // one sample kept in stride_ (a branch's first and last always)
+  std::vector<std::optional<Sample>> pending_;  // per track: the last sample skipped
 
   std::vector<double> negative_since_;  // per pellet: start of a negative-normal interval, or NaN
   std::vector<Warning> warnings_;

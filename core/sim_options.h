@@ -26,6 +26,10 @@ struct SimOptions {
   std::vector<bool> record;
   double record_until = std::numeric_limits<double>::infinity();
   int samples_per_step = 4;  // dense-output points kept inside each step, for smooth curves
+  // The branches' samples kept in all, 0: no bound. Past it the recorder halves its density (every
+  // other sample dropped, each branch's ends kept) and keeps one in twice as many from then on:
+  // a long run is drawn whole, more coarsely, instead of stopping.
+  long max_samples = 0;
   // Times at which the state is kept (RunResult::stops), increasing: a stroboscopic section. Steps
   // land on them, so each state is a step's end, not an interpolation; at an instant, the state
   // after it.

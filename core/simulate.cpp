@@ -59,7 +59,7 @@ class Simulation {
         neighbours_(model.size() >= 2 ? circular_neighbours(y_, model.size())
                                       : std::vector<Neighbours>{}),
         energy_(model, y_),
-        recorder_(model, options.record, options.record_until),
+        recorder_(model, options.record, options.record_until, options.max_samples),
         stepper_(stepper ? std::move(stepper)
                          : make_stepper(options.method,
                                         StepperOptions{options.rtol, options.atol,

@@ -95,7 +95,7 @@ const std::vector<Flag>& flags() {
       number_flag("--max-events", "events per run (default 20000)", 1, 1e7, in_limits(&L::events)),
       number_flag("--max-steps", "integrator steps per run (default 2000000)", 1, 1e9,
                   in_limits(&L::steps)),
-      number_flag("--max-samples", "trajectory points per run (default 200000)", 1000, 1e8,
+      number_flag("--max-samples", "trajectory points kept per run, thinned past it (default 200000)", 1000, 1e8,
                   in_limits(&L::samples)),
       number_flag("--deadline-ms", "wall clock per simulation, ms (default 2000)", 1, 6e5,
                   in_limits(&L::deadline_ms)),

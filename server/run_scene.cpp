@@ -14,35 +14,20 @@
 namespace vibro::server {
 namespace {
 
-// The scene's options within the server's limits. Recorded branches cost memory per sample,
-// so when pellets are recorded the step budget also bounds the samples they keep.
-struct BoundedOptions {
-  SimOptions options;
-  bool samples_bound = false;  // the step budget comes from the sample limit
-};
-
-BoundedOptions bounded(SimOptions options, const Limits& limits) {
-  BoundedOptions b;
+// The scene's options within the server's limits. Recorded branches are thinned to the sample
+// limit (SimOptions::max_samples): a long run is drawn whole, not stopped for its samples.
+SimOptions bounded(SimOptions options, const Limits& limits) {
   options.max_events = std::min(options.max_events, limits.events);
   options.max_steps = std::min(options.max_steps, limits.steps);
   options.deadline_ms = std::min(options.deadline_ms, limits.deadline_ms);
-  const long recorded = std::count(options.record.begin(), options.record.end(), true);
-  if (recorded > 0) {
-    const long per_step = recorded * (options.samples_per_step + 1);
-    const long by_samples = std::max(1L, limits.samples / per_step);
-    if (by_samples < options.max_steps) {
-      options.max_steps = by_samples;
-      b.samples_bound = true;
-    }
-  }
-  b.options = std::move(options);
-  return b;
+  options.max_samples = limits.samples;
+  return options;
 }
 
 // A run that a limit stopped is refused (422) with its partial stats; a completed run, or one
 // the numerics ended (its result says so), is an answer.
 std::optional<ApiError> stopped_by_limit(const RunResult& run, const Scene& scene,
-                                         const BoundedOptions& b, const Limits& limits) {
+                                         const SimOptions& options, const Limits& limits) {
   const Stats& st = run.stats;
   std::ostringstream why;
   switch (st.termination) {
@@ -53,18 +38,13 @@ std::optional<ApiError> stopped_by_limit(const RunResult& run, const Scene& scen
       why << "the run took longer than its deadline of " << limits.deadline_ms << " ms";
       break;
     case Termination::event_limit:
-      why << "the run has more than the server's limit of " << b.options.max_events << " events";
+      why << "the run has more than the server's limit of " << options.max_events << " events";
       break;
     case Termination::step_limit:
-      if (b.samples_bound) {
-        why << "the trajectories drawn need more than the server's limit of " << limits.samples
-            << " samples";
-      } else {
-        why << "the run needs more than the server's limit of " << b.options.max_steps << " steps";
-      }
+      why << "the run needs more than the server's limit of " << options.max_steps << " steps";
       break;
   }
-  why << " (stopped at t = " << st.t_reached << " s of t_end = " << b.options.t_end << " s); ";
+  why << " (stopped at t = " << st.t_reached << " s of t_end = " << options.t_end << " s); ";
   if (st.termination == Termination::event_limit) {
     // Events are the motion's own: no tolerance changes how many there are.
     why << "shorten t_end to at most " << std::setprecision(3) << 0.95 * st.t_reached
@@ -125,15 +105,15 @@ std::optional<ApiError> check_sweep(const Scene& scene, const Limits& limits) {
 }
 
 SimOptions bounded_options(const SimOptions& options, const Limits& limits) {
-  return bounded(options, limits).options;
+  return bounded(options, limits);
 }
 
 JobResult simulate_scene(const Scene& scene, const Limits& limits, std::optional<RunTable> table) {
   SimOptions options = scene.sim;
   options.record.assign(scene.model.size(),
                         table ? *table == RunTable::trajectory : scene.trajectories);
-  const BoundedOptions b = bounded(std::move(options), limits);
-  const RunResult run = simulate(scene.model, b.options);
+  const SimOptions b = bounded(std::move(options), limits);
+  const RunResult run = simulate(scene.model, b);
   if (auto error = stopped_by_limit(run, scene, b, limits)) return *error;
   if (table) return Produced{run_csv(run, *table), "text/csv"};
   return Produced{result_to_json(run, scene.model).dump(), "application/json"};
@@ -141,8 +121,8 @@ JobResult simulate_scene(const Scene& scene, const Limits& limits, std::optional
 
 JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& limits) {
   const RunPlan plan = plan_run(scene.figure, scene.sim, scene.model.size());
-  const BoundedOptions b = bounded(plan.options, limits);
-  const RunResult run = simulate(scene.model, b.options);
+  const SimOptions b = bounded(plan.options, limits);
+  const RunResult run = simulate(scene.model, b);
   if (auto error = stopped_by_limit(run, scene, b, limits)) return *error;
   RenderResult image = render_figure(scene.figure, scene.model, run, format);
   if (!image.ok()) return ApiError::from(*image.error);
@@ -155,7 +135,7 @@ JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> im
   sweep.repeats = 1;
   // About 44 runs (4 methods × 10 tolerances and 2 references): each gets a share of the
   // deadline, so the whole sweep ends within a few deadlines.
-  SimOptions options = bounded(scene.sim, limits).options;
+  SimOptions options = bounded(scene.sim, limits);
   options.deadline_ms = limits.deadline_ms / 16.0;
   const WorkPrecisionReport report = work_precision(scene.model, options, sweep);
   if (!image) return Produced{work_precision_to_json(report).dump(), "application/json"};
