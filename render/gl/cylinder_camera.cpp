@@ -65,4 +65,9 @@ ViewSetup cylinder_camera(const Camera& camera, int width, int height) {
       static_cast<float>(d - 0.3), static_cast<float>(d + 4.0)};
 }
 
+ViewFraction view_fraction(const ViewSetup& setup, Vec3 p) {
+  const Vec3 ndc = transform_point(setup.projection * setup.view, p);
+  return {0.5 * (ndc.x + 1.0), 0.5 * (1.0 - ndc.y)};
+}
+
 }  // namespace vibro::gl

@@ -26,4 +26,12 @@ struct ViewSetup {
 // sets how strong the perspective is rather than a zoom.
 ViewSetup cylinder_camera(const Camera& camera, int width, int height);
 
+// Where a scene point lands in the view, as fractions of its width and height from the top
+// left: where a label drawn over the image goes.
+struct ViewFraction {
+  double x = 0.0;
+  double y = 0.0;
+};
+ViewFraction view_fraction(const ViewSetup& setup, Vec3 p);
+
 }  // namespace vibro::gl

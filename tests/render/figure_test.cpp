@@ -11,6 +11,7 @@
 #include "paper_scene.h"
 #include "png_decode.h"
 #include "render/axes.h"
+#include "render/cylinder_panel.h"
 #include "render/layout.h"
 #include "render/phase_jumps.h"
 #include "render/track_window.h"
@@ -328,6 +329,46 @@ TEST(RealRun, CylinderPanelCompositesIntoPng) {
   for (int y = static_cast<int>(area.y); y < area.bottom(); ++y)
     for (int x = 0; x < image.width; ++x) coloured += (image.at(x, y) & 0xFFFFFFu) != 0xFFFFFFu;
   EXPECT_GT(coloured, 1000);
+}
+
+}  // namespace
+}  // namespace vibro
+
+namespace vibro {
+namespace {
+
+// The 3-D view says what it shows: φ at the floor's quarter turns, φ̇ at the axis's ends and the
+// limiters by number, each inside the panel and drawn (ink under its anchor).
+TEST(RealRun, TheCylinderViewIsLabelled) {
+  if (!cylinder_panels_available()) GTEST_SKIP() << "built without render/gl";
+  const Model model = testing::synthetic_model();
+  const RunResult run = testing::synthetic_run(model, 3.0);
+  PlotSpec plot;
+  plot.kind = PlotKind::cylinder;
+  const FigureSpec figure = one_plot(plot, 900, 700);
+  const RenderResult result = render_figure(figure, model, run, ImageFormat::png);
+  if (!result.ok()) GTEST_SKIP() << result.error->message;
+  const auto image = testing::decode_png(result.bytes);
+  const auto layouts = render::figure_layout(figure);
+  const render::Style style = render::style_for(figure.width, figure.height);
+  const PanelData data;
+  const render::PanelInput in{figure.plots[0], model, run, layouts[0], style, data};
+  const auto labels = render::cylinder_labels(in);
+  ASSERT_EQ(labels.size(), 4u + 2u + model.limiters.size());
+  std::vector<std::string> texts;
+  for (const auto& label : labels) texts.push_back(label.text);
+  EXPECT_EQ(texts[0], "0");
+  EXPECT_EQ(texts[1], "\u03c0/2");
+  EXPECT_EQ(texts.back(), "limiter " + std::to_string(model.limiters.size()));
+  const render::Rect& cell = layouts[0].cell;
+  for (const auto& label : labels) {
+    EXPECT_TRUE(cell.contains(label.at)) << label.text;
+    long ink = 0;
+    for (int y = static_cast<int>(label.at.y) - 5; y <= static_cast<int>(label.at.y) + 5; ++y)
+      for (int x = static_cast<int>(label.at.x) - 12; x <= static_cast<int>(label.at.x) + 12; ++x)
+        ink += (image.at(x, y) & 0xFF) < 90 ? 1 : 0;
+    EXPECT_GT(ink, 3) << label.text;
+  }
 }
 
 }  // namespace
