@@ -6,6 +6,7 @@
 
 #include "core/first_integral.h"
 #include "render/axes.h"
+#include "render/branch_numbers.h"
 #include "render/event_marks.h"
 #include "render/legend.h"
 #include "render/limiter_lines.h"
@@ -108,50 +109,6 @@ void draw_friction_zones(cairo_t* cr, const Transform& tr, double alpha0) {
   cairo_fill(cr);
 }
 
-Colour branch_colour(int index) {
-  return series_colour(static_cast<std::size_t>(std::max(0, index - 1)));
-}
-
-Colour darker(Colour c, double factor) { return {c.r * factor, c.g * factor, c.b * factor, c.a}; }
-
-// Numbers each branch long enough to carry a label, beside its middle (or a third of the way
-// along either end when the middle is taken), skipping labels that would collide. Returns the
-// boxes of the numbers drawn.
-std::vector<Rect> draw_branch_numbers(cairo_t* cr, const std::vector<VisibleBranch>& branches,
-                                      const Rect& area, const Style& style) {
-  set_font(cr, style.note_font());
-  std::vector<Rect> taken;
-  const double offset = style.px(9.0);
-  for (const VisibleBranch& b : branches) {
-    if (!b.labelled || polyline_length(b.pixels) < style.px(40.0)) continue;
-    const std::string label = std::to_string(b.index);
-    for (double fraction : {0.5, 0.3, 0.7}) {
-      Point dir;
-      const Point p = point_along(b.pixels, fraction, &dir);
-      // Left of the direction of travel, then right.
-      std::optional<Rect> placed;
-      for (double side : {1.0, -1.0}) {
-        const Point at{p.x + side * dir.y * offset, p.y - side * dir.x * offset};
-        Rect box = text_box(cr, label, at, {HAlign::center, VAlign::middle});
-        const bool inside = box.x >= area.x && box.right() <= area.right() && box.y >= area.y &&
-                            box.bottom() <= area.bottom();
-        const bool free = std::none_of(taken.begin(), taken.end(),
-                                       [&](const Rect& r) { return r.overlaps(box); });
-        if (inside && free) {
-          draw_text_on_backdrop(cr, label, at, {HAlign::center, VAlign::middle},
-                                darker(branch_colour(b.index), 0.8), style.px(1.5));
-          placed = box;
-          break;
-        }
-      }
-      if (placed) {
-        taken.push_back(*placed);
-        break;
-      }
-    }
-  }
-  return taken;
-}
 
 std::string default_title(const PlotSpec& spec, double t_end) {
   std::string title = "Phase portrait, pellet " + std::to_string(spec.pellet + 1);
@@ -243,17 +200,24 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
 
   // Impact markers at the state just before each impact, one fill per kind of mark.
   std::vector<const EventMark*> marks_shown;
+  std::vector<Rect> marker_boxes;  // numbers keep clear of them
+  const double reach = style.px(5.0);
   for (EventKind kind : {EventKind::limiter, EventKind::collision, EventKind::chatter}) {
     const EventMark* mark = event_mark(kind);
     std::vector<Point> centres;
     for (const Jump& j : jumps)
       if (j.mark == mark) centres.push_back(tr.to_pixel(j.before.x, j.before.y));
     if (centres.empty()) continue;
+    for (const Point& c : centres) marker_boxes.push_back({c.x - reach, c.y - reach, 2 * reach, 2 * reach});
     draw_event_marks(cr, centres, *mark, style);
     marks_shown.push_back(mark);
   }
 
-  if (spec.branch_labels) avoid.boxes = draw_branch_numbers(cr, branches, area, style);
+  if (spec.branch_labels) {
+    std::vector<NumberedLine> lines;
+    for (const VisibleBranch& b : branches) lines.push_back({b.index, b.pixels, b.labelled});
+    avoid.boxes = draw_branch_numbers(cr, lines, area, style, marker_boxes);
+  }
   const auto limiter_boxes = draw_limiter_labels(cr, tr, limiters, Orientation::vertical, style);
   avoid.boxes.insert(avoid.boxes.end(), limiter_boxes.begin(), limiter_boxes.end());
   cairo_restore(cr);
