@@ -12,6 +12,8 @@
 #include "render/layout.h"
 #include "render/panel.h"
 #include "render/png.h"
+#include "render/svg_text.h"
+#include "render/text.h"
 #include "render/track_window.h"
 
 namespace vibro {
@@ -115,12 +117,15 @@ RenderResult render_vector(const FigureSpec& figure, const Model& model, const R
                                                                figure.height));
   // Pixels, not cairo's default points, so that the SVG shows at the size asked for.
   if (format == ImageFormat::svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
+  std::vector<render::PlacedText> texts;
   {
     CairoPtr cr(cairo_create(surface.get()));
     cairo_scale(cr.get(), scale, scale);
+    if (format == ImageFormat::svg) render::collect_text(cr.get(), &texts);
     if (auto e = draw_figure(cr.get(), figure, model, run, data)) return failure(*e);
   }
   cairo_surface_finish(surface.get());
+  if (format == ImageFormat::svg) render::append_to_svg(bytes, render::svg_text_elements(texts));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
     return failure({"", std::string(format == ImageFormat::pdf ? "PDF" : "SVG") + " output failed: " +
                             cairo_status_to_string(cairo_surface_status(surface.get()))});

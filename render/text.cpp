@@ -32,7 +32,17 @@ Point origin_offset(cairo_t* cr, const std::string& text, TextAlign align) {
   return {dx, dy};
 }
 
+const cairo_user_data_key_t kSinkKey{};
+
+std::vector<PlacedText>* sink_of(cairo_t* cr) {
+  return static_cast<std::vector<PlacedText>*>(cairo_get_user_data(cr, &kSinkKey));
+}
+
 }  // namespace
+
+void collect_text(cairo_t* cr, std::vector<PlacedText>* sink) {
+  cairo_set_user_data(cr, &kSinkKey, sink, nullptr);
+}
 
 void set_font(cairo_t* cr, double size_px) {
   cairo_select_font_face(cr, kFontFamily, CAIRO_FONT_SLANT_NORMAL, CAIRO_FONT_WEIGHT_NORMAL);
@@ -54,6 +64,15 @@ Rect text_box(cairo_t* cr, const std::string& text, Point at, TextAlign align) {
 void draw_text(cairo_t* cr, const std::string& text, Point at, TextAlign align, Colour colour,
                double angle) {
   const Point o = origin_offset(cr, text, align);
+  if (auto* sink = sink_of(cr)) {
+    double x = at.x, y = at.y, unit = 1.0, zero = 0.0;
+    cairo_user_to_device(cr, &x, &y);
+    cairo_user_to_device_distance(cr, &unit, &zero);
+    cairo_matrix_t font;
+    cairo_get_font_matrix(cr, &font);
+    sink->push_back({text, {x, y}, o.y * unit, align.h, font.xx * unit, colour, angle});
+    return;
+  }
   set_colour(cr, colour);
   if (angle == 0.0) {
     cairo_move_to(cr, at.x + o.x, at.y + o.y);

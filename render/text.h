@@ -1,10 +1,12 @@
 // Text with the cairo "toy" API in DejaVu Sans (no pango): anchored placement and measuring.
-// In SVG, cairo writes each distinct glyph once as an outline and reuses it.
+// An SVG figure keeps its labels as text: they are collected here instead of drawn (cairo's SVG
+// surface would write glyph outlines) and written as <text> elements (render/svg_text.h).
 #pragma once
 
 #include <cairo.h>
 
 #include <string>
+#include <vector>
 
 #include "render/geometry.h"
 #include "render/style.h"
@@ -31,11 +33,26 @@ void draw_text(cairo_t* cr, const std::string& text, Point at, TextAlign align, 
                double angle = 0.0);
 
 // Draws text over a translucent white box `pad_px` larger than it, so that it stays readable
-// over grid and guide lines. A box, not an outline halo: in SVG the text then stays a reference
-// to a shared glyph, where an outlined halo would write every glyph's outline twice.
+// over grid and guide lines. A box, not an outline halo: in SVG the text then stays one <text>
+// element.
 void draw_text_on_backdrop(cairo_t* cr, const std::string& text, Point at, TextAlign align,
                            Colour colour, double pad_px);
 
 void set_colour(cairo_t* cr, Colour c);
+
+// A label as it was to be drawn: in device units, anchored at `at` (the horizontal anchor at
+// at.x, the baseline at at.y + baseline), rotated by `angle` about `at`.
+struct PlacedText {
+  std::string text;
+  Point at;
+  double baseline = 0.0;
+  HAlign h = HAlign::left;
+  double size_px = 12.0;
+  Colour colour;
+  double angle = 0.0;
+};
+
+// While a sink is set on cr, draw_text records into it instead of drawing; null unsets it.
+void collect_text(cairo_t* cr, std::vector<PlacedText>* sink);
 
 }  // namespace vibro::render

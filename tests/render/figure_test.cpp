@@ -309,6 +309,25 @@ TEST(RealRun, AScenesAxisLimitsAndWrapHold) {
   EXPECT_NEAR(r2, 0.5 + 0.3 / (2.0 * M_PI), 0.01);
 }
 
+// API.md "Exports": in SVG the labels stay text, as <text> elements a reader can search and
+// select, not glyph outlines; the XML stays well formed with '<' and '&' in a title.
+TEST(RealRun, SvgKeepsItsLabelsAsText) {
+  const Model model = testing::paper_model();
+  const RunResult run = simulate(model, testing::paper_options());
+  FigureSpec figure = one_plot(PlotSpec{});
+  figure.plots.push_back(time_plot({0, 1}));
+  figure.plots[1].title = "φ(t) < 2π & more";
+  const RenderResult svg = render_figure(figure, model, run, ImageFormat::svg);
+  ASSERT_TRUE(svg.ok());
+  const std::string text(svg.bytes.begin(), svg.bytes.end());
+  EXPECT_EQ(testing::xml_balance_error(text), "");
+  EXPECT_EQ(text.find("<symbol"), std::string::npos);  // no glyph outlines
+  for (const char* label : {">Phase portrait, pellet 1<", ">φ [rad]<", ">limiter 1 (mobile)<",
+                            ">(a)<", ">φ(t) &lt; 2π &amp; more<", ">3π/2<"})
+    EXPECT_NE(text.find(label), std::string::npos) << label;
+  EXPECT_LT(text.rfind("<text"), text.rfind("</svg>"));
+}
+
 TEST(RealRun, CylinderPanelCompositesIntoPng) {
   if (!cylinder_panels_available()) GTEST_SKIP() << "built without render/gl";
   const Model model = testing::synthetic_model();
