@@ -2,7 +2,6 @@
 // first-integral overlay, branches, velocity jumps and impacts, labels, frame, legend.
 #include <algorithm>
 #include <cmath>
-#include <optional>
 
 #include "core/first_integral.h"
 #include "render/axes.h"
