@@ -22,6 +22,10 @@ double body_mass(const Model& model, const Body& body);
 // Free acceleration of a body at rest at phi: forcing and gravity, no friction.
 double body_free_acceleration(const Model& model, const Body& body, double t, double phi);
 
+// The longest step an integrator may take on this model, s: a third of the slowest swing's
+// period or of a forcing's period.
+double longest_step(const Model& model);
+
 // The acceleration of a sliding body under the model's friction law, with the model's constants
 // computed once: the right-hand side calls it for every body at every evaluation.
 struct SlidingLaw {
@@ -57,6 +61,7 @@ class SegmentDynamics final : public OdeSystem {
   // Sets a body's side of the normal force's zero (±1): one starting on the zero takes the side
   // it moves to.
   void set_normal_side(int body, int side) { normal_side_[body] = side; }
+  int normal_side(int body) const { return normal_side_[body]; }
   int dimension() const override { return 3 * model_.size(); }
   void rhs(double t, const Vec& y, Vec& dydt) const override;
   void jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) const override;

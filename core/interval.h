@@ -28,7 +28,7 @@ class MotionInterval {
 
   const std::vector<Body>& bodies() const { return bodies_; }
   const std::vector<Watch>& watches() const { return watches_; }
-  const OdeSystem& dynamics() const { return dynamics_; }
+  const SegmentDynamics& dynamics() const { return dynamics_; }
 
   // Everything rests and nothing can pull it away: the rest of the run is known.
   bool at_rest_for_good() const { return !anything_moves_ && !forced_rest_; }

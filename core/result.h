@@ -7,6 +7,8 @@
 #include <string_view>
 #include <vector>
 
+#include "core/motion.h"
+
 namespace vibro {
 
 enum class EventKind { limiter, collision, reversal, stick, release, chatter };
@@ -130,6 +132,20 @@ struct StateAt {
   std::vector<FinalState> pellets;
 };
 
+// The hybrid path of a run, one instant and the motion interval it opens at a time, with the
+// bodies and modes the interval followed: what the variational equations (core/monodromy.h)
+// replay. Kept only when SimOptions::keep_path asks.
+struct PathSegment {
+  double t = 0.0;                   // the instant (0 for the run's start)
+  std::vector<Body> bodies_before;  // the bodies that reached it
+  std::vector<double> y_before;     // the state there, snapped onto its events (3 per pellet)
+  std::vector<Event> events;        // what happened at it, in order
+  std::vector<Body> bodies;         // the interval's bodies and modes
+  std::vector<int> normal_sides;    // per body: the side of the bilateral law's normal force
+  std::vector<double> y;            // the interval's start: the state after the instant
+  double t_end = 0.0;               // the interval's end: the next instant, or the run's end
+};
+
 struct RunResult {
   std::vector<Event> events;
   std::vector<StateAt> stops;  // those reached, in order
@@ -139,6 +155,7 @@ struct RunResult {
   std::vector<Warning> warnings;
   // The earliest near miss (core/watch.h): the trust ends before it.
   std::optional<Graze> graze;
+  std::vector<PathSegment> path;  // SimOptions::keep_path
 };
 
 }  // namespace vibro

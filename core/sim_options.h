@@ -37,6 +37,8 @@ struct SimOptions {
   // Events before this time are not kept (a sweep's transient): a long run's memory is then its
   // record's. They count in no limit and no summary; the trust check compares the kept ones.
   double keep_events_from = -std::numeric_limits<double>::infinity();
+  // Keep the run's hybrid path (RunResult::path): what the variational equations replay.
+  bool keep_path = false;
 };
 
 // Limits on what validate() accepts; a server tightens them.

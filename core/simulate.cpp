@@ -22,18 +22,6 @@
 namespace vibro {
 namespace {
 
-// No step spans more than a third of the slowest swing's period or of a forcing's period:
-// 2·sqrt(R/g) and 2/Ω. Longer steps leave the range where the embedded error estimates hold.
-// DOP853 took the whole 65 ms of a swing of 1e-6 rad (ωh = 2.75) in one step on an estimate of
-// 0.03 of the tolerance and put the collision 7.6e-5 s off at rtol 1e-6 and 1e-7 alike (trust
-// scan, seed 4, scene 706).
-double longest_step(const Model& model) {
-  double h = 2.0 * std::sqrt(model.R / model.g);
-  for (const Pellet& p : model.pellets)
-    if (p.force.active() && p.force.Omega > 0.0) h = std::min(h, 2.0 / p.force.Omega);
-  return h;
-}
-
 using Clock = std::chrono::steady_clock;
 
 Vec initial_state(const Model& model) {
@@ -105,7 +93,10 @@ class Simulation {
   bool stopped_ = false;
   std::size_t next_stop_ = 0;  // into opt_.stops
   std::vector<StateAt> stops_;
+  std::vector<PathSegment> path_;  // opt_.keep_path
 };
+
+std::vector<double> to_vector(const Vec& y) { return {y.data(), y.data() + y.size()}; }
 
 // The time the next step may not pass: the run's end, or the next stop.
 double Simulation::step_limit() const {
@@ -147,7 +138,16 @@ bool Simulation::over_budget(double t) {
 // Resolves an instant at t and keeps what it reports; returns the next interval's bodies.
 std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
                                       const InstantContacts& contacts) {
+  if (opt_.keep_path) {
+    if (!path_.empty()) path_.back().t_end = t;
+    path_.push_back({t, before, to_vector(y_), {}, {}, {}, {}, t});
+  }
   InstantOutcome out = resolve_instant(model_, tol_, t, before, contacts, y_, armed_);
+  if (opt_.keep_path) {
+    path_.back().events = out.events;
+    path_.back().bodies = out.bodies;
+    path_.back().y = to_vector(y_);
+  }
   for (Event& e : out.events) {
     // A chatter that accumulates after the run's end is listed at the end; its t_accumulation
     // says when it would come to rest.
@@ -167,6 +167,13 @@ void Simulation::open_interval(double t, std::vector<Body> bodies) {
   finder_.start(interval_->watches(), model_, interval_->bodies(), t, y_, opt_.rtol, opt_.atol);
   recorder_.sample(t, y_);
   recorder_.check_normal_force(t, y_, interval_->bodies());
+  if (opt_.keep_path) {
+    PathSegment& p = path_.back();
+    p.bodies = interval_->bodies();
+    p.normal_sides.clear();
+    for (std::size_t b = 0; b < p.bodies.size(); ++b)
+      p.normal_sides.push_back(interval_->dynamics().normal_side(static_cast<int>(b)));
+  }
 }
 
 // A root found on a dense output of lower order than the steps (Radau IIA's collocation
@@ -297,6 +304,8 @@ RunResult Simulation::run() {
   result.events = std::move(events_);
   result.stops = std::move(stops_);
   result.graze = finder_.first_graze();
+  if (!path_.empty()) path_.back().t_end = std::min(t, opt_.t_end);
+  result.path = std::move(path_);
 
   const StepperStats& s = stepper_->stats();
   Stats& st = result.stats;

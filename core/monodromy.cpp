@@ -1,0 +1,242 @@
+#include "core/monodromy.h"
+
+#include <cmath>
+#include <memory>
+#include <set>
+
+#include "core/dynamics.h"
+#include "core/motion.h"
+#include "core/stepper.h"
+
+namespace vibro {
+namespace {
+
+int angle_row(int pellet) { return 2 * pellet; }
+int speed_row(int pellet) { return 2 * pellet + 1; }
+
+Vec full_state(const std::vector<double>& y) {
+  return Eigen::Map<const Vec>(y.data(), static_cast<Eigen::Index>(y.size()));
+}
+
+// The bodies' dynamics with the normal sides an interval had (empty: as the state gives them).
+SegmentDynamics dynamics_of(const Model& model, const std::vector<Body>& bodies,
+                            const std::vector<int>& sides, const Vec& y) {
+  SegmentDynamics d(model, bodies, y);
+  for (std::size_t b = 0; b < sides.size(); ++b) d.set_normal_side(static_cast<int>(b), sides[b]);
+  return d;
+}
+
+// The rate of (phi, dphi) of every pellet.
+Vec reduced_rate(const SegmentDynamics& d, int pellets, double t, const Vec& y) {
+  Vec full(3 * pellets), out(2 * pellets);
+  d.rhs(t, y, full);
+  for (int i = 0; i < pellets; ++i) {
+    out[angle_row(i)] = full[phi_index(i)];
+    out[speed_row(i)] = full[dphi_index(i)];
+  }
+  return out;
+}
+
+// The variational equations of one interval: the motion (3 components per pellet) followed by
+// the 2N × 2N transition matrix Φ of (phi, dphi), column by column, with Φ' = (∂f/∂y) Φ. The
+// work components do not act back on the motion, so they are left out of Φ.
+class Variational final : public OdeSystem {
+ public:
+  Variational(const SegmentDynamics& dynamics, int pellets)
+      : d_(dynamics), n_(pellets), full_(3 * pellets), rate_(3 * pellets),
+        jac_(3 * pellets, 3 * pellets), dfdt_(3 * pellets), reduced_(2 * pellets, 2 * pellets) {}
+  int dimension() const override { return 3 * n_ + 4 * n_ * n_; }
+  void rhs(double t, const Vec& z, Vec& dzdt) const override {
+    full_ = z.head(3 * n_);
+    d_.rhs(t, full_, rate_);
+    dzdt.head(3 * n_) = rate_;
+    d_.jacobian(t, full_, jac_, dfdt_);
+    for (int r = 0; r < 2 * n_; ++r)
+      for (int c = 0; c < 2 * n_; ++c) reduced_(r, c) = jac_(motion_index(r), motion_index(c));
+    const int m = 2 * n_;
+    Eigen::Map<const Mat> phi(z.data() + 3 * n_, m, m);
+    Eigen::Map<Mat> dphi(dzdt.data() + 3 * n_, m, m);
+    dphi.noalias() = reduced_ * phi;
+  }
+  // Only implicit methods ask for it, and the transitions are integrated explicitly: central
+  // differences of rhs serve.
+  void jacobian(double t, const Vec& z, Mat& dfdz, Vec& dfdt) const override {
+    Vec zp = z, zm = z, fp(z.size()), fm(z.size());
+    for (Eigen::Index k = 0; k < z.size(); ++k) {
+      const double h = 1e-7 * (1.0 + std::abs(z[k]));
+      zp[k] = z[k] + h;
+      zm[k] = z[k] - h;
+      rhs(t, zp, fp);
+      rhs(t, zm, fm);
+      dfdz.col(k) = (fp - fm) / (2.0 * h);
+      zp[k] = zm[k] = z[k];
+    }
+    const double h = 1e-7 * (1.0 + std::abs(t));
+    rhs(t + h, z, fp);
+    rhs(t - h, z, fm);
+    dfdt = (fp - fm) / (2.0 * h);
+  }
+
+ private:
+  static int motion_index(int reduced) { return 3 * (reduced / 2) + reduced % 2; }
+  const SegmentDynamics& d_;
+  const int n_;
+  mutable Vec full_, rate_;
+  mutable Mat jac_;
+  mutable Vec dfdt_;
+  mutable Mat reduced_;
+};
+
+const Body* body_of(const std::vector<Body>& bodies, int pellet) {
+  for (const Body& b : bodies)
+    for (int i : b.members)
+      if (i == pellet) return &b;
+  return nullptr;
+}
+
+// A saltation's event: the surface h(y, t) = 0 it lies on (its gradient in the reduced state and
+// its rate in time) and the reset G it applies there, acting on these pellets only.
+struct Crossed {
+  Vec grad;
+  double h_t = 0.0;
+  Mat reset;
+  std::vector<int> pellets;
+};
+
+// The release threshold of a stuck pellet, mu_s·(g/R)·|cos phi| − |a_free(t, phi)|.
+void release_surface(const Model& model, int i, double t, double phi, Crossed& c) {
+  const double gR = model.g / model.R;
+  const Forcing& f = model.pellets[i].force;
+  const double a = free_acceleration(model, i, t, phi);
+  const double sa = a >= 0.0 ? 1.0 : -1.0;
+  const double sc = std::cos(phi) >= 0.0 ? 1.0 : -1.0;
+  c.grad[angle_row(i)] = -model.mu_static() * gR * std::sin(phi) * sc + sa * gR * std::cos(phi);
+  c.h_t = -sa * f.rate(t) / (model.pellets[i].m * model.R);
+}
+
+}  // namespace
+
+PathJacobian instant_saltation(const Model& model, const PathSegment& segment,
+                               const std::vector<int>& sides_before) {
+  const int n = model.size();
+  PathJacobian out;
+  for (const auto* bodies : {&segment.bodies_before, &segment.bodies})
+    for (const Body& b : *bodies)
+      if (b.members.size() > 1) {
+        out.unsupported = "pellets moving together (at t = " + std::to_string(segment.t) + " s)";
+        return out;
+      }
+  const Vec y_before = full_state(segment.y_before), y_after = full_state(segment.y);
+  const Vec f_before = reduced_rate(dynamics_of(model, segment.bodies_before, sides_before, y_before),
+                                    n, segment.t, y_before);
+  const Vec f_after = reduced_rate(dynamics_of(model, segment.bodies, segment.normal_sides, y_after),
+                                   n, segment.t, y_after);
+  Mat S = Mat::Identity(2 * n, 2 * n);
+  std::set<int> seen;
+  for (const Event& e : segment.events) {
+    // A chatter sums the impacts after the one listed with it: the pellet ends at rest, which
+    // the rule for resting pellets below gives.
+    if (e.kind == EventKind::chatter) continue;
+    Crossed c{Vec::Zero(2 * n), 0.0, Mat::Identity(2 * n, 2 * n), e.pellets};
+    for (int i : e.pellets)
+      if (!seen.insert(i).second) {
+        out.unsupported = "several events of pellet " + std::to_string(i + 1) + " at one instant (t = " +
+                          std::to_string(segment.t) + " s)";
+        return out;
+      }
+    const int i = e.pellets.front();
+    switch (e.kind) {
+      case EventKind::limiter:
+        c.grad[angle_row(i)] = 1.0;
+        c.reset(speed_row(i), speed_row(i)) = -model.limiters[e.limiter].k;
+        break;
+      case EventKind::collision: {
+        const int j = e.pellets[1];
+        const double mi = model.pellets[i].m, mj = model.pellets[j].m, k = model.k_c;
+        c.grad[angle_row(j)] = 1.0;
+        c.grad[angle_row(i)] = -1.0;
+        c.reset(speed_row(i), speed_row(i)) = (mi - k * mj) / (mi + mj);
+        c.reset(speed_row(i), speed_row(j)) = mj * (1.0 + k) / (mi + mj);
+        c.reset(speed_row(j), speed_row(j)) = (mj - k * mi) / (mi + mj);
+        c.reset(speed_row(j), speed_row(i)) = mi * (1.0 + k) / (mi + mj);
+        break;
+      }
+      case EventKind::reversal:
+      case EventKind::stick:
+        c.grad[speed_row(i)] = 1.0;
+        break;
+      case EventKind::release: {
+        const Body* held = body_of(segment.bodies_before, i);
+        // At rest on a limiter its place is fixed, and so the release time: nothing to move.
+        if (held && held->mode == Mode::resting) continue;
+        release_surface(model, i, segment.t, y_before[phi_index(i)], c);
+        break;
+      }
+      case EventKind::chatter:
+        break;
+    }
+    // S_e = G + (f⁺ − G f⁻) ∇hᵀ / (∇h·f⁻ + h_t) on the event's pellets' rows.
+    const Vec jump = f_after - c.reset * f_before;
+    const double approach = c.grad.dot(f_before) + c.h_t;
+    Mat Se = Mat::Identity(2 * n, 2 * n);
+    for (int p : c.pellets)
+      for (int r : {angle_row(p), speed_row(p)})
+        Se.row(r) = c.reset.row(r) + jump[r] / approach * c.grad.transpose();
+    S = Se * S;
+  }
+  // Held pellets: a stuck one keeps dphi = 0 and a resting one its place on the limiter,
+  // whatever the perturbation that brought them there.
+  for (const Body& b : segment.bodies) {
+    if (b.mode == Mode::sliding) continue;
+    const int i = b.leader();
+    S.row(speed_row(i)).setZero();
+    if (b.mode == Mode::resting) S.row(angle_row(i)).setZero();
+  }
+  out.matrix = std::move(S);
+  return out;
+}
+
+PathJacobian interval_transition(const Model& model, const PathSegment& segment, double rtol) {
+  const int n = model.size();
+  PathJacobian out;
+  out.matrix = Mat::Identity(2 * n, 2 * n);
+  if (!(segment.t_end > segment.t)) return out;
+  const Vec y = full_state(segment.y);
+  const SegmentDynamics d = dynamics_of(model, segment.bodies, segment.normal_sides, y);
+  const Variational sys(d, n);
+  Vec z(sys.dimension());
+  z.head(3 * n) = y;
+  Eigen::Map<Mat>(z.data() + 3 * n, 2 * n, 2 * n).setIdentity();
+  std::unique_ptr<Stepper> stepper =
+      make_stepper(Method::dop853, StepperOptions{rtol, 1e-3 * rtol, longest_step(model)});
+  stepper->start(sys, segment.t, z);
+  while (stepper->t() < segment.t_end) {
+    if (stepper->step(segment.t_end) != StepStatus::ok) {
+      out.unsupported = "the variational equations failed to integrate at t = " +
+                        std::to_string(stepper->t()) + " s";
+      return out;
+    }
+  }
+  out.matrix = Eigen::Map<const Mat>(stepper->y().data() + 3 * n, 2 * n, 2 * n);
+  return out;
+}
+
+PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol) {
+  const int n = model.size();
+  PathJacobian out;
+  Mat M = Mat::Identity(2 * n, 2 * n);
+  const std::vector<int> none;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const PathSegment& segment = path[k];
+    for (const PathJacobian& step :
+         {instant_saltation(model, segment, k == 0 ? none : path[k - 1].normal_sides),
+          interval_transition(model, segment, rtol)}) {
+      if (!step.unsupported.empty()) return step;
+      M = step.matrix * M;
+    }
+  }
+  out.matrix = std::move(M);
+  return out;
+}
+
+}  // namespace vibro

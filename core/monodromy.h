@@ -1,0 +1,39 @@
+// The derivative of a run's final state with respect to its initial state, exactly: the
+// variational equations integrated along each motion interval of the run's hybrid path, and at
+// every event instant the saltation (discontinuity) matrix of its events. Of a run over whole
+// forcing periods this is the Jacobian of the stroboscopic map, the monodromy matrix whose
+// eigenvalues are the Floquet multipliers (docs/ORBITS.md).
+#pragma once
+
+#include <string>
+#include <vector>
+
+#include "core/model.h"
+#include "core/ode.h"
+#include "core/result.h"
+
+namespace vibro {
+
+// States here are reduced to (phi, dphi) per pellet: component 2i is pellet i's angle, 2i + 1
+// its speed.
+struct PathJacobian {
+  Mat matrix;  // 2N × 2N
+  // Non-empty when the path holds what this does not differentiate (pellets moving together),
+  // naming it; the matrix is then not set.
+  std::string unsupported;
+};
+
+// The saltation matrix of one instant: perturbations of the state reaching it, to those of the
+// state leaving it. `sides_before` are the normal sides of the interval that reached it (empty:
+// from the state).
+PathJacobian instant_saltation(const Model& model, const PathSegment& segment,
+                               const std::vector<int>& sides_before);
+
+// The state transition matrix of the motion interval a segment opens, from its start to its end,
+// integrated with DOP853 at rtol.
+PathJacobian interval_transition(const Model& model, const PathSegment& segment, double rtol);
+
+// The whole path's: transitions and saltations in turn.
+PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol);
+
+}  // namespace vibro

@@ -1,0 +1,228 @@
+// Periodic motions (core/periodic_orbit.h, core/monodromy.h): the exact Jacobian of the map
+// against central differences of plain runs, across every kind of event; period-1 and period-2
+// motions of the impact oscillator found, stable and unstable, and reached by long runs; bad
+// requests refused with the field named.
+#include <gtest/gtest.h>
+
+#include <Eigen/Eigenvalues>
+
+#include <cmath>
+#include <complex>
+#include <map>
+#include <string>
+
+#include "core/monodromy.h"
+#include "core/periodic_orbit.h"
+#include "core/simulate.h"
+
+namespace vibro {
+namespace {
+
+// A forced pendulum striking a stop at the bottom (k = 0.8): the impact oscillator.
+Model impact_oscillator(double Omega) {
+  Model m;
+  m.R = 0.5;
+  m.pellets = {{0.1, 0.1, 0.0, {0.3, Omega, 0.0}}};
+  m.limiters = {{0.0, 0.8, false, -1, {}}};
+  return m;
+}
+
+SimOptions tight() {
+  SimOptions o;
+  o.rtol = 1e-12;
+  o.atol = 1e-15;
+  o.check = false;
+  return o;
+}
+
+Vec start_of(const Model& m) {
+  Vec x(2 * m.size());
+  for (int i = 0; i < m.size(); ++i) x.segment(2 * i, 2) << m.pellets[i].phi0, m.pellets[i].dphi0;
+  return x;
+}
+
+// The state after t_end from x, by a plain run: the reference the Jacobian is differenced from.
+Vec end_state(Model m, const Vec& x, double t_end) {
+  for (int i = 0; i < m.size(); ++i) {
+    m.pellets[i].phi0 = x[2 * i];
+    m.pellets[i].dphi0 = x[2 * i + 1];
+  }
+  SimOptions o = tight();
+  o.t_end = t_end;
+  const RunResult r = simulate(m, o);
+  EXPECT_EQ(r.stats.termination, Termination::completed);
+  Vec y(2 * m.size());
+  for (int i = 0; i < m.size(); ++i) y.segment(2 * i, 2) << r.summary.final[i].phi, r.summary.final[i].dphi;
+  return y;
+}
+
+Mat central_differences(const Model& m, const Vec& x, double t_end, double h = 1e-5) {
+  Mat J(x.size(), x.size());
+  for (Eigen::Index k = 0; k < x.size(); ++k) {
+    Vec xp = x, xm = x;
+    xp[k] += h;
+    xm[k] -= h;
+    J.col(k) = (end_state(m, xp, t_end) - end_state(m, xm, t_end)) / (2.0 * h);
+  }
+  return J;
+}
+
+std::map<EventKind, int> kinds(const std::vector<Event>& events) {
+  std::map<EventKind, int> k;
+  for (const Event& e : events) ++k[e.kind];
+  return k;
+}
+
+// The map's Jacobian over two forcing periods from the scene's start, exact and differenced.
+void expect_jacobian_matches_differences(const Model& m, std::vector<EventKind> must_see) {
+  const MapPoint p = stroboscopic_map(m, tight(), 2, start_of(m));
+  ASSERT_TRUE(p.ok) << p.run.stats.message;
+  ASSERT_TRUE(p.exact) << p.jacobian_note;
+  const std::map<EventKind, int> seen = kinds(p.run.events);
+  for (EventKind k : must_see) EXPECT_TRUE(seen.count(k)) << event_kind_name(k) << " not in the run";
+  const Mat fd = central_differences(m, start_of(m), 2 * forcing_period(m));
+  const double scale = std::max(1.0, fd.cwiseAbs().maxCoeff());
+  EXPECT_LT((p.jacobian - fd).cwiseAbs().maxCoeff(), 1e-5 * scale)
+      << "exact\n" << p.jacobian << "\ndifferenced\n" << fd;
+}
+
+TEST(MapJacobian, LimiterImpactsMatchDifferences) {
+  expect_jacobian_matches_differences(impact_oscillator(5.0), {EventKind::limiter});
+}
+
+TEST(MapJacobian, StickAndReleaseMatchDifferences) {
+  Model m;
+  m.alpha0 = 0.3;
+  m.pellets = {{0.1, 0.2, 0.0, {0.25, 3.0, 0.0}}};
+  m.limiters = {{1.0, 0.7, false, -1, {}}, {-1.0, 0.7, false, -1, {}}};
+  expect_jacobian_matches_differences(m, {EventKind::stick, EventKind::release});
+}
+
+TEST(MapJacobian, CollisionsReversalsAndFrictionMatchDifferences) {
+  Model m;
+  m.alpha0 = 0.05;
+  m.k_c = 0.7;
+  m.pellets = {{0.2, 0.3, 2.0, {1.0, 4.0, 0.3}}, {0.3, -0.3, 0.5, {}}};
+  m.limiters = {{M_PI / 4, 0.6, false, -1, {}}, {-M_PI / 4, 0.6, false, -1, {}}};
+  expect_jacobian_matches_differences(
+      m, {EventKind::collision, EventKind::reversal, EventKind::limiter});
+}
+
+TEST(MapJacobian, ChatterToRestAndReleaseMatchDifferences) {
+  Model m;
+  m.alpha0 = 0.1;
+  m.pellets = {{0.1, 0.3, 1.0, {0.6, 2.0, 0.0}}};
+  m.limiters = {{0.0, 0.5, false, -1, {}}};
+  expect_jacobian_matches_differences(m, {EventKind::chatter, EventKind::release});
+}
+
+TEST(MapJacobian, BilateralNormalForceZerosMatchDifferences) {
+  Model m;
+  m.alpha0 = 0.1;
+  m.friction = FrictionLaw::bilateral;
+  m.pellets = {{0.1, 0.0, 12.0, {0.5, 3.0, 0.0}}};
+  expect_jacobian_matches_differences(m, {EventKind::reversal});
+}
+
+OrbitSpec from_guess(double phi, double dphi, int periods = 1) {
+  OrbitSpec s;
+  s.periods = periods;
+  s.guess = {{phi, dphi}};
+  return s;
+}
+
+TEST(PeriodicOrbit, FoundFromANearbyGuessIsWhereALongRunSettles) {
+  const Model m = impact_oscillator(6.0);
+  const PeriodicOrbit orbit = find_periodic_orbit(m, tight(), from_guess(0.15, 0.1));
+  ASSERT_TRUE(orbit.converged) << orbit.message;
+  EXPECT_TRUE(orbit.admissible) << orbit.message;
+  EXPECT_TRUE(orbit.stable);
+  EXPECT_GT(orbit.iterations, 1);
+  EXPECT_LT(orbit.residual, 1e-9);
+  EXPECT_EQ(orbit.impacts_per_period, 1.0);
+  // The run from the scene's own start settles onto it: after 400 periods it is on the orbit.
+  SimOptions o = tight();
+  o.t_end = 400 * forcing_period(m);
+  const RunResult settled = simulate(m, o);
+  EXPECT_NEAR(wrap_angle(settled.summary.final[0].phi - orbit.state[0].phi), 0.0, 1e-8);
+  EXPECT_NEAR(settled.summary.final[0].dphi, orbit.state[0].dphi, 1e-8);
+}
+
+TEST(PeriodicOrbit, MultipliersMatchThoseOfTheDifferencedMap) {
+  const Model m = impact_oscillator(6.0);
+  const PeriodicOrbit orbit = find_periodic_orbit(m, tight(), from_guess(0.15, 0.1));
+  ASSERT_TRUE(orbit.converged) << orbit.message;
+  Vec x(2);
+  x << orbit.state[0].phi, orbit.state[0].dphi;
+  const Eigen::EigenSolver<Mat> fd(central_differences(m, x, forcing_period(m)), false);
+  ASSERT_EQ(orbit.multipliers.size(), 2u);
+  for (const std::complex<double>& mu : orbit.multipliers) {
+    double nearest = INFINITY;
+    for (Eigen::Index k = 0; k < 2; ++k) nearest = std::min(nearest, std::abs(mu - fd.eigenvalues()[k]));
+    EXPECT_LT(nearest, 1e-5) << mu;
+  }
+  // Frictionless between impacts, the flow keeps areas; each impact scales them by k²: the
+  // multipliers' product is k² per period.
+  EXPECT_NEAR(std::abs(orbit.multipliers[0] * orbit.multipliers[1]), 0.64, 1e-8);
+}
+
+// Past the period doubling near Ω = 5.6 rad/s, the period-1 motion lives on, unstable, with a
+// multiplier below −1; beside it the period-2 motion it shed is stable.
+TEST(PeriodicOrbit, UnstableMotionPastAPeriodDoublingAndTheStablePeriodTwoBesideIt) {
+  const Model m = impact_oscillator(5.5);
+  const PeriodicOrbit one = find_periodic_orbit(m, tight(), from_guess(0.12, 0.15));
+  ASSERT_TRUE(one.converged) << one.message;
+  EXPECT_FALSE(one.stable);
+  EXPECT_LT(one.multipliers[0].real(), -1.0);
+  EXPECT_NEAR(one.multipliers[0].imag(), 0.0, 1e-12);
+  // A long run does not stay on it: it settles onto the period-2 motion.
+  OrbitSpec spec;
+  spec.periods = 2;
+  spec.transient = 300;
+  const PeriodicOrbit two = find_periodic_orbit(m, tight(), spec);
+  ASSERT_TRUE(two.converged) << two.message;
+  EXPECT_TRUE(two.stable);
+  EXPECT_TRUE(two.admissible) << two.message;
+  EXPECT_GT(std::abs(wrap_angle(two.state[0].phi - one.state[0].phi)), 1e-3);
+  // Over two periods its state is not the period-1 one: the map of one period moves it.
+  const MapPoint half = stroboscopic_map(m, tight(), 1, Vec::Map(&two.state[0].phi, 2));
+  EXPECT_GT(residual_norm(m, orbit_residual(half)), 1e-3);
+}
+
+TEST(PeriodicOrbit, TwoReturnsOfAPeriodOneMotionSquareItsMultipliers) {
+  const Model m = impact_oscillator(6.5);
+  const PeriodicOrbit one = find_periodic_orbit(m, tight(), from_guess(0.2, 0.2));
+  const PeriodicOrbit two = find_periodic_orbit(m, tight(), from_guess(0.2, 0.2, 2));
+  ASSERT_TRUE(one.converged && two.converged);
+  EXPECT_NEAR(two.state[0].phi, one.state[0].phi, 1e-9);
+  for (const auto& mu : one.multipliers) {
+    double nearest = INFINITY;
+    for (const auto& nu : two.multipliers) nearest = std::min(nearest, std::abs(mu * mu - nu));
+    EXPECT_LT(nearest, 1e-8);
+  }
+}
+
+TEST(PeriodicOrbit, BadRequestsNameTheirField) {
+  Model unforced = impact_oscillator(5.0);
+  unforced.pellets[0].force = {};
+  EXPECT_EQ(validate_orbit(unforced, {})->field, "model.pellets");
+  OrbitSpec zero;
+  zero.periods = 0;
+  EXPECT_EQ(validate_orbit(impact_oscillator(5.0), zero)->field, "periodic_orbit.periods");
+  OrbitSpec two_pellets;
+  two_pellets.guess = {{0.1, 0.0}, {0.2, 0.0}};
+  const auto wrong = validate_orbit(impact_oscillator(5.0), two_pellets);
+  ASSERT_TRUE(wrong);
+  EXPECT_EQ(wrong->field, "periodic_orbit.guess");
+  EXPECT_NE(wrong->message.find("got 2"), std::string::npos);
+  Model incommensurate = impact_oscillator(5.0);
+  incommensurate.pellets.push_back({0.1, 1.0, 0.0, {0.2, 7.3, 0.0}});
+  EXPECT_EQ(validate_orbit(incommensurate, {})->field, "model.pellets[1].Omega");
+  Model mobile = impact_oscillator(5.0);
+  mobile.limiters.push_back({1.0, 0.5, true, 0, {}});
+  EXPECT_EQ(validate_orbit(mobile, {})->field, "model.limiters[1].mobile");
+  EXPECT_FALSE(validate_orbit(impact_oscillator(5.0), {}));
+}
+
+}  // namespace
+}  // namespace vibro
