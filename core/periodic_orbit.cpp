@@ -70,6 +70,13 @@ std::string number(double v) {
 
 }  // namespace
 
+Model at_phase(const Model& model, double theta) {
+  Model m = model;
+  for (Pellet& p : m.pellets)
+    if (p.force.active()) p.force.psi += p.force.Omega * theta;
+  return m;
+}
+
 double forcing_period(const Model& model) {
   for (const Pellet& p : model.pellets)
     if (p.force.active() && p.force.Omega > 0.0) return kTwoPi / p.force.Omega;

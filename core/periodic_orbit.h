@@ -18,11 +18,6 @@
 
 namespace vibro {
 
-struct PhasePoint {
-  double phi = 0.0;   // rad
-  double dphi = 0.0;  // rad/s
-};
-
 struct OrbitSpec {
   int periods = 1;      // forcing periods until the state returns
   int transient = 100;  // periods of the scene's own run that give the starting guess
@@ -35,6 +30,10 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
 
 // The forcing period T of a model whose forces share one, s (the first forced pellet's 2π/Ω).
 double forcing_period(const Model& model);
+
+// The model seen from time theta: every force's phase advanced by Ω·theta, so that its t = 0 is
+// the original's t = theta. A section at another phase of the forcing is a section of it.
+Model at_phase(const Model& model, double theta);
 
 // The stroboscopic map over `periods` forcing periods from x (phi, dphi per pellet), and its
 // Jacobian (unset, with the reason, where the path holds what it does not differentiate).

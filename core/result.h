@@ -26,6 +26,12 @@ struct Event {
   double t_accumulation = 0.0;      // chatter: the accumulation time t* (= t, or past t_end)
 };
 
+// A pellet's place in its phase plane.
+struct PhasePoint {
+  double phi = 0.0;   // rad
+  double dphi = 0.0;  // rad/s
+};
+
 // One point of a phase trajectory.
 struct Sample {
   double t = 0.0;

@@ -7,6 +7,8 @@
 #include <string>
 #include <vector>
 
+#include "core/result.h"
+
 namespace vibro {
 
 enum class PlotKind {
@@ -27,11 +29,6 @@ inline bool draws_sweep(PlotKind kind) {
 
 // The section coordinate a bifurcation diagram draws against the parameter.
 enum class SectionCoordinate { dphi, phi };
-
-struct PhasePoint {
-  double phi = 0.0;
-  double dphi = 0.0;
-};
 
 struct Camera {
   double azimuth_deg = 35.0;

@@ -12,6 +12,7 @@
 #include <string>
 
 #include "core/monodromy.h"
+#include "core/orbit_continuation.h"
 #include "core/periodic_orbit.h"
 #include "core/simulate.h"
 
@@ -222,6 +223,133 @@ TEST(PeriodicOrbit, BadRequestsNameTheirField) {
   mobile.limiters.push_back({1.0, 0.5, true, 0, {}});
   EXPECT_EQ(validate_orbit(mobile, {})->field, "model.limiters[1].mobile");
   EXPECT_FALSE(validate_orbit(impact_oscillator(5.0), {}));
+}
+
+}  // namespace
+}  // namespace vibro
+
+namespace vibro {
+namespace {
+
+OrbitBranch follow(double from, double to, double phi, double dphi, int max_points = 400) {
+  const Model m = impact_oscillator(from);
+  const PeriodicOrbit orbit = find_periodic_orbit(m, tight(), from_guess(phi, dphi));
+  EXPECT_TRUE(orbit.converged) << orbit.message;
+  const ContinuationSpec spec{"model.pellets[0].Omega", to, max_points};
+  EXPECT_FALSE(validate_continuation(m, spec));
+  return continue_orbit(m, tight(), orbit, spec);
+}
+
+std::vector<Bifurcation> of_kind(const OrbitBranch& b, BifurcationKind kind) {
+  std::vector<Bifurcation> out;
+  for (const Bifurcation& x : b.bifurcations)
+    if (x.kind == kind) out.push_back(x);
+  return out;
+}
+
+// The largest multiplier of the period-1 motion near `state` at this Ω, found afresh.
+std::complex<double> leading_multiplier(double Omega, const std::vector<PhasePoint>& state) {
+  const PeriodicOrbit o = find_periodic_orbit(impact_oscillator(Omega), tight(),
+                                              from_guess(state[0].phi, state[0].dphi));
+  EXPECT_TRUE(o.converged) << o.message;
+  return o.multipliers.front();
+}
+
+TEST(OrbitContinuation, LocatesThePeriodDoublingWhereAMultiplierPassesMinusOne) {
+  const OrbitBranch b = follow(6.0, 5.0, 0.15, 0.1);
+  ASSERT_TRUE(b.reached) << b.message;
+  const auto pd = of_kind(b, BifurcationKind::period_doubling);
+  ASSERT_EQ(pd.size(), 1u);
+  EXPECT_NEAR(pd[0].value, 5.557, 0.005);
+  // Independently, by Newton's method on either side: stable above, a multiplier below −1 below.
+  const auto above = leading_multiplier(pd[0].value + 1e-3, pd[0].state);
+  const auto below = leading_multiplier(pd[0].value - 1e-3, pd[0].state);
+  EXPECT_LT(std::abs(above), 1.0);
+  EXPECT_LT(below.real(), -1.0);
+  EXPECT_LT(std::abs(below + 1.0), 0.05);
+  // The doubled motion it offers is a stable period-2 motion past the doubling, which one period
+  // does not return.
+  ASSERT_TRUE(pd[0].doubled_value);
+  EXPECT_LT(*pd[0].doubled_value, pd[0].value);
+  const Model past = impact_oscillator(*pd[0].doubled_value);
+  const PeriodicOrbit doubled = find_periodic_orbit(
+      past, tight(), from_guess(pd[0].doubled_state[0].phi, pd[0].doubled_state[0].dphi, 2));
+  ASSERT_TRUE(doubled.converged) << doubled.message;
+  EXPECT_EQ(doubled.iterations, 0);
+  EXPECT_TRUE(doubled.stable);
+  const MapPoint once = stroboscopic_map(past, tight(), 1, Vec::Map(&doubled.state[0].phi, 2));
+  EXPECT_GT(residual_norm(past, orbit_residual(once)), 1e-4);
+  // Stability along the branch follows the multipliers.
+  for (const BranchPoint& p : b.points) EXPECT_EQ(p.stable, p.value > pd[0].value) << p.value;
+}
+
+TEST(OrbitContinuation, PassesAndLocatesTheFoldWhereTheLowMotionEnds) {
+  // The branch goes on to a second fold near 2 rad/s and back up: 30 points see the first.
+  const OrbitBranch b = follow(7.0, 9.0, 0.30, 0.23, 30);
+  EXPECT_FALSE(b.reached);
+  EXPECT_NE(b.message.find("max_points"), std::string::npos) << b.message;
+  const auto folds = of_kind(b, BifurcationKind::fold);
+  ASSERT_GE(folds.size(), 1u);
+  EXPECT_NEAR(folds[0].value, 7.807, 0.005);
+  // A multiplier is +1 there, by the map's Jacobian at the located state.
+  const MapPoint at = stroboscopic_map(impact_oscillator(folds[0].value), tight(), 1,
+                                       Vec::Map(&folds[0].state[0].phi, 2));
+  const Eigen::EigenSolver<Mat> eig(at.jacobian, false);
+  double nearest = INFINITY;
+  for (Eigen::Index k = 0; k < 2; ++k) nearest = std::min(nearest, std::abs(eig.eigenvalues()[k] - 1.0));
+  EXPECT_LT(nearest, 1e-3);
+  // The branch turns back: values below the fold on both its sides, the second unstable.
+  bool turned = false;
+  for (std::size_t k = 1; k < b.points.size(); ++k)
+    if (b.points[k].value < b.points[k - 1].value && b.points[k].value < 7.7) {
+      turned = true;
+      EXPECT_FALSE(b.points[k].stable);
+      break;
+    }
+  EXPECT_TRUE(turned);
+}
+
+TEST(OrbitContinuation, LocatesTheGrazingWhereASecondImpactAppears) {
+  const OrbitBranch b = follow(4.6, 4.3, 0.03, 0.2);
+  ASSERT_TRUE(b.reached) << b.message;
+  const auto grazings = of_kind(b, BifurcationKind::grazing);
+  ASSERT_EQ(grazings.size(), 1u);
+  EXPECT_NEAR(grazings[0].value, 4.4355, 1e-3);
+  for (const BranchPoint& p : b.points)
+    if (std::abs(p.value - grazings[0].value) > 1e-3)
+      EXPECT_EQ(p.impacts_per_period, p.value > grazings[0].value ? 1.0 : 2.0) << p.value;
+}
+
+// Where the branch is stable, a long run from the scene's start settles onto it: the branch and
+// the brute-force diagram agree.
+TEST(OrbitContinuation, StablePartAgreesWithLongRuns) {
+  const OrbitBranch b = follow(6.5, 5.6, 0.2, 0.2);
+  ASSERT_TRUE(b.reached) << b.message;
+  int compared = 0;
+  for (std::size_t k = 0; k < b.points.size(); k += 3) {
+    const BranchPoint& p = b.points[k];
+    ASSERT_TRUE(p.stable) << p.value;
+    const Model m = impact_oscillator(p.value);
+    SimOptions o = tight();
+    o.t_end = 400 * forcing_period(m);
+    const RunResult run = simulate(m, o);
+    EXPECT_NEAR(wrap_angle(run.summary.final[0].phi - p.state[0].phi), 0.0, 1e-6) << p.value;
+    EXPECT_NEAR(run.summary.final[0].dphi, p.state[0].dphi, 1e-6) << p.value;
+    ++compared;
+  }
+  EXPECT_GE(compared, 3);
+}
+
+TEST(OrbitContinuation, BadSpecsNameTheirField) {
+  const Model m = impact_oscillator(5.0);
+  EXPECT_EQ(validate_continuation(m, {"model.pellets[3].Omega", 6.0, 10})->field,
+            "periodic_orbit.continuation.parameter");
+  EXPECT_EQ(validate_continuation(m, {"model.pellets[0].Omega", 5.0, 10})->field,
+            "periodic_orbit.continuation.to");
+  EXPECT_EQ(validate_continuation(m, {"model.pellets[0].F0", 0.0, 10})->field,
+            "periodic_orbit.continuation.to");
+  EXPECT_EQ(validate_continuation(m, {"model.pellets[0].Omega", 6.0, 1})->field,
+            "periodic_orbit.continuation.max_points");
 }
 
 }  // namespace
