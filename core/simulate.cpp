@@ -93,7 +93,8 @@ class Simulation {
   bool stopped_ = false;
   std::size_t next_stop_ = 0;  // into opt_.stops
   std::vector<StateAt> stops_;
-  std::vector<PathSegment> path_;  // opt_.keep_path
+  // opt_.keep_path: the segments that end after opt_.keep_events_from (a sweep's record).
+  std::vector<PathSegment> path_;
 };
 
 std::vector<double> to_vector(const Vec& y) { return {y.data(), y.data() + y.size()}; }
@@ -139,7 +140,10 @@ bool Simulation::over_budget(double t) {
 std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
                                       const InstantContacts& contacts) {
   if (opt_.keep_path) {
-    if (!path_.empty()) path_.back().t_end = t;
+    if (!path_.empty()) {
+      path_.back().t_end = t;
+      if (t < opt_.keep_events_from) path_.pop_back();
+    }
     path_.push_back({t, before, to_vector(y_), {}, {}, {}, {}, t});
   }
   InstantOutcome out = resolve_instant(model_, tol_, t, before, contacts, y_, armed_);

@@ -47,6 +47,8 @@ struct SweepSpec {
   // drawn from `seed` (uniform in ±2·sqrt(g/R)), so that coexisting motions show.
   int initial_states = 1;
   std::uint64_t seed = 1;
+  // The largest Lyapunov exponent of each run over its record (core/lyapunov.h).
+  bool lyapunov = false;
 };
 
 // Why a sweep cannot run, naming the field ("sweep.parameter", "sweep.count", ...), or a model
@@ -84,6 +86,10 @@ struct SweepRun {
   Termination termination = Termination::completed;
   std::string message;    // why the run stopped early
   double error_estimate = 0.0;
+  // 1/s, SweepSpec::lyapunov: the largest Lyapunov exponent over the record; empty when not asked
+  // for, or where the linearisation does not reach (pellets moving together). −infinity: every
+  // perturbation dies (all pellets held).
+  std::optional<double> lyapunov;
 };
 
 struct SweepResult {

@@ -207,6 +207,7 @@ SimOptions check_options(const SimOptions& run) {
   o.record.clear();
   o.stops.clear();
   o.check = false;
+  o.keep_path = false;
   return o;
 }
 

@@ -1,0 +1,109 @@
+// Lyapunov exponents (core/lyapunov.h): on a stable periodic motion they are log|multiplier| per
+// period; in a chaotic window the largest is positive and matches the divergence of two nearby
+// runs; frictionless, their sum is fixed by the impacts alone (each scales areas by k²); a sweep
+// reports the largest per value.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/lyapunov.h"
+#include "core/periodic_orbit.h"
+#include "core/simulate.h"
+#include "core/sweep.h"
+
+namespace vibro {
+namespace {
+
+Model impact_oscillator(double Omega) {
+  Model m;
+  m.R = 0.5;
+  m.pellets = {{0.1, 0.1, 0.0, {0.3, Omega, 0.0}}};
+  m.limiters = {{0.0, 0.8, false, -1, {}}};
+  return m;
+}
+
+SimOptions tight(double t_end) {
+  SimOptions o;
+  o.rtol = 1e-11;
+  o.atol = 1e-14;
+  o.check = false;
+  o.t_end = t_end;
+  return o;
+}
+
+// The spectrum over `periods` after a transient of 100, and the run it came from.
+LyapunovSpectrum spectrum(const Model& m, int periods, RunResult* run = nullptr) {
+  const double T = forcing_period(m);
+  SimOptions o = tight((100 + periods) * T);
+  o.keep_path = true;
+  o.keep_events_from = 100 * T;
+  RunResult r = simulate(m, o);
+  EXPECT_EQ(r.stats.termination, Termination::completed);
+  LyapunovSpectrum L = lyapunov_spectrum(m, r.path, o.rtol, 100 * T);
+  EXPECT_TRUE(L.unsupported.empty()) << L.unsupported;
+  EXPECT_EQ(L.exponents.size(), 2u);
+  if (run) *run = std::move(r);
+  return L;
+}
+
+TEST(Lyapunov, OfAStablePeriodicMotionIsTheLogOfItsMultipliersPerPeriod) {
+  const Model m = impact_oscillator(6.0);
+  OrbitSpec spec;
+  spec.guess = {{0.15, 0.1}};
+  const PeriodicOrbit orbit = find_periodic_orbit(m, tight(1.0), spec);
+  ASSERT_TRUE(orbit.converged) << orbit.message;
+  const double expected = std::log(std::abs(orbit.multipliers.front())) / orbit.period;
+  const LyapunovSpectrum L = spectrum(m, 800);
+  // A complex pair: both exponents tend to it, oscillating about it as 1/time.
+  for (double lambda : L.exponents) EXPECT_NEAR(lambda, expected, 0.01 * std::abs(expected));
+  EXPECT_LT(L.exponents.front(), 0.0);
+}
+
+TEST(Lyapunov, FrictionlessTheirSumIsTheImpactsLossOfArea) {
+  RunResult run;
+  const LyapunovSpectrum L = spectrum(impact_oscillator(3.25), 200, &run);
+  int impacts = 0;
+  for (const Event& e : run.events) impacts += e.kind == EventKind::limiter;
+  EXPECT_NEAR(L.exponents[0] + L.exponents[1], impacts * std::log(0.8 * 0.8) / L.span, 1e-9);
+}
+
+// At Ω = 3.25 rad/s the impact oscillator is chaotic (no period-1 or period-2 motion attracts).
+TEST(Lyapunov, PositiveInAChaoticWindowAsNearbyRunsDiverge) {
+  const Model m = impact_oscillator(3.25);
+  const LyapunovSpectrum L = spectrum(m, 400);
+  EXPECT_GT(L.exponents[0], 0.1);
+  // Independently: two runs 1e-10 rad apart, from a state on the attractor, part at that rate
+  // until their distance nears the attractor's size.
+  const double T = forcing_period(m);
+  const RunResult settled = simulate(m, tight(100 * T));
+  Model a = m;
+  a.pellets[0].phi0 = settled.summary.final[0].phi;
+  a.pellets[0].dphi0 = settled.summary.final[0].dphi;
+  Model b = a;
+  b.pellets[0].phi0 += 1e-10;
+  const double t = 60.0;
+  const RunResult ra = simulate(a, tight(t)), rb = simulate(b, tight(t));
+  const double apart = std::hypot(ra.summary.final[0].phi - rb.summary.final[0].phi,
+                                  (ra.summary.final[0].dphi - rb.summary.final[0].dphi) *
+                                      std::sqrt(m.R / m.g));
+  EXPECT_NEAR(std::log(apart / 1e-10) / t, L.exponents[0], 0.3 * L.exponents[0]);
+}
+
+TEST(Lyapunov, ASweepReportsTheLargestPerValue) {
+  SweepSpec spec;
+  spec.axis = {"model.pellets[0].Omega", 3.25, 6.0, 2};
+  spec.transient = 100;
+  spec.record = 200;
+  spec.lyapunov = true;
+  ASSERT_FALSE(validate_sweep(impact_oscillator(3.25), spec));
+  const SweepResult r = run_sweep(impact_oscillator(3.25), tight(1.0), spec, {});
+  ASSERT_EQ(r.runs.size(), 2u);
+  ASSERT_TRUE(r.runs[0].lyapunov && r.runs[1].lyapunov);
+  EXPECT_GT(*r.runs[0].lyapunov, 0.1);
+  EXPECT_NEAR(*r.runs[1].lyapunov, std::log(0.8) / forcing_period(impact_oscillator(6.0)), 0.01);
+  spec.lyapunov = false;
+  EXPECT_FALSE(run_sweep(impact_oscillator(3.25), tight(1.0), spec, {}).runs[0].lyapunov);
+}
+
+}  // namespace
+}  // namespace vibro
