@@ -73,6 +73,11 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
         else
           render::draw_sweep_points_panel(cr, in);
         break;
+      case PlotKind::branch:
+        if (!data.branch || !data.continuation)
+          return FieldError{"plots[" + std::to_string(i) + "].kind", "needs a continued periodic motion"};
+        render::draw_branch_panel(cr, in);
+        break;
     }
     if (layouts.size() > 1) render::draw_panel_letter(cr, layouts[i].cell, i, style);
   }

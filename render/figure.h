@@ -18,6 +18,7 @@
 #include "core/model.h"
 #include "core/result.h"
 #include "core/validate.h"
+#include "core/orbit_continuation.h"
 #include "core/sweep.h"
 #include "core/work_precision.h"
 #include "render/plot_spec.h"
@@ -52,11 +53,14 @@ std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model&
                                           ImageFormat format);
 
 // What panels that draw more than the run draw: work-precision panels a report, bifurcation
-// panels a sweep and its spec.
+// panels a sweep and its spec, branch panels a continued periodic motion (and a sweep of the same
+// scene beneath it, if given; a bifurcation panel draws a given branch over its points).
 struct PanelData {
   const WorkPrecisionReport* work_precision = nullptr;
   const SweepSpec* sweep_spec = nullptr;
   const SweepResult* sweep = nullptr;
+  const OrbitBranch* branch = nullptr;
+  const ContinuationSpec* continuation = nullptr;
 };
 
 // Validates, then draws every panel. Also errors: a pellet whose track the run did not record,

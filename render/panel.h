@@ -9,8 +9,10 @@
 #include "core/result.h"
 #include "render/figure.h"
 #include "render/layout.h"
+#include "render/legend.h"
 #include "render/plot_spec.h"
 #include "render/style.h"
+#include "render/transform.h"
 
 namespace vibro::render {
 
@@ -36,6 +38,17 @@ void draw_work_precision_panel(cairo_t* cr, const PanelInput& in);
 // (bifurcation), in the (φ, φ̇) plane (section) or against the forcing phase (impact map);
 // continuation forward and backward told apart, runs not trusted hollow.
 void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in);
+
+// The continued branch of a periodic motion over its parameter (stable solid, unstable dashed,
+// bifurcations marked and named), over the sweep's bifurcation diagram when one is given.
+void draw_branch_panel(cairo_t* cr, const PanelInput& in);
+
+// The branch into a plot's transform, with its legend entries and what the legend should not
+// hide; and the range of its section coordinate.
+void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& branch,
+                       const PlotSpec& spec, const Style& style, std::vector<LegendEntry>& legend,
+                       Obstacles& avoid);
+Range branch_range(const OrbitBranch& branch, const PlotSpec& spec);
 
 // A 2-D sweep's cells coloured by the period of the motion, with a legend of periods.
 void draw_regime_map_panel(cairo_t* cr, const PanelInput& in);

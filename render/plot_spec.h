@@ -20,11 +20,17 @@ enum class PlotKind {
   section,         // a sweep's section points of one pellet in the (φ, φ̇) plane
   impact_map,      // a sweep's impacts of one pellet: φ̇ before impact against the forcing phase
   regime_map,      // a 2-D sweep's cells coloured by the period of the motion
+  branch,          // a continued periodic motion against its parameter, stability and bifurcations
 };
 // The plot kinds that draw a sweep rather than a run.
 inline bool draws_sweep(PlotKind kind) {
   return kind == PlotKind::bifurcation || kind == PlotKind::section ||
          kind == PlotKind::impact_map || kind == PlotKind::regime_map;
+}
+
+// The plot kinds that draw the scene's own run (the others draw a report, a sweep or a branch).
+inline bool draws_run(PlotKind kind) {
+  return kind == PlotKind::phase || kind == PlotKind::time || kind == PlotKind::cylinder;
 }
 
 // The section coordinate a bifurcation diagram draws against the parameter.
@@ -58,7 +64,7 @@ struct PlotSpec {
   std::optional<AxisLimits> dphi_range;  // phase, time: the φ̇ axis; default: the data's
   std::string title;              // empty: a default title
   Camera camera;                  // cylinder
-  SectionCoordinate coordinate = SectionCoordinate::dphi;  // bifurcation
+  SectionCoordinate coordinate = SectionCoordinate::dphi;  // bifurcation, branch
 };
 
 struct FigureSpec {

@@ -14,8 +14,8 @@ RunPlan plan_run(const FigureSpec& figure, const SimOptions& base, int pellets) 
   for (const PlotSpec& p : figure.plots) {
     if (p.kind == PlotKind::work_precision) {
       plan.needs_work_precision = true;
-    } else if (draws_sweep(p.kind)) {
-      // Draws a sweep: nothing from the run.
+    } else if (!draws_run(p.kind)) {
+      // Draws a sweep or a branch: nothing from the run.
     } else if (p.kind == PlotKind::time) {
       if (p.pellets.empty()) plan.options.record.assign(pellets, true);
       for (int i : p.pellets)

@@ -16,41 +16,10 @@
 #include "render/markers.h"
 #include "render/layout.h"
 #include "render/panel.h"
+#include "render/parameter_label.h"
 #include "render/text.h"
 
 namespace vibro::render {
-namespace {
-
-// "Ω of pellet 1 [rad/s]" for "model.pellets[0].Omega": the symbol, whose it is, and the unit.
-std::string parameter_label(const std::string& path) {
-  struct Name {
-    const char* field;
-    const char* symbol;
-    const char* unit;
-  };
-  static const Name names[] = {
-      {"F0", "F\u2080", "N"},          {"Omega", "\u03a9", "rad/s"}, {"psi", "\u03c8", "rad"},
-      {"m", "m", "kg"},                {"phi0", "\u03c6\u2080", "rad"},
-      {"dphi0", "\u03c6\u0307\u2080", "rad/s"},
-      {"angle", "angle", "rad"},       {"k", "k", ""},              {"R", "R", "m"},
-      {"g", "g", "m/s\u00b2"},         {"alpha0", "\u03b1\u2080", "rad"},
-      {"k_c", "k_c", ""},              {"mu_s", "\u03bc_s", ""}};
-  const std::size_t dot = path.rfind('.');
-  const std::string field = path.substr(dot + 1);
-  std::string whose;
-  for (const char* list : {"pellets[", "limiters["}) {
-    const std::size_t at = path.find(list);
-    if (at == std::string::npos) continue;
-    const int index = std::atoi(path.c_str() + at + std::string(list).size());
-    whose = std::string(" of ") + (list[0] == 'p' ? "pellet " : "limiter ") + std::to_string(index + 1);
-  }
-  for (const Name& n : names)
-    if (field == n.field)
-      return std::string(n.symbol) + whose + (*n.unit ? std::string(" [") + n.unit + "]" : "");
-  return path;
-}
-
-}  // namespace
 
 namespace {
 
@@ -143,7 +112,21 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
   if (x.span() <= 0.0) x = {x.lo - 0.5, x.lo + 0.5};
   x = padded(x, 0.02);
   if (in.spec.kind == PlotKind::impact_map) x = {0.0, 2.0 * M_PI};
-  if (in.spec.kind == PlotKind::bifurcation) x = bifurcation_range(spec.axis);
+  if (in.spec.kind == PlotKind::bifurcation || in.spec.kind == PlotKind::branch)
+    x = bifurcation_range(spec.axis);
+  // A continued branch drawn over a bifurcation diagram of the same parameter.
+  const OrbitBranch* branch = in.spec.kind != PlotKind::section && in.spec.kind != PlotKind::impact_map &&
+                                      in.data.branch && in.data.continuation &&
+                                      in.data.continuation->parameter == spec.axis.parameter
+                                  ? in.data.branch
+                                  : nullptr;
+  if (branch) {
+    const Range b = branch_range(*branch, in.spec);
+    if (!b.empty()) {
+      y.include(b.lo);
+      y.include(b.hi);
+    }
+  }
   if (y.empty()) y = {-1.0, 1.0};
   if (y.span() <= 0.0) y = {y.lo - 0.5, y.lo + 0.5};
   const Rect& area = in.layout.plots.front();
@@ -180,6 +163,7 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
   }
   avoid.lines.push_back(drawn);
   std::vector<LegendEntry> legend;
+  if (branch) draw_branch_curve(cr, tr, *branch, in.spec, style, legend, avoid);
   if (any_backward) {
     legend.push_back({"swept up", series_colour(0), Swatch::marker});
     legend.push_back({"swept down", series_colour(1), Swatch::marker});

@@ -72,7 +72,7 @@ std::string window_suffix(const PlotSpec& spec, double t_end) {
 }
 
 std::vector<int> panel_pellets(const PlotSpec& spec, int pellet_count) {
-  if (spec.kind == PlotKind::work_precision || draws_sweep(spec.kind)) return {};
+  if (!draws_run(spec.kind)) return {};
   if (spec.kind != PlotKind::time) return {spec.pellet};
   if (!spec.pellets.empty()) return spec.pellets;
   std::vector<int> all;

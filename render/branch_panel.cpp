@@ -1,0 +1,140 @@
+// The continued branch of a periodic motion (core/orbit_continuation.h) against its parameter:
+// its state on the stroboscopic section t = kT, stable stretches solid and unstable ones dashed,
+// each bifurcation marked and named. Drawn alone, or over the brute-force bifurcation diagram of
+// the same scene, where the two must agree wherever the motion is stable.
+#include <cmath>
+#include <string>
+
+#include "render/axes.h"
+#include "render/legend.h"
+#include "render/markers.h"
+#include "render/panel.h"
+#include "render/parameter_label.h"
+#include "render/text.h"
+
+namespace vibro::render {
+namespace {
+
+double branch_y(const PlotSpec& spec, const PhasePoint& p) {
+  return spec.coordinate == SectionCoordinate::phi ? wrap_angle(p.phi) : p.dphi;
+}
+
+struct Mark {
+  const char* label;  // beside the mark
+  const char* name;   // in the legend
+  MarkerShape shape;
+  Colour colour;
+};
+
+Mark mark_of(BifurcationKind kind) {
+  switch (kind) {
+    case BifurcationKind::fold: return {"F", "fold", MarkerShape::diamond, series_colour(2)};
+    case BifurcationKind::period_doubling:
+      return {"PD", "period doubling", MarkerShape::triangle, series_colour(1)};
+    case BifurcationKind::neimark_sacker:
+      return {"NS", "Neimark\u2013Sacker", MarkerShape::circle, series_colour(3)};
+    case BifurcationKind::grazing: return {"G", "grazing", MarkerShape::circle, series_colour(4)};
+  }
+  return {"?", "?", MarkerShape::circle, kInk};
+}
+
+}  // namespace
+
+Range branch_range(const OrbitBranch& branch, const PlotSpec& spec) {
+  Range y;
+  for (const BranchPoint& p : branch.points)
+    if (spec.pellet < static_cast<int>(p.state.size())) y.include(branch_y(spec, p.state[spec.pellet]));
+  return y;
+}
+
+void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& branch,
+                       const PlotSpec& spec, const Style& style, std::vector<LegendEntry>& legend,
+                       Obstacles& avoid) {
+  const auto& points = branch.points;
+  if (points.empty() || spec.pellet >= static_cast<int>(points.front().state.size())) return;
+  const double dash[] = {style.px(6.0), style.px(4.0)};
+  bool any_stable = false, any_unstable = false;
+  std::vector<Point> line;
+  // One path per stretch of one stability; a segment takes the stability of its far end.
+  for (std::size_t k = 0; k < points.size(); ++k) {
+    const Point at = tr.to_pixel(points[k].value, branch_y(spec, points[k].state[spec.pellet]));
+    line.push_back(at);
+    const bool last = k + 1 == points.size();
+    if (!last && points[k + 1].stable == points[k].stable && k > 0) continue;
+    if (line.size() >= 2) {
+      const bool stable = points[k].stable;
+      (stable ? any_stable : any_unstable) = true;
+      cairo_move_to(cr, line.front().x, line.front().y);
+      for (const Point& p : line) cairo_line_to(cr, p.x, p.y);
+      set_colour(cr, kInk);
+      cairo_set_line_width(cr, style.px(stable ? 2.2 : 1.6));
+      cairo_set_dash(cr, dash, stable ? 0 : 2, 0.0);
+      cairo_stroke(cr);
+      cairo_set_dash(cr, nullptr, 0, 0.0);
+      avoid.lines.push_back(line);
+    }
+    line = {at};
+  }
+  if (any_stable) legend.push_back({"stable periodic motion", kInk, Swatch::line});
+  if (any_unstable) legend.push_back({"unstable periodic motion", kInk, Swatch::dashed_line});
+
+  set_font(cr, style.note_font());
+  bool seen[4] = {false, false, false, false};
+  std::vector<Rect> labels;
+  for (const Bifurcation& b : branch.bifurcations) {
+    if (spec.pellet >= static_cast<int>(b.state.size())) continue;
+    const Mark m = mark_of(b.kind);
+    const Point at = tr.to_pixel(b.value, branch_y(spec, b.state[spec.pellet]));
+    const Point centre[] = {at};
+    draw_markers(cr, centre, m.shape, style.px(5.0), m.colour, kInk, style.px(0.8));
+    // Beside the mark, stepped down past the labels of bifurcations close to it.
+    Point label{at.x + style.px(7.0), at.y - style.px(6.0)};
+    const TextAlign align{HAlign::left, VAlign::bottom};
+    for (int tries = 0; tries < 6; ++tries) {
+      const Rect box = text_box(cr, m.label, label, align);
+      bool clear = true;
+      for (const Rect& other : labels) clear = clear && !box.overlaps(other);
+      if (clear) break;
+      label.y += box.h + style.px(2.0);
+    }
+    draw_text_on_backdrop(cr, m.label, label, align, kInk, style.px(1.5));
+    labels.push_back(text_box(cr, m.label, label, align));
+    avoid.boxes.push_back(labels.back());
+    const int kind = static_cast<int>(b.kind);
+    if (!seen[kind])
+      legend.push_back({std::string(m.label) + ": " + m.name, m.colour, Swatch::marker, m.shape, kInk});
+    seen[kind] = true;
+  }
+}
+
+void draw_branch_panel(cairo_t* cr, const PanelInput& in) {
+  if (in.data.sweep && in.data.sweep_spec) return draw_sweep_points_panel(cr, in);
+  const OrbitBranch& branch = *in.data.branch;
+  const Style& style = in.style;
+  Range x;
+  for (const BranchPoint& p : branch.points) x.include(p.value);
+  Range y = branch_range(branch, in.spec);
+  if (x.empty()) x = {-1.0, 1.0};
+  if (x.span() <= 0.0) x = {x.lo - 0.5, x.lo + 0.5};
+  if (y.empty()) y = {-1.0, 1.0};
+  if (y.span() <= 0.0) y = {y.lo - 0.5, y.lo + 0.5};
+  const bool angle = in.spec.coordinate == SectionCoordinate::phi;
+  const Rect& area = in.layout.plots.front();
+  const Axis ax = make_axis(padded(x, 0.02), area.w, false, parameter_label(in.data.continuation->parameter));
+  const Axis ay = make_axis(padded(y, 0.05), area.h, angle,
+                            std::string(angle ? "\u03c6 at t = kT [rad]" : "\u03c6\u0307 at t = kT [rad/s]"), true);
+  const Transform tr(area, ax.range, ay.range);
+  draw_grid(cr, tr, ax, ay, style);
+  cairo_save(cr);
+  clip_to(cr, area);
+  std::vector<LegendEntry> legend;
+  Obstacles avoid;
+  draw_branch_curve(cr, tr, branch, in.spec, style, legend, avoid);
+  draw_legend(cr, legend, area, avoid, style);
+  cairo_restore(cr);
+  draw_frame(cr, tr, ax, ay, style);
+  const std::string title = "Periodic motion continued, pellet " + std::to_string(in.spec.pellet + 1);
+  draw_title(cr, in.layout.title_anchor, in.spec.title.empty() ? title : in.spec.title, style);
+}
+
+}  // namespace vibro::render
