@@ -17,10 +17,6 @@ namespace {
 
 using nlohmann::json;
 
-void print_error(const std::string& field, const std::string& message) {
-  std::cerr << json{{"error", message}, {"field", field}}.dump() << "\n";
-}
-
 std::optional<std::string> read_source(const std::string& source) {
   if (source == "-") {
     return std::string(std::istreambuf_iterator<char>(std::cin), {});
@@ -31,6 +27,10 @@ std::optional<std::string> read_source(const std::string& source) {
 }
 
 }  // namespace
+
+void print_error(const std::string& field, const std::string& message) {
+  std::cerr << json{{"error", message}, {"field", field}}.dump() << "\n";
+}
 
 std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
   std::optional<std::string> text;
@@ -114,6 +114,22 @@ std::optional<Scene> load_scene(const Args& args, std::size_t& next) {
   Scene scene = std::get<Scene>(std::move(parsed));
   if (deadline_ms > 0.0) scene.sim.deadline_ms = deadline_ms;
   return scene;
+}
+
+std::optional<SceneAndOutput> scene_and_output(const Args& args, const std::string& command) {
+  std::size_t next = 0;
+  auto scene = load_scene(args, next);
+  if (!scene) return std::nullopt;
+  SceneAndOutput job{std::move(*scene), ""};
+  for (; next < args.size(); ++next) {
+    if ((args[next] == "-o" || args[next] == "--output") && next + 1 < args.size()) {
+      job.out = args[++next];
+    } else {
+      print_error(args[next], "is not an option of `vibro " + command + "`");
+      return std::nullopt;
+    }
+  }
+  return job;
 }
 
 int simulate_command(const Args& args) {

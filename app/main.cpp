@@ -19,6 +19,10 @@ const std::vector<Command>& commands() {
        "vibro sweep SCENE.json | - | --preset NAME [-o OUT.json|.csv|.png|.svg] [--threads N] "
        "[--plot bifurcation|section|impact_map|regime_map] [--pellet I] [--coordinate dphi|phi]",
        sweep_command},
+      {"orbit",
+       "vibro orbit SCENE.json | - | --preset NAME [-o OUT.json] (the scene's periodic_orbit, "
+       "or a period-1 orbit after 100 periods)",
+       orbit_command},
       {"serve", "vibro serve [--host 127.0.0.1] [--port 8080] [--threads N] [--web DIR] "
                 "[--quiet] (--help: every flag)",
        serve_command},

@@ -13,34 +13,26 @@
 namespace vibro {
 
 int render_command(const Args& args) {
-  std::size_t next = 0;
-  auto scene = load_scene(args, next);
-  if (!scene) return 2;
-  std::string out;
-  for (; next < args.size(); ++next) {
-    if ((args[next] == "-o" || args[next] == "--output") && next + 1 < args.size()) {
-      out = args[++next];
-    } else {
-      std::cerr << nlohmann::json{{"error", "is not an option of `vibro render`"}, {"field", args[next]}}.dump() << "\n";
-      return 2;
-    }
-  }
+  auto job = scene_and_output(args, "render");
+  if (!job) return 2;
+  const Scene& scene = job->scene;
+  const std::string& out = job->out;
   const auto named = image_format_of_file(out);
   if (out.empty() || !named) {
     std::cerr << nlohmann::json{{"error", "name the image with -o OUT.png, OUT.svg or OUT.pdf"}, {"field", "-o"}}.dump() << "\n";
     return 2;
   }
   const ImageFormat format = *named;
-  if (auto e = validate_figure(scene->figure, scene->model, format)) {
+  if (auto e = validate_figure(scene.figure, scene.model, format)) {
     std::cerr << nlohmann::json{{"error", e->message}, {"field", e->field}}.dump() << "\n";
     return 2;
   }
-  const RunPlan plan = plan_run(scene->figure, scene->sim, scene->model.size());
-  const RunResult run = simulate(scene->model, plan.options);
+  const RunPlan plan = plan_run(scene.figure, scene.sim, scene.model.size());
+  const RunResult run = simulate(scene.model, plan.options);
   std::optional<WorkPrecisionReport> sweep;
-  if (plan.needs_work_precision) sweep = work_precision(scene->model, scene->sim);
+  if (plan.needs_work_precision) sweep = work_precision(scene.model, scene.sim);
   const RenderResult image =
-      render_figure(scene->figure, scene->model, run, format, {sweep ? &*sweep : nullptr});
+      render_figure(scene.figure, scene.model, run, format, {sweep ? &*sweep : nullptr});
   if (!image.ok()) {
     std::cerr << nlohmann::json{{"error", image.error->message}, {"field", image.error->field}}.dump() << "\n";
     return 1;
@@ -51,7 +43,7 @@ int render_command(const Args& args) {
     std::cerr << nlohmann::json{{"error", "cannot write the file"}, {"field", out}}.dump() << "\n";
     return 1;
   }
-  nlohmann::json j = result_to_json(run, scene->model);
+  nlohmann::json j = result_to_json(run, scene.model);
   std::cout << nlohmann::json{{"image", out},
                               {"bytes", image.bytes.size()},
                               {"answer", j["summary"]["answer"]},

@@ -8,16 +8,14 @@
 #include <unistd.h>
 
 #include <algorithm>
-#include <chrono>
-#include <cstdio>
 #include <fstream>
 #include <iostream>
-#include <mutex>
 #include <nlohmann/json.hpp>
 #include <thread>
 
 #include "app/commands.h"
 #include "app/mpi_sweep.h"
+#include "app/progress_bar.h"
 #include "core/sweep.h"
 #include "io/sweep_checkpoint.h"
 #include "io/sweep_json.h"
@@ -29,29 +27,6 @@ namespace {
 void usage_error(const std::string& field, const std::string& message) {
   std::cerr << nlohmann::json{{"error", message}, {"field", field}}.dump() << "\n";
 }
-
-// A progress bar redrawn in place: runs done of all, and the time left at the rate so far.
-class ProgressBar {
- public:
-  void operator()(long done, long total) {
-    const std::lock_guard lock(mutex_);
-    const double elapsed =
-        std::chrono::duration<double>(std::chrono::steady_clock::now() - started_).count();
-    if (done < total && elapsed - drawn_ < 0.2) return;
-    drawn_ = elapsed;
-    const int width = 30;
-    const int filled = static_cast<int>(width * done / std::max(total, 1L));
-    const double left = done > 0 ? elapsed * (total - done) / done : 0.0;
-    std::fprintf(stderr, "\r[%s%s] %ld/%ld runs, %.0f s left ", std::string(filled, '#').c_str(),
-                 std::string(width - filled, ' ').c_str(), done, total, left);
-    if (done == total) std::fprintf(stderr, "\n");
-  }
-
- private:
-  std::mutex mutex_;
-  std::chrono::steady_clock::time_point started_ = std::chrono::steady_clock::now();
-  double drawn_ = -1.0;
-};
 
 // A sweep as the command line asks for it, checked.
 struct SweepJob {
@@ -70,7 +45,8 @@ std::optional<SweepJob> prepare(const Args& args, bool root, int& code) {
   std::size_t next = 0;
   auto scene = load_scene(args, next);
   if (!scene) return std::nullopt;
-  SweepJob job{std::move(*scene)};
+  SweepJob job;
+  job.scene = std::move(*scene);
   job.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   std::string plot_name;
   bool resume = false;
@@ -207,7 +183,10 @@ int run_job(const Args& args, bool mpi, int rank) {
   SweepControl control;
   control.threads = job->threads;
   if (rank == 0 && isatty(STDERR_FILENO))
-    control.progress = [&bar](long done, long total) { bar(done, total); };
+    control.progress = [&bar](long done, long total) {
+      bar(static_cast<double>(done) / std::max(total, 1L),
+          std::to_string(done) + "/" + std::to_string(total) + " runs");
+    };
   if (checkpoint) {
     control.skip = [&done_before](int c) { return done_before[c] != 0; };
     control.chain_done = [&checkpoint](int c, const std::vector<SweepRun>& runs) {

@@ -8,29 +8,10 @@ namespace {
 
 using nlohmann::json;
 
-json num(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
-
 json numbers(const std::vector<double>& xs) {
   json a = json::array();
-  for (double x : xs) a.push_back(num(x));
+  for (double x : xs) a.push_back(finite_number(x));
   return a;
-}
-
-json event_json(const Event& e) {
-  json j = {{"t", num(e.t)},
-            {"kind", event_kind_name(e.kind)},
-            {"pellets", e.pellets},
-            {"phi", num(e.phi)},
-            {"dphi_before", numbers(e.dphi_before)},
-            {"dphi_after", numbers(e.dphi_after)}};
-  if (e.limiter >= 0) j["limiter"] = e.limiter;
-  if (e.kind == EventKind::chatter) {
-    j["impacts_resolved"] = e.impacts_resolved;
-    j["t_accumulation"] = num(e.t_accumulation);
-  } else if (e.impacts_resolved > 0) {
-    j["cascade_impacts"] = e.impacts_resolved;  // a cascade taken to its plastic limit
-  }
-  return j;
 }
 
 json track_json(const PelletTrack& track) {
@@ -38,9 +19,9 @@ json track_json(const PelletTrack& track) {
   for (const Branch& b : track.branches) {
     json t = json::array(), phi = json::array(), dphi = json::array();
     for (const Sample& s : b.samples) {
-      t.push_back(num(s.t));
-      phi.push_back(num(s.phi));
-      dphi.push_back(num(s.dphi));
+      t.push_back(finite_number(s.t));
+      phi.push_back(finite_number(s.phi));
+      dphi.push_back(finite_number(s.dphi));
     }
     branches.push_back({{"index", b.index}, {"t", t}, {"phi", phi}, {"dphi", dphi}});
   }
@@ -82,6 +63,25 @@ std::string trust_sentence(const Stats& st) {
 }
 
 }  // namespace
+
+json finite_number(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
+
+json event_to_json(const Event& e) {
+  json j = {{"t", finite_number(e.t)},
+            {"kind", event_kind_name(e.kind)},
+            {"pellets", e.pellets},
+            {"phi", finite_number(e.phi)},
+            {"dphi_before", numbers(e.dphi_before)},
+            {"dphi_after", numbers(e.dphi_after)}};
+  if (e.limiter >= 0) j["limiter"] = e.limiter;
+  if (e.kind == EventKind::chatter) {
+    j["impacts_resolved"] = e.impacts_resolved;
+    j["t_accumulation"] = finite_number(e.t_accumulation);
+  } else if (e.impacts_resolved > 0) {
+    j["cascade_impacts"] = e.impacts_resolved;  // a cascade taken to its plastic limit
+  }
+  return j;
+}
 
 std::string answer_sentence(const RunResult& run, const Model& model) {
   std::ostringstream s;
@@ -128,15 +128,41 @@ std::string answer_sentence(const RunResult& run, const Model& model) {
   return s.str();
 }
 
+json stats_to_json(const Stats& st) {
+  json stats = {{"method", st.method},
+                {"rtol", st.rtol},
+                {"atol", st.atol},
+                {"steps", st.steps},
+                {"rejected", st.rejected},
+                {"rhs_evals", st.rhs_evals},
+                {"jac_evals", st.jac_evals},
+                {"lu_decomps", st.lu_decomps},
+                {"stiff_switches", st.stiff_switches},
+                {"wall_ms", finite_number(st.wall_ms)},
+                {"error_estimate", finite_number(st.error_estimate)},
+                {"energy_defect", finite_number(st.energy_defect)},
+                {"first_integral_residual", finite_number(st.first_integral_residual)},
+                {"event_time_error", finite_number(st.event_time_error)},
+                {"state_error", finite_number(st.state_error)},
+                {"trusted_until", finite_number(st.trusted_until)},
+                {"check", st.check},
+                {"check_wall_ms", finite_number(st.check_wall_ms)},
+                {"termination", termination_name(st.termination)},
+                {"t_reached", finite_number(st.t_reached)}};
+  if (!st.message.empty()) stats["message"] = st.message;
+  if (!st.check_method.empty()) stats["check_method"] = st.check_method;
+  return stats;
+}
+
 json result_to_json(const RunResult& run, const Model& model) {
   json events = json::array();
-  for (const Event& e : run.events) events.push_back(event_json(e));
+  for (const Event& e : run.events) events.push_back(event_to_json(e));
 
   json finals = json::array();
   for (const FinalState& f : run.summary.final) {
-    json fj = {{"phi", num(f.phi)},
-               {"phi_wrapped", num(wrap_angle(f.phi))},
-               {"dphi", num(f.dphi)},
+    json fj = {{"phi", finite_number(f.phi)},
+               {"phi_wrapped", finite_number(wrap_angle(f.phi))},
+               {"dphi", finite_number(f.dphi)},
                {"state", pellet_state_name(f.state)}};
     if (f.limiter >= 0) fj["limiter"] = f.limiter;
     finals.push_back(fj);
@@ -149,40 +175,19 @@ json result_to_json(const RunResult& run, const Model& model) {
                   {"ends_vibro_impact", sm.ends_vibro_impact},
                   {"final", finals},
                   {"answer", answer_sentence(run, model)}};
-  summary["last_impact"] = sm.last_impact.index > 0
-                               ? json{{"index", sm.last_impact.index}, {"t", num(sm.last_impact.t)}}
-                               : json(nullptr);
-  const Stats& st = run.stats;
-  json stats = {{"method", st.method},
-                {"rtol", st.rtol},
-                {"atol", st.atol},
-                {"steps", st.steps},
-                {"rejected", st.rejected},
-                {"rhs_evals", st.rhs_evals},
-                {"jac_evals", st.jac_evals},
-                {"lu_decomps", st.lu_decomps},
-                {"stiff_switches", st.stiff_switches},
-                {"wall_ms", num(st.wall_ms)},
-                {"error_estimate", num(st.error_estimate)},
-                {"energy_defect", num(st.energy_defect)},
-                {"first_integral_residual", num(st.first_integral_residual)},
-                {"event_time_error", num(st.event_time_error)},
-                {"state_error", num(st.state_error)},
-                {"trusted_until", num(st.trusted_until)},
-                {"check", st.check},
-                {"check_wall_ms", num(st.check_wall_ms)},
-                {"termination", termination_name(st.termination)},
-                {"t_reached", num(st.t_reached)},
-                {"events", run.events.size()}};
-  if (!st.message.empty()) stats["message"] = st.message;
-  if (!st.check_method.empty()) stats["check_method"] = st.check_method;
+  summary["last_impact"] =
+      sm.last_impact.index > 0
+          ? json{{"index", sm.last_impact.index}, {"t", finite_number(sm.last_impact.t)}}
+          : json(nullptr);
+  json stats = stats_to_json(run.stats);
+  stats["events"] = run.events.size();
   json warnings = json::array();
   for (const Warning& w : run.warnings) {
     warnings.push_back({{"code", w.code},
                         {"message", w.message},
                         {"pellet", w.pellet},
-                        {"t_begin", num(w.t_begin)},
-                        {"t_end", num(w.t_end)}});
+                        {"t_begin", finite_number(w.t_begin)},
+                        {"t_end", finite_number(w.t_end)}});
   }
   json j = {{"events", events}, {"summary", summary}, {"stats", stats}, {"warnings", warnings}};
   if (!run.tracks.empty()) {

@@ -8,6 +8,7 @@
 #include "core/model.h"
 #include "core/sim_options.h"
 #include "core/sweep.h"
+#include "io/orbit_request.h"
 #include "render/plot_spec.h"
 
 namespace vibro {
@@ -21,6 +22,9 @@ struct Scene {
   bool trajectories = false;   // return the sampled branches with the run
   FigureSpec figure;
   std::optional<SweepSpec> sweep;  // run by `vibro sweep` and POST /api/sweep, not by simulate
+  // Run by `vibro orbit` and POST /api/periodic-orbit, not by simulate; they take the defaults
+  // when it is absent.
+  std::optional<OrbitRequest> periodic_orbit;
 };
 
 // Bounds on what a scene may ask; the server tightens them.

@@ -4,6 +4,7 @@
 #include <set>
 
 #include "io/json_fields.h"
+#include "io/orbit_json.h"
 #include "io/sweep_json.h"
 
 namespace vibro {
@@ -232,6 +233,8 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
     if (auto w = f.integer("width")) s.figure.width = static_cast<int>(*w);
     if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
     if (const json* sweep = f.value("sweep")) s.sweep = read_sweep(*sweep);
+    if (const json* orbit = f.value("periodic_orbit"))
+      s.periodic_orbit = read_orbit_request(*orbit, limits.sim.max_pellets);
     f.done();
     if (s.figure.width < 64 || s.figure.width > limits.max_width)
       throw FieldException("width", "must be in [64, " + std::to_string(limits.max_width) + "] px");
@@ -241,6 +244,8 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
     if (auto e = validate_options(s.sim, s.model.size(), limits.sim)) return *e;
     if (s.sweep)
       if (auto e = validate_sweep(s.model, *s.sweep)) return *e;
+    if (s.periodic_orbit)
+      if (auto e = validate_orbit_request(s.model, *s.periodic_orbit)) return *e;
     return s;
   } catch (const FieldException& e) {
     return FieldError{e.field, e.what()};
@@ -378,6 +383,7 @@ json scene_to_json(const Scene& s) {
       case PlotKind::section: pj["kind"] = "section"; break;
       case PlotKind::impact_map: pj["kind"] = "impact_map"; break;
       case PlotKind::regime_map: pj["kind"] = "regime_map"; break;
+      case PlotKind::branch: pj["kind"] = "branch"; break;
     }
     if (p.kind == PlotKind::time) {
       pj["pellets"] = p.pellets;
@@ -418,6 +424,7 @@ json scene_to_json(const Scene& s) {
   j["width"] = s.figure.width;
   j["height"] = s.figure.height;
   if (s.sweep) j["sweep"] = sweep_to_json(*s.sweep);
+  if (s.periodic_orbit) j["periodic_orbit"] = orbit_request_to_json(*s.periodic_orbit);
   return j;
 }
 

@@ -1,10 +1,10 @@
 #include "io/sweep_json.h"
 
-#include <cmath>
 #include <iomanip>
 #include <sstream>
 
 #include "io/json_fields.h"
+#include "io/result_json.h"
 
 namespace vibro {
 namespace {
@@ -43,9 +43,6 @@ const char* continuation_name(Continuation c) {
   }
   return "none";
 }
-
-// A number for JSON: non-finite values never reach the output.
-json finite(double x) { return std::isfinite(x) ? json(x) : json(nullptr); }
 
 }  // namespace
 
@@ -118,10 +115,10 @@ json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
       start.push_back(run.start);
       direction.push_back(run.direction);
       pellet.push_back(p.pellet);
-      t.push_back(finite(p.t));
-      phi.push_back(finite(p.phi));
-      dphi.push_back(finite(p.dphi));
-      phase.push_back(finite(p.phase));
+      t.push_back(finite_number(p.t));
+      phi.push_back(finite_number(p.phi));
+      dphi.push_back(finite_number(p.dphi));
+      phase.push_back(finite_number(p.phase));
       limiter.push_back(p.limiter);
       point_trusted.push_back(p.trusted);
       run_of.push_back(r);
@@ -131,14 +128,14 @@ json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
     runs["start"].push_back(run.start);
     runs["direction"].push_back(run.direction);
     runs["period"].push_back(run.period);
-    runs["impacts_per_period"].push_back(finite(run.impacts_per_period));
+    runs["impacts_per_period"].push_back(finite_number(run.impacts_per_period));
     runs["at_rest"].push_back(run.at_rest);
     runs["sticks"].push_back(run.sticks);
     runs["trusted"].push_back(run.trusted);
-    runs["trusted_until"].push_back(finite(run.trusted_until));
+    runs["trusted_until"].push_back(finite_number(run.trusted_until));
     runs["termination"].push_back(termination_name(run.termination));
     runs["message"].push_back(run.message);
-    runs["error_estimate"].push_back(finite(run.error_estimate));
+    runs["error_estimate"].push_back(finite_number(run.error_estimate));
   }
   json points = {{"value", value}, {"value2", value2}, {"start", start},   {"direction", direction},
                  {"pellet", pellet}, {"t", t},          {"phi", phi},       {"dphi", dphi},

@@ -7,6 +7,7 @@
 #include <optional>
 #include <sstream>
 
+#include "io/orbit_json.h"
 #include "io/presets.h"
 #include "io/scene_json.h"
 #include "io/sweep_json.h"
@@ -83,6 +84,16 @@ std::optional<ApiError> only_params(const httplib::Request& req,
   return std::nullopt;
 }
 
+// Behind the front door, replica k's job ids begin "r<k>-"; alone (0), they have no prefix.
+// Appended rather than concatenated: GCC 12 takes "r" + string for an overlapping memcpy.
+std::string job_id_prefix(int replica) {
+  if (replica <= 0) return "";
+  std::string prefix = "r";
+  prefix += std::to_string(replica);
+  prefix += '-';
+  return prefix;
+}
+
 void send(httplib::Response& res, const CachedResponse& answer, bool hit) {
   res.set_header("ETag", answer.etag);
   res.set_header("Cache-Control", kCacheForever);
@@ -98,8 +109,8 @@ Api::Api(const ServerConfig& config)
       preset_list_(make_preset_list()),
       web_(web_dir(config)),
       cache_(config.cache_bytes),
-      sweeps_({config.sweep_jobs, config.sweep_threads, config.sweep_queue, 600.0, 32,
-               config.replica > 0 ? "r" + std::to_string(config.replica) + "-" : ""}),
+      jobs_({config.sweep_jobs, config.sweep_threads, config.sweep_queue, 600.0, 32,
+             job_id_prefix(config.replica)}),
       workers_(worker_count(config), config.queue) {}
 
 void Api::health(const httplib::Request&, httplib::Response& res) const {
@@ -216,10 +227,37 @@ void Api::sweep_post(const httplib::Request& req, httplib::Response& res) {
     return send_error(res, {400, "sweep", "is required: the sweep to run (API.md, \"Sweeps\")"});
   if (auto e = check_sweep(scene, config_.limits)) return send_error(res, *e);
   scene.sim = bounded_options(scene.sim, config_.limits);
-  const auto status = sweeps_.submit(std::move(scene));
+  submit(JobKind::sweep, std::move(scene), res);
+}
+
+void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
+  if (auto e = only_params(req, {})) return send_error(res, *e);
+  SceneOrApiError parsed = scene_from_body(req, scene_limits_);
+  if (auto* e = std::get_if<ApiError>(&parsed)) return send_error(res, *e);
+  Scene scene = std::move(std::get<Scene>(parsed));
+  // A scene's own request was checked as it was read; the defaults are checked here.
+  if (!scene.periodic_orbit) {
+    scene.periodic_orbit.emplace();
+    if (auto e = validate_orbit_request(scene.model, *scene.periodic_orbit))
+      return send_error(res, ApiError::from(*e));
+  }
+  if (auto e = check_orbit(scene, config_.limits)) return send_error(res, *e);
+  scene.sim = bounded_options(scene.sim, config_.limits);
+  if (scene.periodic_orbit->continuation) return submit(JobKind::orbit, std::move(scene), res);
+  auto produced = run_on_worker([scene = std::move(scene)] { return orbit_scene(scene); }, res);
+  if (!produced) return;
+  if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
+  Produced& p = std::get<Produced>(*produced);
+  // Not cached: a map's run that meets the deadline makes the answer depend on the load.
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(std::move(p.body), p.content_type);
+}
+
+void Api::submit(JobKind kind, Scene scene, httplib::Response& res) {
+  const auto status = jobs_.submit(kind, std::move(scene));
   if (!status) {
     res.set_header("Retry-After", "10");
-    return send_error(res, {503, "server", "the sweep queue is full; try again later"});
+    return send_error(res, {503, "server", "the job queue is full; try again later"});
   }
   res.status = 202;
   res.set_header("Location", "/api/jobs/" + status->id);
@@ -232,23 +270,34 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   if (wants_result) id.resize(id.size() - std::string_view("/result").size());
   if (!wants_result) {
     if (auto e = only_params(req, {})) return send_error(res, *e);
-    const auto status = sweeps_.status(id);
-    if (!status) return send_error(res, {404, "id", "no sweep job \"" + id + "\" (finished ones are kept for a while)"});
+    const auto status = jobs_.status(id);
+    if (!status) return send_error(res, {404, "id", "no job \"" + id + "\" (finished ones are kept for a while)"});
     return send_status(res, *status);
   }
-  if (auto e = only_params(req, {"format", "plot", "pellet", "coordinate"})) return send_error(res, *e);
-  const auto job = sweeps_.finished(id);
+  const auto job = jobs_.finished(id);
   if (!job) {
-    const auto status = sweeps_.status(id);
-    if (!status) return send_error(res, {404, "id", "no sweep job \"" + id + "\""});
-    return send_error(res, {409, "id", "the sweep is " + std::string(job_state_name(status->state)) +
+    const auto status = jobs_.status(id);
+    if (!status) return send_error(res, {404, "id", "no job \"" + id + "\""});
+    return send_error(res, {409, "id", "the job is " + std::string(job_state_name(status->state)) +
                                            ", not done: its result is not ready"});
   }
-  const SweepSpec& spec = *job->scene.sweep;
+  if (job->kind == JobKind::sweep) return sweep_result(*job, req, res);
+  // An orbit's figures are to come; its result is JSON only for now.
+  if (auto e = only_params(req, {"format"})) return send_error(res, *e);
+  if (req.has_param("format") && req.get_param_value("format") != "json")
+    return send_error(res, {400, "format", "an orbit's result is \"json\" only, got \"" +
+                                               req.get_param_value("format") + "\""});
+  res.set_header("Cache-Control", "no-store");
+  res.set_content(orbit_result_json(*job->orbit).dump(), "application/json");
+}
+
+void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Response& res) {
+  if (auto e = only_params(req, {"format", "plot", "pellet", "coordinate"})) return send_error(res, *e);
+  const SweepSpec& spec = *job.scene.sweep;
   const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
   res.set_header("Cache-Control", "no-store");
-  if (format == "json") return res.set_content(sweep_result_json(spec, *job->result).dump(), "application/json");
-  if (format == "csv") return res.set_content(sweep_result_csv(*job->result), "text/csv");
+  if (format == "json") return res.set_content(sweep_result_json(spec, *job.sweep).dump(), "application/json");
+  if (format == "csv") return res.set_content(sweep_result_csv(*job.sweep), "text/csv");
   const auto image_format = image_format_named(format);
   if (!image_format)
     return send_error(res, {400, "format", "must be \"json\", \"csv\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
@@ -260,9 +309,9 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   if (req.has_param("pellet")) {
     const std::string p = req.get_param_value("pellet");
     plot.pellet = p.size() == 1 && p[0] >= '0' && p[0] <= '9' ? p[0] - '0' : -1;
-    if (plot.pellet < 0 || plot.pellet >= job->scene.model.size())
+    if (plot.pellet < 0 || plot.pellet >= job.scene.model.size())
       return send_error(res, {400, "pellet", "must be a pellet index in 0.." +
-                                                 std::to_string(job->scene.model.size() - 1)});
+                                                 std::to_string(job.scene.model.size() - 1)});
   }
   if (req.has_param("coordinate")) {
     const std::string c = req.get_param_value("coordinate");
@@ -271,11 +320,11 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
     plot.coordinate = c == "phi" ? SectionCoordinate::phi : SectionCoordinate::dphi;
   }
   FigureSpec figure;
-  figure.width = job->scene.figure.width;
-  figure.height = job->scene.figure.height;
+  figure.width = job.scene.figure.width;
+  figure.height = job.scene.figure.height;
   figure.plots = {plot};
-  const RenderResult image = render_figure(figure, job->scene.model, RunResult{}, *image_format,
-                                           {nullptr, &spec, job->result.get()});
+  const RenderResult image = render_figure(figure, job.scene.model, RunResult{}, *image_format,
+                                           {nullptr, &spec, job.sweep.get()});
   if (!image.ok()) return send_error(res, ApiError::from(*image.error, 500));
   // Where the parameter lies on the image, so that a click on it can name a value (the page).
   if (const auto axis = parameter_axis(figure, spec)) {
@@ -291,8 +340,8 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
 void Api::job_delete(const httplib::Request& req, httplib::Response& res) {
   if (auto e = only_params(req, {})) return send_error(res, *e);
   const std::string id = req.path.substr(std::string_view("/api/jobs/").size());
-  const auto status = sweeps_.cancel(id);
-  if (!status) return send_error(res, {404, "id", "no sweep job \"" + id + "\""});
+  const auto status = jobs_.cancel(id);
+  if (!status) return send_error(res, {404, "id", "no job \"" + id + "\""});
   send_status(res, *status);
 }
 

@@ -7,11 +7,11 @@
 
 #include "io/scene.h"
 #include "server/config.h"
+#include "server/jobs.h"
 #include "server/http.h"
 #include "server/response_cache.h"
 #include "server/run_scene.h"
 #include "server/static_files.h"
-#include "server/sweep_jobs.h"
 #include "server/worker_pool.h"
 
 namespace vibro::server {
@@ -32,8 +32,11 @@ class Api {
   // run, so it is never cached.
   void work_precision_post(const httplib::Request& req, httplib::Response& res);
   void static_file(const httplib::Request& req, httplib::Response& res) const;
+  // The scene's periodic orbit (its "periodic_orbit", or the defaults): answered at once, or
+  // with a continuation queued as a job like a sweep.
+  void orbit_post(const httplib::Request& req, httplib::Response& res);
   // Sweeps as jobs: 202 with the id; /api/jobs/{id} its progress, /api/jobs/{id}/result?format=
-  // json|csv|png|svg its points or diagram, DELETE cancels.
+  // json|csv|png|svg its points or diagram (an orbit's: json), DELETE cancels.
   void sweep_post(const httplib::Request& req, httplib::Response& res);
   void job_get(const httplib::Request& req, httplib::Response& res);
   void job_delete(const httplib::Request& req, httplib::Response& res);
@@ -47,6 +50,10 @@ class Api {
  private:
   void simulate(const Scene& scene, const httplib::Request& req, httplib::Response& res);
   void render(const Scene& scene, const httplib::Request& req, httplib::Response& res);
+  // Queues the job: 202 with its status and Location, or 503 when the queue is full.
+  void submit(JobKind kind, Scene scene, httplib::Response& res);
+  // A done sweep's points or diagram, as the query asks.
+  void sweep_result(const Job& job, const httplib::Request& req, httplib::Response& res);
   // Answers from the cache, or runs `job` on a worker and caches what it produces.
   void answer(const std::string& key, std::function<JobResult()> job, const httplib::Request& req,
               httplib::Response& res);
@@ -58,7 +65,7 @@ class Api {
   const std::string preset_list_;  // the JSON of GET /api/presets, made once
   StaticFiles web_;
   ResponseCache cache_;
-  SweepJobs sweeps_;
+  Jobs jobs_;
   WorkerPool workers_;  // last: its destructor runs queued jobs, which use the members above
 };
 

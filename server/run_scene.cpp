@@ -7,6 +7,7 @@
 #include "core/simulate.h"
 #include "core/parameter.h"
 #include "core/work_precision.h"
+#include "io/orbit_json.h"
 #include "io/work_precision_json.h"
 #include "io/result_json.h"
 #include "render/run_plan.h"
@@ -102,6 +103,46 @@ std::optional<ApiError> check_sweep(const Scene& scene, const Limits& limits) {
                         "periods), over the server's limit of " + std::to_string(limits.t_end) + " s"};
     }
   return std::nullopt;
+}
+
+std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits) {
+  const OrbitRequest& request = *scene.periodic_orbit;
+  const OrbitSpec& spec = request.orbit;
+  const double T = forcing_period(scene.model);
+  const auto over = [&](const char* field, const std::string& what, double s) {
+    return ApiError{400, std::string("periodic_orbit.") + field,
+                    what + " would last " + std::to_string(s) +
+                        " s of simulated time, over the server's limit of " +
+                        std::to_string(limits.t_end) + " s"};
+  };
+  if (spec.guess.empty() && spec.transient * T > limits.t_end)
+    return over("transient", "the run to the starting guess (transient periods)",
+                spec.transient * T);
+  // Each Newton iteration maps the state over `periods` periods at least once.
+  const double search = (spec.max_iterations + 1.0) * spec.periods * T;
+  if (search > limits.t_end)
+    return over("max_iterations", "the search ((max_iterations + 1) × periods forcing periods)",
+                search);
+  if (!request.continuation) return std::nullopt;
+  // A branch point costs a few corrector iterations, each one map: about this many at most.
+  constexpr double kMapsPerPoint = 16.0;
+  const double periods = kMapsPerPoint * request.continuation->max_points * spec.periods;
+  if (periods > limits.sweep_periods)
+    return ApiError{400, "periodic_orbit.continuation.max_points",
+                    "the branch may take some " + std::to_string(static_cast<long>(periods)) +
+                        " forcing periods (16 maps × max_points × periods), over the server's "
+                        "limit of " + std::to_string(static_cast<long>(limits.sweep_periods))};
+  Model end = scene.model;
+  set_parameter(end, request.continuation->parameter, request.continuation->to);
+  const double last = spec.periods * forcing_period(end);
+  if (last > limits.t_end)
+    return over("continuation.to", "a map at the branch's end (periods forcing periods)", last);
+  return std::nullopt;
+}
+
+JobResult orbit_scene(const Scene& scene) {
+  const OrbitResult result = run_orbit_request(scene.model, scene.sim, *scene.periodic_orbit);
+  return Produced{orbit_result_json(result).dump(), "application/json"};
 }
 
 SimOptions bounded_options(const SimOptions& options, const Limits& limits) {

@@ -1,6 +1,6 @@
-// The work behind /api/simulate and /api/render, run on a worker: the scene's options bounded
-// by the server's limits, the simulation, the figure, and either the answer or an error that
-// says which limit stopped the run.
+// The work behind /api/simulate, /api/render and /api/periodic-orbit, run on a worker: the
+// scene's options bounded by the server's limits, the simulation, the figure, and either the
+// answer or an error that says which limit stopped the run.
 #pragma once
 
 #include <optional>
@@ -34,6 +34,14 @@ JobResult simulate_scene(const Scene& scene, const Limits& limits,
 // What a sweep may cost, known up front: its runs × periods, and each run's span, within the
 // server's limits. The error names the sweep's field.
 std::optional<ApiError> check_sweep(const Scene& scene, const Limits& limits);
+
+// What seeking the scene's periodic orbit (it must have one) may cost, known up front: the
+// simulated time of its starting run and of its Newton iterations, and for a continuation its
+// points × periods, within the server's limits. The error names the periodic_orbit's field.
+std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits);
+
+// The scene's periodic orbit as API.md's JSON, without continuation (that is a job's).
+JobResult orbit_scene(const Scene& scene);
 
 // The scene's run options within the server's limits (events, steps, deadline per run).
 SimOptions bounded_options(const SimOptions& options, const Limits& limits);

@@ -47,6 +47,7 @@ std::vector<Route> api_routes(Api& api) {
       {"POST", "/api/render", bind(&Api::render_post)},
       {"POST", "/api/work-precision", bind(&Api::work_precision_post)},
       {"POST", "/api/sweep", bind(&Api::sweep_post)},
+      {"POST", "/api/periodic-orbit", bind(&Api::orbit_post)},
       {"GET", "/api/jobs/", bind(&Api::job_get)},
       {"DELETE", "/api/jobs/", bind(&Api::job_delete)},
   };

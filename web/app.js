@@ -11,6 +11,7 @@ import { describePreset, fillPicker, sameScene } from "./js/presets.js";
 import { SceneForm } from "./js/scene_form.js";
 import { setPath } from "./js/scene_path.js";
 import { clickedValue, defaultSweep, runSweep, sweepablePaths } from "./js/sweep.js";
+import { describeOrbit, findOrbit, sceneOnOrbit } from "./js/orbit.js";
 import { showSummary, showWarnings } from "./js/summary.js";
 
 const $ = (id) => document.getElementById(id);
@@ -283,6 +284,53 @@ sweepUi.box.addEventListener("click", async (e) => {
   form.load(scene);
   edited();
   sweepUi.status.textContent = `Rendering the scene at ${sweepState.parameter} = ${value.toPrecision(6)}.`;
+  await render();
+});
+
+// [SECTION] periodic motion
+
+const orbitUi = {
+  periods: $("orbit-periods"),
+  transient: $("orbit-transient"),
+  find: $("orbit-find"),
+  draw: $("orbit-draw"),
+  status: $("orbit-status"),
+  result: $("orbit-result"),
+};
+const orbitState = { scene: null, answer: null };
+
+orbitUi.find.addEventListener("click", async () => {
+  const { scene, problems } = form.read();
+  if (problems.length) {
+    orbitUi.status.textContent = "Fix the scene's fields first.";
+    return;
+  }
+  orbitUi.find.disabled = true;
+  orbitUi.draw.disabled = true;
+  orbitUi.result.dataset.state = "busy";
+  orbitUi.status.textContent = "Searching…";
+  const started = performance.now();
+  try {
+    const answer = await findOrbit(scene, { periods: Number(orbitUi.periods.value), transient: Number(orbitUi.transient.value) });
+    orbitState.scene = scene;
+    orbitState.answer = answer;
+    fill(orbitUi.result, ...describeOrbit(answer).map((line) => Object.assign(document.createElement("p"), { textContent: line })));
+    orbitUi.result.dataset.state = answer.orbit.converged ? "done" : "none";
+    orbitUi.draw.disabled = !answer.orbit.converged;
+    orbitUi.status.textContent = `${answer.orbit.iterations} Newton iterations in ${Math.round(performance.now() - started)} ms.`;
+  } catch (e) {
+    orbitUi.result.dataset.state = "error";
+    orbitUi.status.textContent = e instanceof ApiError && e.field ? `${e.field}: ${e.message}` : e.message;
+  } finally {
+    orbitUi.find.disabled = false;
+  }
+});
+
+// The scene started on the motion, for one return: its portrait above is the closed orbit.
+orbitUi.draw.addEventListener("click", async () => {
+  if (!orbitState.answer) return;
+  form.load(sceneOnOrbit(orbitState.scene, orbitState.answer));
+  edited();
   await render();
 });
 

@@ -1,5 +1,7 @@
-#include "server/sweep_jobs.h"
+#include "server/jobs.h"
 
+#include <algorithm>
+#include <cmath>
 #include <cstdio>
 #include <random>
 
@@ -16,13 +18,13 @@ std::string_view job_state_name(JobState state) {
   return "failed";
 }
 
-SweepJobs::SweepJobs(const SweepJobOptions& options) : options_(options) {
+Jobs::Jobs(const JobOptions& options) : options_(options) {
   std::random_device random;
   salt_ = (static_cast<std::uint64_t>(random()) << 32) ^ random();
   for (int k = 0; k < std::max(1, options_.jobs); ++k) threads_.emplace_back([this] { work(); });
 }
 
-SweepJobs::~SweepJobs() {
+Jobs::~Jobs() {
   {
     const std::lock_guard lock(mutex_);
     stopping_ = true;
@@ -32,21 +34,22 @@ SweepJobs::~SweepJobs() {
   for (std::thread& t : threads_) t.join();
 }
 
-JobStatus SweepJobs::snapshot(const SweepJob& job) const {
+JobStatus Jobs::snapshot(const Job& job) const {
   return {job.id, job.state, job.done.load(), job.total};
 }
 
-std::optional<JobStatus> SweepJobs::submit(Scene scene) {
+std::optional<JobStatus> Jobs::submit(JobKind kind, Scene scene) {
   const std::lock_guard lock(mutex_);
   forget_old();
   if (waiting_.size() >= options_.queue) return std::nullopt;
-  auto job = std::make_shared<SweepJob>();
+  auto job = std::make_shared<Job>();
   // Ids that a client cannot guess from its own: a per-process salt mixed into a counter.
   char id[24];
-  std::snprintf(id, sizeof id, "s%016llx",
+  std::snprintf(id, sizeof id, "%c%016llx", kind == JobKind::sweep ? 's' : 'o',
                 static_cast<unsigned long long>((++counter_ * 0x9E3779B97F4A7C15ULL) ^ salt_));
   job->id = options_.id_prefix + id;
-  job->total = sweep_runs(*scene.sweep);
+  job->kind = kind;
+  job->total = kind == JobKind::sweep ? sweep_runs(*scene.sweep) : 1000;
   job->scene = std::move(scene);
   jobs_[job->id] = job;
   waiting_.push_back(job);
@@ -54,25 +57,25 @@ std::optional<JobStatus> SweepJobs::submit(Scene scene) {
   return snapshot(*job);
 }
 
-std::optional<JobStatus> SweepJobs::status(const std::string& id) {
+std::optional<JobStatus> Jobs::status(const std::string& id) {
   const std::lock_guard lock(mutex_);
   const auto it = jobs_.find(id);
   if (it == jobs_.end()) return std::nullopt;
   return snapshot(*it->second);
 }
 
-std::shared_ptr<const SweepJob> SweepJobs::finished(const std::string& id) {
+std::shared_ptr<const Job> Jobs::finished(const std::string& id) {
   const std::lock_guard lock(mutex_);
   const auto it = jobs_.find(id);
   if (it == jobs_.end() || it->second->state != JobState::done) return nullptr;
   return it->second;
 }
 
-std::optional<JobStatus> SweepJobs::cancel(const std::string& id) {
+std::optional<JobStatus> Jobs::cancel(const std::string& id) {
   const std::lock_guard lock(mutex_);
   const auto it = jobs_.find(id);
   if (it == jobs_.end()) return std::nullopt;
-  SweepJob& job = *it->second;
+  Job& job = *it->second;
   job.cancel = true;
   if (job.state == JobState::queued) {
     std::erase(waiting_, it->second);
@@ -82,9 +85,9 @@ std::optional<JobStatus> SweepJobs::cancel(const std::string& id) {
   return snapshot(job);
 }
 
-void SweepJobs::forget_old() {
+void Jobs::forget_old() {
   const auto now = std::chrono::steady_clock::now();
-  std::vector<std::shared_ptr<SweepJob>> ended;
+  std::vector<std::shared_ptr<Job>> ended;
   for (const auto& [id, job] : jobs_)
     if (job->state != JobState::queued && job->state != JobState::running) ended.push_back(job);
   std::sort(ended.begin(), ended.end(),
@@ -95,9 +98,28 @@ void SweepJobs::forget_old() {
   }
 }
 
-void SweepJobs::work() {
+JobState Jobs::run(Job& job) const {
+  const Scene& scene = job.scene;
+  if (job.kind == JobKind::orbit) {
+    auto progress = [&job](double done) { job.done = std::lround(1000.0 * done); };
+    job.orbit = std::make_shared<OrbitResult>(
+        run_orbit_request(scene.model, scene.sim, *scene.periodic_orbit, progress, &job.cancel));
+    return job.cancel ? JobState::cancelled : JobState::done;
+  }
+  SweepControl control;
+  control.threads = options_.threads;
+  control.cancel = &job.cancel;
+  control.progress = [&job](long done, long) { job.done = done; };
+  auto result =
+      std::make_shared<SweepResult>(run_sweep(scene.model, scene.sim, *scene.sweep, control));
+  const bool cancelled = result->cancelled;
+  job.sweep = std::move(result);
+  return cancelled ? JobState::cancelled : JobState::done;
+}
+
+void Jobs::work() {
   for (;;) {
-    std::shared_ptr<SweepJob> job;
+    std::shared_ptr<Job> job;
     {
       std::unique_lock lock(mutex_);
       wake_.wait(lock, [this] { return stopping_ || !waiting_.empty(); });
@@ -106,23 +128,13 @@ void SweepJobs::work() {
       waiting_.pop_front();
       job->state = JobState::running;
     }
-    SweepControl control;
-    control.threads = options_.threads;
-    control.cancel = &job->cancel;
-    control.progress = [&job](long done, long) { job->done = done; };
-    JobState ended = JobState::done;
-    std::shared_ptr<const SweepResult> result;
+    JobState ended = JobState::failed;
     try {
-      auto r = std::make_shared<SweepResult>(
-          run_sweep(job->scene.model, job->scene.sim, *job->scene.sweep, control));
-      ended = r->cancelled ? JobState::cancelled : JobState::done;
-      result = std::move(r);
+      ended = run(*job);
     } catch (const std::exception& e) {
-      std::fprintf(stderr, "vibro: sweep %s failed: %s\n", job->id.c_str(), e.what());
-      ended = JobState::failed;
+      std::fprintf(stderr, "vibro: job %s failed: %s\n", job->id.c_str(), e.what());
     }
     const std::lock_guard lock(mutex_);
-    job->result = std::move(result);
     job->state = ended;
     job->finished = std::chrono::steady_clock::now();
   }

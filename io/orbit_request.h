@@ -1,0 +1,41 @@
+// A scene's "periodic_orbit" request (API.md, "Periodic motions and their stability"): the orbit
+// to seek and, optionally, the parameter to follow it in; and the one way of carrying it out that
+// `vibro orbit` and POST /api/periodic-orbit share.
+#pragma once
+
+#include <atomic>
+#include <functional>
+#include <optional>
+
+#include "core/model.h"
+#include "core/orbit_continuation.h"
+#include "core/periodic_orbit.h"
+#include "core/sim_options.h"
+#include "core/validate.h"
+
+namespace vibro {
+
+struct OrbitRequest {
+  OrbitSpec orbit;  // a scene without "periodic_orbit" gets these defaults
+  std::optional<ContinuationSpec> continuation;  // absent: the orbit alone
+};
+
+// Why the request cannot run on this model, naming the field ("periodic_orbit.periods",
+// "model.pellets" when nothing is forced, "periodic_orbit.continuation.to", ...).
+std::optional<FieldError> validate_orbit_request(const Model& model, const OrbitRequest& request);
+
+struct OrbitResult {
+  PeriodicOrbit orbit;
+  // Continued from the orbit when the request asks for it and the orbit converged; otherwise
+  // no points, and its message says why when a continuation was asked for.
+  OrbitBranch branch;
+};
+
+// Finds the orbit, then follows it when the request asks. `progress` (0 to 1) and `cancel` are
+// the continuation's (core/orbit_continuation.h). Call validate_orbit_request first.
+OrbitResult run_orbit_request(const Model& model, const SimOptions& options,
+                              const OrbitRequest& request,
+                              const std::function<void(double done)>& progress = {},
+                              const std::atomic<bool>* cancel = nullptr);
+
+}  // namespace vibro

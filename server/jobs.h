@@ -1,0 +1,100 @@
+// Long work as jobs: a sweep (API.md, "Sweeps", POST /api/sweep) or a periodic orbit followed in
+// a parameter ("Periodic motions and their stability", POST /api/periodic-orbit with a
+// continuation). Queuing one answers at once with its id; its progress, result and cancellation
+// are asked for by id. Jobs run on threads of their own, so they never take the workers that
+// answer interactive simulations and renders; a bounded number run at once, a bounded queue
+// waits, and finished results are kept for a bounded time and number.
+#pragma once
+
+#include <atomic>
+#include <condition_variable>
+#include <deque>
+#include <map>
+#include <memory>
+#include <mutex>
+#include <optional>
+#include <string>
+#include <thread>
+#include <vector>
+
+#include "core/sweep.h"
+#include "io/orbit_request.h"
+#include "io/scene.h"
+
+namespace vibro::server {
+
+enum class JobState { queued, running, done, failed, cancelled };
+std::string_view job_state_name(JobState state);  // "queued", "running", "done", ...
+
+// What a job runs: the scene's sweep, or its periodic orbit and the branch continued from it.
+enum class JobKind { sweep, orbit };
+
+struct Job {
+  std::string id;
+  JobKind kind = JobKind::sweep;
+  Scene scene;  // with what the job runs, its options bounded by the server's limits
+  // Progress: a sweep counts its runs; an orbit its way along the parameter, in thousandths.
+  long total = 0;
+  std::atomic<long> done{0};
+  std::atomic<bool> cancel{false};
+  // Written by the job's thread before its state ends, read only once it has (finished()):
+  std::shared_ptr<const SweepResult> sweep;  // a sweep's
+  std::shared_ptr<const OrbitResult> orbit;  // an orbit's
+  // Guarded by the store's mutex:
+  JobState state = JobState::queued;
+  std::chrono::steady_clock::time_point finished;
+};
+
+struct JobOptions {
+  int jobs = 1;            // jobs running at once
+  int threads = 1;         // threads of one sweep
+  std::size_t queue = 8;   // jobs waiting; beyond it, submit refuses
+  double keep_s = 600.0;   // a finished job's result is kept this long
+  std::size_t kept = 32;   // and at most this many finished jobs
+  std::string id_prefix;   // the ids' first characters ("r2-" for replica 2 of a front door)
+};
+
+// A snapshot of a job, for the status answer.
+struct JobStatus {
+  std::string id;
+  JobState state = JobState::queued;
+  long done = 0;
+  long total = 0;
+};
+
+class Jobs {
+ public:
+  explicit Jobs(const JobOptions& options);
+  // Cancels what runs, drops what waits, joins.
+  ~Jobs();
+  Jobs(const Jobs&) = delete;
+  Jobs& operator=(const Jobs&) = delete;
+
+  // Queues the scene's sweep, or its periodic_orbit with a continuation: its status, or nothing
+  // when the queue is full.
+  std::optional<JobStatus> submit(JobKind kind, Scene scene);
+  std::optional<JobStatus> status(const std::string& id);
+  // The finished job (its scene and result), or nothing while it runs or when unknown.
+  std::shared_ptr<const Job> finished(const std::string& id);
+  // Cancels a queued or running job; its status after, or nothing when unknown.
+  std::optional<JobStatus> cancel(const std::string& id);
+
+ private:
+  void work();
+  // Runs the job to its end and keeps its result; the state it ended in.
+  JobState run(Job& job) const;
+  void forget_old();  // under mutex_
+  JobStatus snapshot(const Job& job) const;
+
+  const JobOptions options_;
+  std::mutex mutex_;
+  std::condition_variable wake_;
+  std::map<std::string, std::shared_ptr<Job>> jobs_;
+  std::deque<std::shared_ptr<Job>> waiting_;
+  std::atomic<std::uint64_t> counter_{0};
+  std::uint64_t salt_ = 0;
+  bool stopping_ = false;
+  std::vector<std::thread> threads_;
+};
+
+}  // namespace vibro::server

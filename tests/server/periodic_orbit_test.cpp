@@ -1,0 +1,120 @@
+// POST /api/periodic-orbit: the impact oscillator's stable period-1 motion answered at once; bad
+// requests refused naming the field; a continuation run as a job whose result is a branch.
+#include <gtest/gtest.h>
+
+#include <chrono>
+#include <complex>
+#include <nlohmann/json.hpp>
+#include <thread>
+
+#include "tests/io/orbit_scene.h"
+#include "tests/server/test_server.h"
+
+namespace vibro::testing {
+namespace {
+
+using nlohmann::json;
+
+httplib::Result post(httplib::Client& c, const json& scene) {
+  return c.Post("/api/periodic-orbit", scene.dump(), "application/json");
+}
+
+class PeriodicOrbitApi : public SharedServerTest {};
+
+TEST_F(PeriodicOrbitApi, TheImpactOscillatorsPeriodOneMotionIsStable) {
+  auto c = server->client();
+  auto res = post(c, impact_oscillator_orbit());
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  EXPECT_EQ(res->get_header_value("Content-Type"), "application/json");
+  const json r = json::parse(res->body);
+  const json& orbit = r["orbit"];
+  EXPECT_EQ(orbit["converged"], true) << orbit["message"];
+  EXPECT_EQ(orbit["stable"], true);
+  EXPECT_EQ(orbit["periods"], 1);
+  EXPECT_EQ(orbit["impacts_per_period"], 1.0);
+  ASSERT_EQ(orbit["multipliers"].size(), 2u);
+  for (const json& m : orbit["multipliers"]) {
+    const std::complex<double> mu(m["re"].get<double>(), m["im"].get<double>());
+    EXPECT_NEAR(std::abs(mu), 0.8, 1e-3);
+    EXPECT_GT(std::abs(mu.imag()), 1e-3);  // a complex pair
+  }
+  EXPECT_EQ(orbit["state"].size(), 1u);
+  EXPECT_FALSE(orbit["events"].empty());
+  EXPECT_TRUE(r["branch"].empty());
+  EXPECT_TRUE(r["bifurcations"].empty());
+}
+
+TEST_F(PeriodicOrbitApi, BadRequestsAreRefusedNamingTheField) {
+  auto c = server->client();
+  auto field = [&](const json& scene) {
+    auto res = post(c, scene);
+    EXPECT_EQ(res->status, 400) << res->body;
+    return json::parse(res->body)["field"].get<std::string>();
+  };
+  json zero = impact_oscillator_orbit();
+  zero["periodic_orbit"]["periods"] = 0;
+  EXPECT_EQ(field(zero), "periodic_orbit.periods");
+  json unforced = impact_oscillator_orbit();
+  unforced["model"]["pellets"][0]["F0"] = 0.0;
+  EXPECT_EQ(field(unforced), "model.pellets");
+  // The defaults of a scene without "periodic_orbit" are checked too.
+  unforced.erase("periodic_orbit");
+  EXPECT_EQ(field(unforced), "model.pellets");
+  json typo = impact_oscillator_orbit();
+  typo["periodic_orbit"]["periodz"] = 1;
+  EXPECT_EQ(field(typo), "periodic_orbit.periodz");
+  json guesses = impact_oscillator_orbit();
+  guesses["periodic_orbit"]["guess"].push_back({{"phi", 0.0}, {"dphi", 0.0}});
+  EXPECT_EQ(field(guesses), "periodic_orbit.guess");
+  json long_search = impact_oscillator_orbit();
+  long_search["periodic_orbit"]["periods"] = 64;  // 41 × 64 periods of 1.05 s: over 1000 s
+  EXPECT_EQ(field(long_search), "periodic_orbit.max_iterations");
+  json costly = impact_oscillator_orbit();
+  costly["periodic_orbit"]["continuation"] = {
+      {"parameter", "model.pellets[0].Omega"}, {"to", 6.5}, {"max_points", 10000}};
+  costly["periodic_orbit"]["periods"] = 16;
+  EXPECT_EQ(field(costly), "periodic_orbit.continuation.max_points");
+  auto query =
+      c.Post("/api/periodic-orbit?periods=2", impact_oscillator_orbit().dump(), "application/json");
+  EXPECT_EQ(query->status, 400);
+  EXPECT_EQ(json::parse(query->body)["field"], "periods");
+}
+
+TEST_F(PeriodicOrbitApi, AContinuationRunsAsAJobAndGivesABranch) {
+  auto c = server->client();
+  json s = impact_oscillator_orbit();
+  s["periodic_orbit"]["continuation"] = {
+      {"parameter", "model.pellets[0].Omega"}, {"to", 6.3}, {"max_points", 30}};
+  auto res = post(c, s);
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  EXPECT_EQ(location, "/api/jobs/" + json::parse(res->body)["id"].get<std::string>());
+
+  json status;
+  for (int k = 0; k < 1200; ++k) {
+    auto poll = c.Get(location.c_str());
+    ASSERT_EQ(poll->status, 200);
+    status = json::parse(poll->body);
+    if (status["status"] != "queued" && status["status"] != "running") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_EQ(status["status"], "done") << status.dump();
+  auto result = c.Get((location + "/result").c_str());
+  ASSERT_EQ(result->status, 200) << result->body;
+  const json r = json::parse(result->body);
+  EXPECT_EQ(r["orbit"]["converged"], true);
+  ASSERT_FALSE(r["branch"].empty()) << r["message"];
+  EXPECT_EQ(r["branch"][0]["value"], 6.0);
+  EXPECT_TRUE(r["bifurcations"].is_array());
+  EXPECT_TRUE(r["reached"].is_boolean());
+  // An orbit's result is JSON only, and takes no plot parameters.
+  EXPECT_EQ(c.Get((location + "/result?format=png").c_str())->status, 400);
+  auto plot = c.Get((location + "/result?plot=bifurcation").c_str());
+  EXPECT_EQ(plot->status, 400);
+  EXPECT_EQ(json::parse(plot->body)["field"], "plot");
+}
+
+}  // namespace
+}  // namespace vibro::testing

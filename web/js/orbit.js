@@ -1,0 +1,60 @@
+// The periodic-motion panel: the scene's periodic motion on the stroboscopic section (API.md,
+// "Periodic motions and their stability"), what it is in words, and a scene that starts on it.
+
+import { ApiError } from "./api.js";
+
+// POSTs the scene with its periodic_orbit request; resolves to the answer's JSON.
+export async function findOrbit(scene, request) {
+  const response = await fetch("/api/periodic-orbit", {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify({ ...scene, periodic_orbit: request }),
+  });
+  let body = null;
+  try {
+    body = await response.json();
+  } catch {
+    // not JSON: the status alone
+  }
+  if (!response.ok) {
+    throw new ApiError(body?.error ?? `${response.status} ${response.statusText}`, { status: response.status, field: body?.field ?? null });
+  }
+  return body;
+}
+
+const digits = (x, n = 4) => (x === null || x === undefined ? "—" : Number(x).toPrecision(n));
+
+function multiplier({ re, im }) {
+  const size = Math.hypot(re, im);
+  const value = Math.abs(im) < 1e-12 ? digits(re) : `${digits(re)} ${im < 0 ? "−" : "+"} ${digits(Math.abs(im))}i`;
+  return `${value} (|μ| = ${digits(size)})`;
+}
+
+// Lines that say what was found, for a person: whether it is a motion, stable or not, its
+// multipliers and impacts, and what the checks said.
+export function describeOrbit(answer) {
+  const o = answer.orbit;
+  if (!o.converged) return [`No periodic motion found: ${o.message}`];
+  const n = o.periods === 1 ? "period-1" : `period-${o.periods}`;
+  const lines = [
+    `A ${o.stable ? "stable" : "unstable"} ${n} motion with ${digits(o.impacts_per_period, 3)} impacts per forcing period (T = ${digits(o.period)} s), returning within ${digits(o.residual, 2)}.`,
+    `State at t = ${digits(o.t0)} s: ${o.state.map((s, i) => `pellet ${i + 1} φ = ${digits(s.phi, 6)} rad, φ̇ = ${digits(s.dphi, 6)} rad/s`).join("; ")}.`,
+    `Floquet multipliers: ${o.multipliers.map(multiplier).join(", ")}${o.exact_jacobian ? "" : ` (${o.jacobian_note})`}.`,
+  ];
+  lines.push(o.admissible ? "Checked as a physical motion: a tighter run returns to it and vouches for its events." : `Not vouched for: ${o.message}`);
+  return lines;
+}
+
+// The scene started on the motion's state, run for one return: its portrait is the closed orbit.
+export function sceneOnOrbit(scene, answer) {
+  const o = answer.orbit;
+  const out = structuredClone(scene);
+  o.state.forEach((s, i) => {
+    out.model.pellets[i].phi0 = s.phi;
+    out.model.pellets[i].dphi0 = s.dphi;
+  });
+  // t0 is a whole number of periods of every force, so the forces' phases are as at t = 0.
+  out.t_end = o.periods * o.period;
+  delete out.periodic_orbit;
+  return out;
+}
