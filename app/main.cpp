@@ -20,7 +20,7 @@ const std::vector<Command>& commands() {
        "[--plot bifurcation|section|impact_map|regime_map] [--pellet I] [--coordinate dphi|phi]",
        sweep_command},
       {"orbit",
-       "vibro orbit SCENE.json | - | --preset NAME [-o OUT.json] (the scene's periodic_orbit, "
+       "vibro orbit SCENE.json | - | --preset NAME [-o OUT.json|.png|.svg|.pdf] (the scene's periodic_orbit, "
        "or a period-1 orbit after 100 periods)",
        orbit_command},
       {"serve", "vibro serve [--host 127.0.0.1] [--port 8080] [--threads N] [--web DIR] "

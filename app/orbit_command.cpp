@@ -1,29 +1,55 @@
-// `vibro orbit SCENE | - | --preset NAME [-o OUT.json]`: finds the periodic motion the scene's
-// "periodic_orbit" asks for (the defaults without one), follows it in a parameter when it asks
-// for a continuation, and writes the result as JSON (API.md, "Periodic motions and their
-// stability"), to stdout without -o. While a branch is followed, a progress bar shows on stderr
-// when that is a terminal. Exits 1 when no orbit was found: the JSON then says why.
+// `vibro orbit SCENE | - | --preset NAME [-o OUT.json|.png|.svg|.pdf]`: finds the periodic motion
+// the scene's "periodic_orbit" asks for (the defaults without one), follows it in a parameter
+// when it asks for a continuation, and writes the result as JSON (API.md, "Periodic motions and
+// their stability"), to stdout without -o; or draws it (render/orbit_figure.h): the continued
+// branch, over the brute-force diagram when the scene's sweep is over the same parameter (run
+// here on every core), or else one return of the motion in the scene's plots. While a branch is
+// followed or a sweep runs, a progress bar shows on stderr when that is a terminal. Exits 1 when
+// no orbit was found: the JSON then says why.
 #include <unistd.h>
 
+#include <algorithm>
 #include <cmath>
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <optional>
+#include <thread>
 
 #include "app/commands.h"
 #include "app/progress_bar.h"
 #include "io/orbit_json.h"
+#include "render/orbit_figure.h"
 
 namespace vibro {
+namespace {
+
+// The scene's sweep, when it draws beneath the branch: the same parameter, one axis.
+std::optional<SweepResult> sweep_beneath(const Scene& scene, const OrbitRequest& request, ProgressBar& bar) {
+  if (!request.continuation || !scene.sweep || scene.sweep->axis2 ||
+      scene.sweep->axis.parameter != request.continuation->parameter)
+    return std::nullopt;
+  SweepControl control;
+  control.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  if (isatty(STDERR_FILENO))
+    control.progress = [&bar](long done, long total) {
+      bar(static_cast<double>(done) / total, "sweep: " + std::to_string(done) + " of " + std::to_string(total) + " runs");
+    };
+  SimOptions options = scene.sim;
+  options.check = false;
+  return run_sweep(scene.model, options, *scene.sweep, control);
+}
+
+}  // namespace
 
 int orbit_command(const Args& args) {
   const auto job = scene_and_output(args, "orbit");
   if (!job) return 2;
   const Scene& scene = job->scene;
   const std::string& out = job->out;
-  // The orbit's figures (PNG, SVG, PDF) are to come from render/; until then only JSON.
-  if (!out.empty() && !out.ends_with(".json")) {
-    print_error("-o", "name the output OUT.json (orbits are not drawn as images yet)");
+  const std::optional<ImageFormat> image = image_format_of_file(out);
+  if (!out.empty() && !out.ends_with(".json") && !image) {
+    print_error("-o", "name the output OUT.json, OUT.png, OUT.svg or OUT.pdf");
     return 2;
   }
   const OrbitRequest request = scene.periodic_orbit.value_or(OrbitRequest{});
@@ -39,10 +65,25 @@ int orbit_command(const Args& args) {
     };
   const OrbitResult result = run_orbit_request(scene.model, scene.sim, request, progress);
   if (progress) bar(1.0, "finished");
-  const std::string text = orbit_result_json(result).dump(2) + "\n";
+  std::string bytes;
+  if (image) {
+    const std::optional<SweepResult> sweep = sweep_beneath(scene, request, bar);
+    const RenderResult drawn = render_orbit_figure(
+        scene.figure, scene.model, scene.sim,
+        {result.orbit, &result.branch, request.continuation ? &*request.continuation : nullptr,
+         sweep ? &*scene.sweep : nullptr, sweep ? &*sweep : nullptr},
+        *image);
+    if (!drawn.ok()) {
+      print_error(drawn.error->field, drawn.error->message);
+      return 1;
+    }
+    bytes.assign(drawn.bytes.begin(), drawn.bytes.end());
+  } else {
+    bytes = orbit_result_json(result).dump(2) + "\n";
+  }
   if (out.empty()) {
-    std::cout << text;
-  } else if (!(std::ofstream(out, std::ios::binary) << text)) {
+    std::cout << bytes;
+  } else if (!(std::ofstream(out, std::ios::binary) << bytes)) {
     print_error("-o", "cannot write " + out);
     return 1;
   }

@@ -11,6 +11,7 @@ echo '{"plots":[{"kind":"cylinder","pellet":0}],"width":900,"height":700}' > /tm
 $vibro preset paper | python3 -c '
 import json,sys; s=json.load(sys.stdin); s.update(json.load(open("/tmp/vibro_cyl_patch.json"))); print(json.dumps(s))' \
   | $vibro render - -o docs/images/paper-cylinder.png > /dev/null
+$vibro orbit --preset impact-oscillator -o docs/images/orbit-branch-impact-oscillator.png
 echo "figures: docs/images/ regenerated"
 
 # The web page with the paper scene, from a real server, in headless Chromium.

@@ -231,7 +231,11 @@ void Api::sweep_post(const httplib::Request& req, httplib::Response& res) {
 }
 
 void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
-  if (auto e = only_params(req, {})) return send_error(res, *e);
+  if (auto e = only_params(req, {"format"})) return send_error(res, *e);
+  const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
+  const std::optional<ImageFormat> image = image_format_named(format);
+  if (format != "json" && !image)
+    return send_error(res, {400, "format", "must be \"json\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
   SceneOrApiError parsed = scene_from_body(req, scene_limits_);
   if (auto* e = std::get_if<ApiError>(&parsed)) return send_error(res, *e);
   Scene scene = std::move(std::get<Scene>(parsed));
@@ -244,7 +248,7 @@ void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
   if (auto e = check_orbit(scene, config_.limits)) return send_error(res, *e);
   scene.sim = bounded_options(scene.sim, config_.limits);
   if (scene.periodic_orbit->continuation) return submit(JobKind::orbit, std::move(scene), res);
-  auto produced = run_on_worker([scene = std::move(scene)] { return orbit_scene(scene); }, res);
+  auto produced = run_on_worker([scene = std::move(scene), image] { return orbit_scene(scene, image); }, res);
   if (!produced) return;
   if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
   Produced& p = std::get<Produced>(*produced);
@@ -282,13 +286,18 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
                                            ", not done: its result is not ready"});
   }
   if (job->kind == JobKind::sweep) return sweep_result(*job, req, res);
-  // An orbit's figures are to come; its result is JSON only for now.
+  // An orbit's result: its JSON, or its continued branch drawn.
   if (auto e = only_params(req, {"format"})) return send_error(res, *e);
-  if (req.has_param("format") && req.get_param_value("format") != "json")
-    return send_error(res, {400, "format", "an orbit's result is \"json\" only, got \"" +
-                                               req.get_param_value("format") + "\""});
+  const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
   res.set_header("Cache-Control", "no-store");
-  res.set_content(orbit_result_json(*job->orbit).dump(), "application/json");
+  if (format == "json") return res.set_content(orbit_result_json(*job->orbit).dump(), "application/json");
+  const auto image_format = image_format_named(format);
+  if (!image_format)
+    return send_error(res, {400, "format", "must be \"json\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
+  JobResult drawn = orbit_image(job->scene, *job->orbit, *image_format);
+  if (auto* e = std::get_if<ApiError>(&drawn)) return send_error(res, *e);
+  Produced& p = std::get<Produced>(drawn);
+  res.set_content(std::move(p.body), p.content_type);
 }
 
 void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Response& res) {

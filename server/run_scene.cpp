@@ -10,6 +10,7 @@
 #include "io/orbit_json.h"
 #include "io/work_precision_json.h"
 #include "io/result_json.h"
+#include "render/orbit_figure.h"
 #include "render/run_plan.h"
 
 namespace vibro::server {
@@ -140,8 +141,18 @@ std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits) {
   return std::nullopt;
 }
 
-JobResult orbit_scene(const Scene& scene) {
+JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format) {
+  const auto& continuation = scene.periodic_orbit->continuation;
+  const RenderResult image =
+      render_orbit_figure(scene.figure, scene.model, scene.sim,
+                          {result.orbit, &result.branch, continuation ? &*continuation : nullptr}, format);
+  if (!image.ok()) return ApiError::from(*image.error, image.error->field == "periodic_orbit" ? 422 : 500);
+  return Produced{std::string(image.bytes.begin(), image.bytes.end()), image.content_type};
+}
+
+JobResult orbit_scene(const Scene& scene, std::optional<ImageFormat> image) {
   const OrbitResult result = run_orbit_request(scene.model, scene.sim, *scene.periodic_orbit);
+  if (image) return orbit_image(scene, result, *image);
   return Produced{orbit_result_json(result).dump(), "application/json"};
 }
 

@@ -7,6 +7,7 @@
 #include <string>
 #include <variant>
 
+#include "io/orbit_request.h"
 #include "io/run_csv.h"
 #include "io/scene.h"
 #include "render/figure.h"
@@ -40,8 +41,12 @@ std::optional<ApiError> check_sweep(const Scene& scene, const Limits& limits);
 // points × periods, within the server's limits. The error names the periodic_orbit's field.
 std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits);
 
-// The scene's periodic orbit as API.md's JSON, without continuation (that is a job's).
-JobResult orbit_scene(const Scene& scene);
+// The scene's periodic orbit as API.md's JSON, without continuation (that is a job's); or, when
+// `image` names a format, one return of the motion drawn in the scene's plots.
+JobResult orbit_scene(const Scene& scene, std::optional<ImageFormat> image = std::nullopt);
+
+// A finished orbit job's result drawn: its continued branch (render/orbit_figure.h).
+JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format);
 
 // The scene's run options within the server's limits (events, steps, deadline per run).
 SimOptions bounded_options(const SimOptions& options, const Limits& limits);

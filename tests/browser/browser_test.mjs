@@ -301,6 +301,27 @@ try {
     expect(Math.abs(omega - 6) < 0.3, `the click set Ω = ${omega}, not about 6 rad/s`);
   });
 
+  await check("the periodic-motion panel finds the impact oscillator's motion and draws it", async () => {
+    // The preset at Ω = 5 rad/s (picked above, then set again): past the period doubling, its
+    // period-1 motion is unstable, a multiplier below −1.
+    const before = await runCount(page);
+    await page.selectOption("#preset", "impact-oscillator");
+    const picked = await waitForRun(page, before);
+    await page.click("#orbit-find");
+    await page.waitForFunction(() => document.getElementById("orbit-result").dataset.state !== "busy", null, { timeout: 30000 });
+    const text = await page.textContent("#orbit-result");
+    expect((await page.getAttribute("#orbit-result", "data-state")) === "done", `the search ended: ${text}`);
+    expect(text.includes("unstable period-1 motion"), `the answer: ${text}`);
+    expect(/Floquet multipliers: -1\.6/.test(text), `the multipliers: ${text}`);
+    await page.click("#orbit-draw");
+    await waitForRun(page, picked);
+    const tEnd = Number(await page.inputValue('[data-field="t_end"]'));
+    expect(Math.abs(tEnd - (2 * Math.PI) / 5) < 1e-9, `the scene runs one period: t_end = ${tEnd}`);
+    const fig = await pixelsOf(page, "figure");
+    expect(fig.ink > 0.002, "the orbit's figure is blank");
+    await page.screenshot({ path: join(shots, "orbit.png"), fullPage: true });
+  });
+
   await check("no script errors on the page", async () => {
     expect(pageErrors.length === 0, pageErrors.join("; "));
   });

@@ -81,6 +81,17 @@ TEST_F(PeriodicOrbitApi, BadRequestsAreRefusedNamingTheField) {
   EXPECT_EQ(json::parse(query->body)["field"], "periods");
 }
 
+TEST_F(PeriodicOrbitApi, AskedForAnImageItDrawsOneReturnOfTheMotion) {
+  auto c = server->client();
+  auto png = c.Post("/api/periodic-orbit?format=png", impact_oscillator_orbit().dump(), "application/json");
+  ASSERT_EQ(png->status, 200) << png->body;
+  EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
+  EXPECT_TRUE(png->body.starts_with("\x89PNG"));
+  auto bad = c.Post("/api/periodic-orbit?format=gif", impact_oscillator_orbit().dump(), "application/json");
+  EXPECT_EQ(bad->status, 400);
+  EXPECT_EQ(json::parse(bad->body)["field"], "format");
+}
+
 TEST_F(PeriodicOrbitApi, AContinuationRunsAsAJobAndGivesABranch) {
   auto c = server->client();
   json s = impact_oscillator_orbit();
@@ -109,8 +120,17 @@ TEST_F(PeriodicOrbitApi, AContinuationRunsAsAJobAndGivesABranch) {
   EXPECT_EQ(r["branch"][0]["value"], 6.0);
   EXPECT_TRUE(r["bifurcations"].is_array());
   EXPECT_TRUE(r["reached"].is_boolean());
-  // An orbit's result is JSON only, and takes no plot parameters.
-  EXPECT_EQ(c.Get((location + "/result?format=png").c_str())->status, 400);
+  // Drawn, its branch; no other format, and no plot parameters.
+  auto png = c.Get((location + "/result?format=png").c_str());
+  ASSERT_EQ(png->status, 200) << png->body;
+  EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
+  EXPECT_TRUE(png->body.starts_with("\x89PNG"));
+  auto svg = c.Get((location + "/result?format=svg").c_str());
+  ASSERT_EQ(svg->status, 200);
+  EXPECT_NE(svg->body.find("stable periodic motion"), std::string::npos);
+  auto csv = c.Get((location + "/result?format=csv").c_str());
+  EXPECT_EQ(csv->status, 400);
+  EXPECT_EQ(json::parse(csv->body)["field"], "format");
   auto plot = c.Get((location + "/result?plot=bifurcation").c_str());
   EXPECT_EQ(plot->status, 400);
   EXPECT_EQ(json::parse(plot->body)["field"], "plot");

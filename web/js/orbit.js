@@ -2,6 +2,7 @@
 // "Periodic motions and their stability"), what it is in words, and a scene that starts on it.
 
 import { ApiError } from "./api.js";
+import { formatState, formatValue } from "./numbers.js";
 
 // POSTs the scene with its periodic_orbit request; resolves to the answer's JSON.
 export async function findOrbit(scene, request) {
@@ -22,7 +23,7 @@ export async function findOrbit(scene, request) {
   return body;
 }
 
-const digits = (x, n = 4) => (x === null || x === undefined ? "—" : Number(x).toPrecision(n));
+const digits = (x, n = 4) => (x === null || x === undefined ? "—" : formatValue(x, n));
 
 function multiplier({ re, im }) {
   const size = Math.hypot(re, im);
@@ -37,8 +38,8 @@ export function describeOrbit(answer) {
   if (!o.converged) return [`No periodic motion found: ${o.message}`];
   const n = o.periods === 1 ? "period-1" : `period-${o.periods}`;
   const lines = [
-    `A ${o.stable ? "stable" : "unstable"} ${n} motion with ${digits(o.impacts_per_period, 3)} impacts per forcing period (T = ${digits(o.period)} s), returning within ${digits(o.residual, 2)}.`,
-    `State at t = ${digits(o.t0)} s: ${o.state.map((s, i) => `pellet ${i + 1} φ = ${digits(s.phi, 6)} rad, φ̇ = ${digits(s.dphi, 6)} rad/s`).join("; ")}.`,
+    `${o.stable ? "A stable" : "An unstable"} ${n} motion with ${digits(o.impacts_per_period, 3)} ${o.impacts_per_period === 1 ? "impact" : "impacts"} per forcing period (T = ${digits(o.period)} s), returning within ${digits(o.residual, 2)}.`,
+    `State at t = ${digits(o.t0)} s: ${o.state.map((s, i) => `pellet ${i + 1} φ = ${formatState(s.phi)} rad, φ̇ = ${formatState(s.dphi)} rad/s`).join("; ")}.`,
     `Floquet multipliers: ${o.multipliers.map(multiplier).join(", ")}${o.exact_jacobian ? "" : ` (${o.jacobian_note})`}.`,
   ];
   lines.push(o.admissible ? "Checked as a physical motion: a tighter run returns to it and vouches for its events." : `Not vouched for: ${o.message}`);
