@@ -152,6 +152,16 @@ struct PathSegment {
   double t_end = 0.0;               // the interval's end: the next instant, or the run's end
 };
 
+// Lyapunov exponents of the run's motion (core/lyapunov.h).
+struct LyapunovSpectrum {
+  // 1/s, largest first, one per phase-space dimension (2 per pellet). −infinity for a direction
+  // perturbations die in: a pellet held by friction or resting on a limiter keeps no memory of
+  // how it got there.
+  std::vector<double> exponents;
+  double span = 0.0;        // s: the time they are averaged over
+  std::string unsupported;  // non-empty: the path holds what the saltations do not cover
+};
+
 struct RunResult {
   std::vector<Event> events;
   std::vector<StateAt> stops;  // those reached, in order
@@ -162,6 +172,7 @@ struct RunResult {
   // The earliest near miss (core/watch.h): the trust ends before it.
   std::optional<Graze> graze;
   std::vector<PathSegment> path;  // SimOptions::keep_path
+  std::optional<LyapunovSpectrum> lyapunov;  // SimOptions::lyapunov
 };
 
 }  // namespace vibro

@@ -39,6 +39,9 @@ struct SimOptions {
   double keep_events_from = -std::numeric_limits<double>::infinity();
   // Keep the run's hybrid path (RunResult::path): what the variational equations replay.
   bool keep_path = false;
+  // The Lyapunov exponents of the motion from keep_events_from (or 0) to the end
+  // (RunResult::lyapunov, core/lyapunov.h).
+  bool lyapunov = false;
 };
 
 // Limits on what validate() accepts; a server tightens them.

@@ -14,6 +14,7 @@
 #include "core/event_tolerances.h"
 #include "core/instant.h"
 #include "core/interval.h"
+#include "core/lyapunov.h"
 #include "core/recorder.h"
 #include "core/summary.h"
 #include "core/trust.h"
@@ -331,10 +332,26 @@ RunResult Simulation::run() {
   return result;
 }
 
+// The options the simulation runs with: the path kept where the exponents need it.
+SimOptions with_path(const SimOptions& options) {
+  SimOptions o = options;
+  o.keep_path = options.keep_path || options.lyapunov;
+  return o;
+}
+
+// The exponents from the path, which is then dropped unless it was asked for.
+void add_lyapunov(const Model& model, const SimOptions& options, RunResult& run) {
+  if (!options.lyapunov) return;
+  run.lyapunov = lyapunov_spectrum(model, run.path, options.rtol, std::max(0.0, options.keep_events_from));
+  if (!options.keep_path) run.path.clear();
+}
+
 }  // namespace
 
 RunResult simulate(const Model& model, const SimOptions& options) {
-  RunResult run = Simulation(model, options, nullptr).run();
+  const SimOptions o = with_path(options);
+  RunResult run = Simulation(model, o, nullptr).run();
+  add_lyapunov(model, options, run);
   if (!options.check) {
     apply_unchecked(model, run);
     return run;
@@ -346,7 +363,9 @@ RunResult simulate(const Model& model, const SimOptions& options) {
 }
 
 RunResult simulate(const Model& model, const SimOptions& options, std::unique_ptr<Stepper> stepper) {
-  RunResult run = Simulation(model, options, std::move(stepper)).run();
+  const SimOptions o = with_path(options);
+  RunResult run = Simulation(model, o, std::move(stepper)).run();
+  add_lyapunov(model, options, run);
   apply_unchecked(model, run);
   return run;
 }

@@ -7,7 +7,6 @@
 #include <thread>
 #include <tuple>
 
-#include "core/lyapunov.h"
 #include "core/parameter.h"
 #include "core/simulate.h"
 
@@ -95,7 +94,7 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
   o.record.clear();
   o.stops.clear();
   o.keep_events_from = t_record;
-  o.keep_path = spec.lyapunov;
+  o.lyapunov = spec.lyapunov;
   if (spec.section == SectionKind::stroboscopic)
     for (int k = spec.transient; k <= spec.transient + spec.record; ++k) o.stops.push_back(k * T);
   Model m = model;
@@ -135,10 +134,8 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
                 r.stats.trusted_until >= r.stats.t_reached;
   run.error_estimate = r.stats.error_estimate;
   run.trusted_until = r.stats.trusted_until;
-  if (spec.lyapunov) {
-    const LyapunovSpectrum L = lyapunov_spectrum(m, r.path, o.rtol, t_record);
-    if (L.unsupported.empty() && !L.exponents.empty()) run.lyapunov = L.exponents.front();
-  }
+  if (r.lyapunov && r.lyapunov->unsupported.empty() && !r.lyapunov->exponents.empty())
+    run.lyapunov = r.lyapunov->exponents.front();
   last.phi.clear();
   last.dphi.clear();
   for (const FinalState& f : r.summary.final) {

@@ -208,6 +208,7 @@ SimOptions check_options(const SimOptions& run) {
   o.stops.clear();
   o.check = false;
   o.keep_path = false;
+  o.lyapunov = false;
   return o;
 }
 

@@ -190,6 +190,13 @@ json result_to_json(const RunResult& run, const Model& model) {
                         {"t_end", finite_number(w.t_end)}});
   }
   json j = {{"events", events}, {"summary", summary}, {"stats", stats}, {"warnings", warnings}};
+  if (run.lyapunov) {
+    // −infinity (a direction perturbations die in) is written as null.
+    json exponents = json::array();
+    for (double l : run.lyapunov->exponents) exponents.push_back(finite_number(l));
+    j["lyapunov"] = {{"exponents", exponents}, {"span", finite_number(run.lyapunov->span)}};
+    if (!run.lyapunov->unsupported.empty()) j["lyapunov"]["unsupported"] = run.lyapunov->unsupported;
+  }
   if (!run.tracks.empty()) {
     json tracks = json::array();
     for (const PelletTrack& t : run.tracks) tracks.push_back(track_json(t));

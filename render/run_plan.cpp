@@ -10,6 +10,7 @@ RunPlan plan_run(const FigureSpec& figure, const SimOptions& base, int pellets) 
   plan.options.record.assign(pellets, false);
   // The trust check's fields are answered by a run's JSON; nothing drawn reads them yet.
   plan.options.check = false;
+  plan.options.lyapunov = false;
   double until = 0.0;
   for (const PlotSpec& p : figure.plots) {
     if (p.kind == PlotKind::work_precision) {
