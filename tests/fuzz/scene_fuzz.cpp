@@ -1,6 +1,10 @@
 // libFuzzer target: arbitrary bytes as a scene. Whatever parses is simulated and drawn with
-// small limits, and the run's contract (tests/robustness/run_invariants.h) is checked; a broken
-// invariant aborts so that libFuzzer keeps the input. Built only with VIBRO_BUILD_FUZZ (clang).
+// small limits, and the run's contract (tests/robustness/run_invariants.h) is checked; a scene
+// with a periodic_orbit also has its orbit sought (a few Newton steps, no continuation: that is
+// a job's, bounded by the server's cost checks). A broken invariant aborts so that libFuzzer
+// keeps the input. Built only with VIBRO_BUILD_FUZZ (clang).
+#include <algorithm>
+#include <cmath>
 #include <cstdint>
 #include <cstdio>
 #include <cstdlib>
@@ -8,6 +12,8 @@
 #include <string_view>
 
 #include "core/simulate.h"
+#include "io/orbit_json.h"
+#include "io/orbit_request.h"
 #include "io/scene_json.h"
 #include "render/figure.h"
 #include "render/run_plan.h"
@@ -64,5 +70,28 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const RenderResult image = render_figure(scene->figure, scene->model, run, format);
   if (image.ok()) check(!image.bytes.empty(), "a drawn figure has bytes");
   else check(!image.error->field.empty(), "a render error names its field");
+
+  if (!scene->periodic_orbit) return 0;
+  OrbitRequest request = *scene->periodic_orbit;
+  request.continuation.reset();
+  request.orbit.periods = std::min(request.orbit.periods, 2);
+  request.orbit.transient = std::min(request.orbit.transient, 5);
+  request.orbit.max_iterations = std::min(request.orbit.max_iterations, 3);
+  if (const auto e = validate_orbit_request(scene->model, request)) {
+    check(!e->field.empty(), "an orbit refusal names a field");
+    return 0;
+  }
+  SimOptions options = plan.options;
+  options.t_end = scene->sim.t_end;
+  const OrbitResult found = run_orbit_request(scene->model, options, request);
+  const PeriodicOrbit& o = found.orbit;
+  if (o.converged) {
+    check(std::isfinite(o.residual), "a converged orbit's residual is finite");
+    for (const auto& mu : o.multipliers) check(std::isfinite(std::abs(mu)), "multipliers are finite");
+    for (const PhasePoint& p : o.state) check(std::isfinite(p.phi) && std::isfinite(p.dphi), "the state is finite");
+  } else {
+    check(!o.message.empty(), "an orbit not found says why");
+  }
+  check(!orbit_result_json(found).dump().empty(), "the orbit's answer is JSON");
   return 0;
 }
