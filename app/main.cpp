@@ -17,7 +17,8 @@ const std::vector<Command>& commands() {
        work_precision_command},
       {"sweep",
        "vibro sweep SCENE.json | - | --preset NAME [-o OUT.json|.csv|.png|.svg] [--threads N] "
-       "[--plot bifurcation|section|impact_map|regime_map] [--pellet I] [--coordinate dphi|phi]",
+       "[--plot bifurcation|section|impact_map|regime_map|lyapunov|lyapunov_map] [--pellet I] "
+       "[--coordinate dphi|phi]",
        sweep_command},
       {"orbit",
        "vibro orbit SCENE.json | - | --preset NAME [-o OUT.json|.png|.svg|.pdf] (the scene's periodic_orbit, "

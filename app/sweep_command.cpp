@@ -1,10 +1,11 @@
 // `vibro sweep SCENE | --preset NAME [-o OUT.json|.csv|.png|.svg|.pdf] [--threads N] [--plot KIND]
 // [--pellet I] [--coordinate dphi|phi] [--resume]`: runs the scene's sweep on every core (or N
 // threads), and under mpirun or srun on every rank's (app/mpi_sweep.h); writes its points (JSON
-// to stdout without -o) or draws it (a bifurcation diagram, a section, an impact map or a regime
-// map), and shows a progress bar with the time left on stderr when that is a terminal. With -o,
-// finished chains are kept in OUT.partial as they finish, so a sweep that stops (a failed rank,
-// a killed job, Ctrl-C) resumes with --resume; OUT.partial goes once OUT is written.
+// to stdout without -o) or draws it (a bifurcation diagram, a section, an impact map, a regime
+// map, or its largest Lyapunov exponents as a line or a map), and shows a progress bar with the
+// time left on stderr when that is a terminal. With -o, finished chains are kept in OUT.partial
+// as they finish, so a sweep that stops (a failed rank, a killed job, Ctrl-C) resumes with
+// --resume; OUT.partial goes once OUT is written.
 #include <unistd.h>
 
 #include <algorithm>
@@ -94,13 +95,19 @@ std::optional<SweepJob> prepare(const Args& args, bool root, int& code) {
   }
   const auto kind = sweep_plot_kind(plot_name, *job.scene.sweep);
   if (!kind) {
-    usage_error("--plot", "must be \"bifurcation\", \"section\", \"impact_map\" or \"regime_map\"");
+    usage_error("--plot", std::string("must be ") + kSweepPlotNames);
     return std::nullopt;
   }
   job.plot.kind = *kind;
   job.image = image_format_of_file(job.out);
   if (!job.out.empty() && !job.out.ends_with(".json") && !job.out.ends_with(".csv") && !job.image) {
     usage_error("-o", "name the output OUT.json, OUT.csv, OUT.png, OUT.svg or OUT.pdf");
+    return std::nullopt;
+  }
+  // Before the sweep runs, not after it: a plot of what the sweep does not compute.
+  if (const auto e =
+          job.image ? validate_sweep_plot(job.plot.kind, *job.scene.sweep) : std::nullopt) {
+    usage_error(e->field, e->message);
     return std::nullopt;
   }
   if (resume && job.out.empty()) {

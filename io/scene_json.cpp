@@ -226,6 +226,7 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
     s.sim.t_end = *t_end;
     if (const json* solver = f.value("solver")) read_solver(*solver, s.sim);
     s.trajectories = f.boolean("trajectories", false);
+    s.sim.lyapunov = f.boolean("lyapunov", false);
     if (const json* plots = f.array("plots", limits.max_plots)) {
       for (std::size_t i = 0; i < plots->size(); ++i)
         s.figure.plots.push_back(read_plot((*plots)[i], item("plots", i), s.model.size()));
@@ -383,6 +384,8 @@ json scene_to_json(const Scene& s) {
       case PlotKind::section: pj["kind"] = "section"; break;
       case PlotKind::impact_map: pj["kind"] = "impact_map"; break;
       case PlotKind::regime_map: pj["kind"] = "regime_map"; break;
+      case PlotKind::lyapunov: pj["kind"] = "lyapunov"; break;
+      case PlotKind::lyapunov_map: pj["kind"] = "lyapunov_map"; break;
       case PlotKind::branch: pj["kind"] = "branch"; break;
     }
     if (p.kind == PlotKind::time) {
@@ -420,6 +423,7 @@ json scene_to_json(const Scene& s) {
                  {"atol", s.sim.atol},
                  {"check", s.sim.check}};
   if (s.trajectories) j["trajectories"] = true;
+  if (s.sim.lyapunov) j["lyapunov"] = true;
   j["plots"] = plots;
   j["width"] = s.figure.width;
   j["height"] = s.figure.height;

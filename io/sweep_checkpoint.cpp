@@ -10,11 +10,13 @@
 namespace vibro {
 namespace {
 
-constexpr char kMagic[] = "vibro sweep checkpoint v1";
+constexpr char kKind[] = "vibro sweep checkpoint ";
+// The version of the records (io/sweep_wire.cpp); v2: runs carry their Lyapunov exponent.
+constexpr char kVersion[] = "v2";
 
 std::string header(std::uint64_t fingerprint) {
   char line[96];
-  std::snprintf(line, sizeof line, "%s %016llx\n", kMagic,
+  std::snprintf(line, sizeof line, "%s%s %016llx\n", kKind, kVersion,
                 static_cast<unsigned long long>(fingerprint));
   return line;
 }
@@ -41,7 +43,11 @@ std::variant<Checkpoint, std::string> read_checkpoint(const std::string& path,
   if (!file) return path + " does not exist: there is no partial sweep to resume";
   const std::string bytes((std::istreambuf_iterator<char>(file)), std::istreambuf_iterator<char>());
   const std::string head = header(fingerprint);
-  if (!bytes.starts_with(kMagic)) return path + " is not a vibro sweep checkpoint";
+  if (!bytes.starts_with(kKind)) return path + " is not a vibro sweep checkpoint";
+  if (!std::string_view(bytes).substr(sizeof kKind - 1).starts_with(std::string(kVersion) + " "))
+    return path +
+           " was written by another version of vibro, whose runs this one cannot read: "
+           "remove it to start afresh";
   if (!bytes.starts_with(head))
     return path + " belongs to another scene or other options: resume with the scene that made it";
   const ReadChains read = read_chains(std::string_view(bytes).substr(head.size()));

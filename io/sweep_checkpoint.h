@@ -1,6 +1,7 @@
 // A sweep's finished chains kept in a file as they finish (OUT.partial beside the output OUT), so
 // that a sweep stopped by a failure, a killed job or Ctrl-C loses nothing and can resume: its
-// first line says what it is and which scene it belongs to, the records (io/sweep_wire.h) follow.
+// first line says what it is, the version of its records and which scene it belongs to, the
+// records (io/sweep_wire.h) follow.
 #pragma once
 
 #include <cstdint>
@@ -27,8 +28,8 @@ struct Checkpoint {
 };
 
 // Reads a checkpoint written for the scene of `fingerprint`; an error a person reads when the
-// file is missing, another scene's, or not a checkpoint. A last record cut off mid-write is left
-// out (and overwritten when the sweep resumes).
+// file is missing, another scene's, another version's, or not a checkpoint. A last record cut off
+// mid-write is left out (and overwritten when the sweep resumes).
 std::variant<Checkpoint, std::string> read_checkpoint(const std::string& path,
                                                       std::uint64_t fingerprint);
 

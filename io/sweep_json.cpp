@@ -44,6 +44,14 @@ const char* continuation_name(Continuation c) {
   return "none";
 }
 
+// A CSV cell: empty without an exponent, "-inf" where every perturbation dies.
+std::string lyapunov_cell(const std::optional<double>& lyapunov) {
+  if (!lyapunov) return "";
+  std::ostringstream cell;
+  cell << std::setprecision(17) << *lyapunov;  // "-inf" for −infinity, as strtod reads it back
+  return cell.str();
+}
+
 }  // namespace
 
 SweepSpec read_sweep(const json& j) {
@@ -76,6 +84,7 @@ SweepSpec read_sweep(const json& j) {
     if (*seed < 0) throw FieldException("sweep.seed", "must not be negative");
     s.seed = static_cast<std::uint64_t>(*seed);
   }
+  s.lyapunov = f.boolean("lyapunov", s.lyapunov);
   f.done();
   return s;
 }
@@ -92,6 +101,7 @@ json sweep_to_json(const SweepSpec& s) {
   j["continuation"] = continuation_name(s.continuation);
   j["initial_states"] = s.initial_states;
   j["seed"] = s.seed;
+  j["lyapunov"] = s.lyapunov;
   return j;
 }
 
@@ -100,13 +110,13 @@ json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
        direction = json::array(), pellet = json::array(), t = json::array(), phi = json::array(),
        dphi = json::array(), phase = json::array(), limiter = json::array(), run_of = json::array(),
        point_trusted = json::array();
-  json runs = {{"value", json::array()},     {"value2", json::array()},
-               {"start", json::array()},     {"direction", json::array()},
-               {"period", json::array()},    {"impacts_per_period", json::array()},
-               {"at_rest", json::array()},   {"sticks", json::array()},
-               {"trusted", json::array()},   {"trusted_until", json::array()},
-               {"termination", json::array()},
-               {"message", json::array()},   {"error_estimate", json::array()}};
+  json runs = {{"value", json::array()},          {"value2", json::array()},
+               {"start", json::array()},          {"direction", json::array()},
+               {"period", json::array()},         {"impacts_per_period", json::array()},
+               {"at_rest", json::array()},        {"sticks", json::array()},
+               {"trusted", json::array()},        {"trusted_until", json::array()},
+               {"termination", json::array()},    {"message", json::array()},
+               {"error_estimate", json::array()}, {"lyapunov", json::array()}};
   for (std::size_t r = 0; r < result.runs.size(); ++r) {
     const SweepRun& run = result.runs[r];
     for (const SectionPoint& p : run.points) {
@@ -136,6 +146,8 @@ json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
     runs["termination"].push_back(termination_name(run.termination));
     runs["message"].push_back(run.message);
     runs["error_estimate"].push_back(finite_number(run.error_estimate));
+    // JSON has no −infinity: null, as for a run without an exponent (docs/SWEEPS.md).
+    runs["lyapunov"].push_back(run.lyapunov ? finite_number(*run.lyapunov) : json(nullptr));
   }
   json points = {{"value", value}, {"value2", value2}, {"start", start},   {"direction", direction},
                  {"pellet", pellet}, {"t", t},          {"phi", phi},       {"dphi", dphi},
@@ -159,6 +171,8 @@ std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec
   if (name == "section") return PlotKind::section;
   if (name == "impact_map") return PlotKind::impact_map;
   if (name == "regime_map") return PlotKind::regime_map;
+  if (name == "lyapunov") return PlotKind::lyapunov;
+  if (name == "lyapunov_map") return PlotKind::lyapunov_map;
   return std::nullopt;
 }
 
@@ -166,13 +180,13 @@ std::string sweep_result_csv(const SweepResult& result) {
   std::ostringstream out;
   out << std::setprecision(17);
   out << "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
-         "impacts_per_period\n";
+         "impacts_per_period,lyapunov\n";
   for (const SweepRun& run : result.runs)
     for (const SectionPoint& p : run.points)
       out << run.value << ',' << run.value2 << ',' << run.start << ',' << run.direction << ','
           << p.pellet << ',' << p.t << ',' << p.phi << ',' << p.dphi << ',' << p.phase << ','
           << p.limiter << ',' << (p.trusted ? 1 : 0) << ',' << run.period << ','
-          << run.impacts_per_period << '\n';
+          << run.impacts_per_period << ',' << lyapunov_cell(run.lyapunov) << '\n';
   return out.str();
 }
 

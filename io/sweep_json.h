@@ -16,14 +16,20 @@ SweepSpec read_sweep(const nlohmann::json& json);
 nlohmann::json sweep_to_json(const SweepSpec& spec);
 
 // {"parameter", "parameter2", "section", "points": {columns}, "runs": {columns}, "stats"}:
-// one entry per section point, and one per run with its period, impacts per period and trust.
+// one entry per section point, and one per run with its period, impacts per period, trust and
+// largest Lyapunov exponent (null without one, and for −infinity, which JSON cannot hold).
 nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& result);
-// The points as CSV with a header row, one line per point, each run's classification on it.
+// The points as CSV with a header row, one line per point, each run's classification on it; the
+// Lyapunov exponent last, empty without one and "-inf" where every perturbation dies.
 std::string sweep_result_csv(const SweepResult& result);
 
-// The plot a sweep is drawn as: "bifurcation", "section", "impact_map" or "regime_map"; an empty
-// name picks the regime map for a 2-D sweep and the bifurcation diagram otherwise. Nothing for
-// another name.
+// The plot a sweep is drawn as: one of kSweepPlotNames; an empty name picks the regime map for a
+// 2-D sweep and the bifurcation diagram otherwise. Nothing for another name. Whether the sweep
+// can be drawn so (the Lyapunov plots need "lyapunov": true) is validate_sweep_plot's question
+// (render/figure.h).
 std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec& spec);
+inline constexpr const char* kSweepPlotNames =
+    "\"bifurcation\", \"section\", \"impact_map\", \"regime_map\", \"lyapunov\" or "
+    "\"lyapunov_map\"";
 
 }  // namespace vibro

@@ -79,6 +79,8 @@ void put_run(Writer& w, const SweepRun& r) {
   w.put<std::int32_t>(static_cast<std::int32_t>(r.termination));
   w.put_string(r.message);
   w.put(r.error_estimate);
+  w.put<std::uint8_t>(r.lyapunov.has_value());
+  if (r.lyapunov) w.put(*r.lyapunov);
 }
 
 SweepRun get_run(Reader& in) {
@@ -111,6 +113,7 @@ SweepRun get_run(Reader& in) {
   r.termination = static_cast<Termination>(termination);
   r.message = in.get_string();
   r.error_estimate = in.get<double>();
+  if (in.get<std::uint8_t>() != 0) r.lyapunov = in.get<double>();
   return r;
 }
 

@@ -38,6 +38,18 @@ std::optional<FieldError> check_tracks(const FigureSpec& figure, const Model& mo
   return std::nullopt;
 }
 
+// The panel of a sweep's plot kind (bifurcation, section, impact map: a cloud of points).
+void draw_sweep_panel(cairo_t* cr, const render::PanelInput& in) {
+  if (in.spec.kind == PlotKind::regime_map)
+    render::draw_regime_map_panel(cr, in);
+  else if (in.spec.kind == PlotKind::lyapunov)
+    render::draw_lyapunov_panel(cr, in);
+  else if (in.spec.kind == PlotKind::lyapunov_map)
+    render::draw_lyapunov_map_panel(cr, in);
+  else
+    render::draw_sweep_points_panel(cr, in);
+}
+
 std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, const Model& model,
                                       const RunResult& run, const PanelData& data) {
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
@@ -66,12 +78,12 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
       case PlotKind::section:
       case PlotKind::impact_map:
       case PlotKind::regime_map:
+      case PlotKind::lyapunov:
+      case PlotKind::lyapunov_map:
         if (!data.sweep || !data.sweep_spec)
           return FieldError{"plots[" + std::to_string(i) + "].kind", "needs a sweep"};
-        if (figure.plots[i].kind == PlotKind::regime_map)
-          render::draw_regime_map_panel(cr, in);
-        else
-          render::draw_sweep_points_panel(cr, in);
+        if (auto e = validate_sweep_plot(figure.plots[i].kind, *data.sweep_spec)) return e;
+        draw_sweep_panel(cr, in);
         break;
       case PlotKind::branch:
         if (!data.branch || !data.continuation)

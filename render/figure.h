@@ -52,6 +52,11 @@ struct RenderResult {
 std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model& model,
                                           ImageFormat format);
 
+// Whether a sweep can be drawn as a plot of this kind, before it runs: the Lyapunov plots need
+// the exponents ("sweep.lyapunov": true), and a line of them against one parameter a 1-D sweep
+// (a 2-D one is drawn as a Lyapunov map). The field named is the sweep's.
+std::optional<FieldError> validate_sweep_plot(PlotKind kind, const SweepSpec& spec);
+
 // What panels that draw more than the run draw: work-precision panels a report, bifurcation
 // panels a sweep and its spec, branch panels a continued periodic motion (and a sweep of the same
 // scene beneath it, if given; a bifurcation panel draws a given branch over its points).
@@ -68,9 +73,9 @@ struct PanelData {
 RenderResult render_figure(const FigureSpec& figure, const Model& model, const RunResult& run,
                            ImageFormat format, const PanelData& data = {});
 
-// Where the swept parameter lies in the first panel of a figure drawn with a bifurcation or
-// regime-map panel first: its plot area in image pixels and the parameter values at its left and
-// right edges, so a click on the image can name a value. Nothing for other panels.
+// Where the swept parameter lies in the first panel of a figure drawn with a bifurcation,
+// regime-map or Lyapunov panel first: its plot area in image pixels and the parameter values at its
+// left and right edges, so a click on the image can name a value. Nothing for other panels.
 struct ParameterAxis {
   double left = 0.0, top = 0.0, width = 0.0, height = 0.0;  // px
   double from = 0.0, to = 0.0;  // the parameter at the left and right edges

@@ -66,6 +66,19 @@ std::optional<FieldError> check_side(const char* field, int side) {
 
 }  // namespace
 
+std::optional<FieldError> validate_sweep_plot(PlotKind kind, const SweepSpec& spec) {
+  if (kind != PlotKind::lyapunov && kind != PlotKind::lyapunov_map) return std::nullopt;
+  const std::string name = kind == PlotKind::lyapunov ? "\"lyapunov\"" : "\"lyapunov_map\"";
+  if (!spec.lyapunov)
+    return FieldError{"sweep.lyapunov", "must be true for the " + name +
+                                            " plot: this sweep computed no Lyapunov exponents"};
+  if (kind == PlotKind::lyapunov && spec.axis2)
+    return FieldError{"sweep.parameter2",
+                      "makes a 2-D sweep, which the \"lyapunov\" plot (one "
+                      "parameter) cannot draw: draw it as \"lyapunov_map\""};
+  return std::nullopt;
+}
+
 std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model& model,
                                           ImageFormat format) {
   if (auto e = check_side("width", figure.width)) return e;

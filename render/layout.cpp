@@ -74,8 +74,8 @@ std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
                          {{c.x, c.y + top, c.w, std::max(1.0, c.h - top)}}});
     } else {
       const int stacked = plot.kind == PlotKind::time && plot.show_dphi ? 2 : 1;
-      layouts.push_back(panel_layout(cells[i], style, stacked,
-                                     plot.kind == PlotKind::regime_map ? kRegimeLegendColumn : 0.0));
+      const bool map = plot.kind == PlotKind::regime_map || plot.kind == PlotKind::lyapunov_map;
+      layouts.push_back(panel_layout(cells[i], style, stacked, map ? kMapLegendColumn : 0.0));
     }
   }
   return layouts;

@@ -25,9 +25,9 @@ struct PanelLayout {
 // `legend_column` pixels (at scale 1) kept free right of the plot for a legend beside the data.
 PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double legend_column = 0.0);
 
-// The width (at scale 1) a regime map keeps right of its plot for the legend of periods: every
-// cell is data, so no corner of the plot is free for it.
-inline constexpr double kRegimeLegendColumn = 130.0;
+// The width (at scale 1) a map of a sweep (regime or Lyapunov map) keeps right of its plot for
+// its legend or colour bar: every cell is data, so no corner of the plot is free for it.
+inline constexpr double kMapLegendColumn = 160.0;
 
 // The layout of every panel of a figure: 3-D panels get one plot area, the rest of the cell below
 // the title.

@@ -17,7 +17,13 @@ void draw_swatch(cairo_t* cr, const LegendEntry& e, Point left_middle, const Sty
     const double h = 0.8 * style.note_font();
     cairo_rectangle(cr, left_middle.x, left_middle.y - 0.5 * h, w, h);
     set_colour(cr, e.colour);
-    cairo_fill(cr);
+    cairo_fill_preserve(cr);
+    if (e.edge.a > 0.0) {  // a white area shows on the legend's white
+      set_colour(cr, e.edge);
+      cairo_set_line_width(cr, style.thin_width());
+      cairo_stroke_preserve(cr);
+    }
+    cairo_new_path(cr);
     return;
   }
   if (e.swatch == Swatch::marker) {
@@ -87,16 +93,21 @@ Rect legend_box(Point size, const Rect& area, const Obstacles& avoid, double ins
   return best;
 }
 
-void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rect& area,
-                 const Obstacles& avoid, const Style& style) {
-  if (entries.empty()) return;
+Point legend_size(cairo_t* cr, const std::vector<LegendEntry>& entries, const Style& style) {
+  if (entries.empty()) return {};
   set_font(cr, style.note_font());
   double widest = 0.0;
   for (const LegendEntry& e : entries) widest = std::max(widest, text_box(cr, e.label, {}, {}).w);
   const double pad = style.px(kPadding), row = kRowHeight * style.note_font();
-  const Point size{2.0 * pad + style.px(kSwatchWidth + kSwatchGap) + widest,
-                   2.0 * pad + row * entries.size() - (row - style.note_font())};
-  const Rect box = legend_box(size, area, avoid, style.px(8.0));
+  return {2.0 * pad + style.px(kSwatchWidth + kSwatchGap) + widest,
+          2.0 * pad + row * entries.size() - (row - style.note_font())};
+}
+
+void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rect& area,
+                 const Obstacles& avoid, const Style& style) {
+  if (entries.empty()) return;
+  const Rect box = legend_box(legend_size(cr, entries, style), area, avoid, style.px(kLegendInset));
+  const double pad = style.px(kPadding), row = kRowHeight * style.note_font();
 
   cairo_rectangle(cr, box.x, box.y, box.w, box.h);
   set_colour(cr, rgb(0xFFFFFF, 0.88));

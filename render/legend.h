@@ -20,7 +20,7 @@ struct LegendEntry {
   Colour colour;
   Swatch swatch = Swatch::line;
   MarkerShape marker = MarkerShape::circle;
-  Colour edge{0.0, 0.0, 0.0, 0.0};  // marker outline; transparent: none
+  Colour edge{0.0, 0.0, 0.0, 0.0};  // marker or area outline; transparent: none
 };
 
 // What a legend should not hide: drawn curves (pixel polylines) and labels.
@@ -36,6 +36,12 @@ double length_inside(const Rect& box, std::span<const Point> line);
 // shortest length of curve. Corners are preferred (top right, top left, bottom right, bottom
 // left), then the middles of the edges, then the centre. Returns the box.
 Rect legend_box(Point size, const Rect& area, const Obstacles& avoid, double inset);
+
+// The legend box's distance from the edges of the area it is drawn in, at scale 1.
+inline constexpr double kLegendInset = 8.0;
+
+// The size of the legend box of the entries (nothing when there are none), in the note font.
+Point legend_size(cairo_t* cr, const std::vector<LegendEntry>& entries, const Style& style);
 
 // Draws the entries in the best corner of `area`; nothing when there are none.
 void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rect& area,

@@ -53,4 +53,10 @@ Range branch_range(const OrbitBranch& branch, const PlotSpec& spec);
 // A 2-D sweep's cells coloured by the period of the motion, with a legend of periods.
 void draw_regime_map_panel(cairo_t* cr, const PanelInput& in);
 
+// A sweep's largest Lyapunov exponents against the swept parameter, one line per direction of
+// continuation, with the zero line; and a 2-D sweep's cells coloured by it, with a colour bar.
+// The sweep computed them (validate_sweep_plot).
+void draw_lyapunov_panel(cairo_t* cr, const PanelInput& in);
+void draw_lyapunov_map_panel(cairo_t* cr, const PanelInput& in);
+
 }  // namespace vibro::render

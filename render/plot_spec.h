@@ -20,12 +20,15 @@ enum class PlotKind {
   section,         // a sweep's section points of one pellet in the (φ, φ̇) plane
   impact_map,      // a sweep's impacts of one pellet: φ̇ before impact against the forcing phase
   regime_map,      // a 2-D sweep's cells coloured by the period of the motion
+  lyapunov,        // a 1-D sweep's largest Lyapunov exponents against the swept parameter
+  lyapunov_map,    // a 2-D sweep's cells coloured by the largest Lyapunov exponent
   branch,          // a continued periodic motion against its parameter, stability and bifurcations
 };
 // The plot kinds that draw a sweep rather than a run.
 inline bool draws_sweep(PlotKind kind) {
   return kind == PlotKind::bifurcation || kind == PlotKind::section ||
-         kind == PlotKind::impact_map || kind == PlotKind::regime_map;
+         kind == PlotKind::impact_map || kind == PlotKind::regime_map ||
+         kind == PlotKind::lyapunov || kind == PlotKind::lyapunov_map;
 }
 
 // The plot kinds that draw the scene's own run (the others draw a report, a sweep or a branch).

@@ -17,6 +17,8 @@
 #include "render/layout.h"
 #include "render/panel.h"
 #include "render/parameter_label.h"
+#include "render/parameter_range.h"
+#include "render/sweep_cells.h"
 #include "render/text.h"
 
 namespace vibro::render {
@@ -59,28 +61,6 @@ Cloud cloud_of(const PlotSpec& spec, const SweepSpec& sweep) {
     }
   }
   return c;
-}
-
-// The parameter's range on a bifurcation diagram's x axis: the sweep's values and a margin.
-Range bifurcation_range(const SweepAxis& axis) {
-  Range x{axis.from, axis.to};
-  if (x.span() <= 0.0) x = {x.lo - 0.5, x.lo + 0.5};
-  return padded(x, 0.02);
-}
-
-// A regime map's range on an axis: each value is the centre of its cell.
-Range cell_range(const SweepAxis& axis) {
-  const double half = axis.count > 1 ? 0.5 * (axis.to - axis.from) / (axis.count - 1) : 0.5;
-  return Range{axis.from - half, axis.to + half};
-}
-
-Point on_pixels(Point p) { return {std::round(p.x), std::round(p.y)}; }
-
-// The index of a value on its axis (the cell it is the centre of).
-int cell_index(const SweepAxis& axis, double v) {
-  return axis.count > 1 && axis.to > axis.from
-             ? static_cast<int>(std::lround((v - axis.from) / (axis.to - axis.from) * (axis.count - 1)))
-                        : 0;
 }
 
 // Distinct colours for periods 1 … 8 (Okabe and Ito's, told apart with any colour vision), grey
@@ -177,41 +157,13 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
 }
 
 void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
-  const SweepResult& sweep = *in.data.sweep;
-  const SweepSpec& spec = *in.data.sweep_spec;
-  const Style& style = in.style;
-  const SweepAxis& a = spec.axis;
-  const SweepAxis one{"", 0.0, 0.0, 1};
-  const SweepAxis& b = spec.axis2 ? *spec.axis2 : one;
-  const Range x = cell_range(a), y = cell_range(b);
-  const Rect& area = in.layout.plots.front();
-  const Axis ax = make_axis(x, area.w, false, parameter_label(a.parameter));
-  const Axis ay = make_axis(y, area.h, false, spec.axis2 ? parameter_label(b.parameter) : "", true);
-  const Transform tr(area, ax.range, ay.range);
-  const double w = x.span() / std::max(a.count, 1), h = y.span() / std::max(b.count, 1);
+  const CellMap map = draw_cells(cr, in, [](const SweepRun& run) {
+    return run.at_rest ? Colour{1.0, 1.0, 1.0, 1.0} : period_colour(run.period);
+  });
   std::vector<int> periods;
-  bool rest = false, untrusted = false;
-  for (const SweepRun& run : sweep.runs) {
-    if (run.start != 0 || run.direction < 0) continue;  // the first start, swept up: one per cell
-    // Cells on whole pixels, their edges computed alike from the index, filled without
-    // antialiasing: neighbours meet without a seam or an overlap.
-    const int i = cell_index(a, run.value), j = cell_index(b, run.value2);
-    const Point lo = on_pixels(tr.to_pixel(x.lo + i * w, y.lo + j * h));
-    const Point hi = on_pixels(tr.to_pixel(x.lo + (i + 1) * w, y.lo + (j + 1) * h));
-    const Colour c = run.at_rest ? Colour{1.0, 1.0, 1.0, 1.0} : period_colour(run.period);
-    cairo_rectangle(cr, lo.x, hi.y, hi.x - lo.x, lo.y - hi.y);
-    set_colour(cr, c);
-    cairo_set_antialias(cr, CAIRO_ANTIALIAS_NONE);
-    cairo_fill(cr);
-    cairo_set_antialias(cr, CAIRO_ANTIALIAS_DEFAULT);
-    if (!run.trusted) {  // hatched: the trust check could not vouch for it
-      cairo_move_to(cr, lo.x, lo.y);
-      cairo_line_to(cr, hi.x, hi.y);
-      set_colour(cr, kInk);
-      cairo_set_line_width(cr, style.px(0.5));
-      cairo_stroke(cr);
-      untrusted = true;
-    }
+  bool rest = false;
+  for (const SweepRun& run : in.data.sweep->runs) {
+    if (!shown_in_cell(run)) continue;
     rest = rest || run.at_rest;
     if (!run.at_rest && std::find(periods.begin(), periods.end(), run.period) == periods.end())
       periods.push_back(run.period);
@@ -223,14 +175,14 @@ void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
   for (int p : periods)
     legend.push_back({p == 0 ? "not periodic" : p > 8 ? "period > 8" : "period " + std::to_string(p),
                       period_colour(p), Swatch::area});
-  if (rest) legend.push_back({"at rest", {1.0, 1.0, 1.0, 1.0}, Swatch::area});
-  if (untrusted) legend.push_back({"not trusted", kInk, Swatch::line});
-  draw_frame(cr, tr, ax, ay, style);
-  // Beside the data, in the column the layout keeps free (kRegimeLegendColumn).
-  const Rect column{area.right(), area.y, style.px(kRegimeLegendColumn), area.h};
-  draw_legend(cr, legend, column, {}, style);
+  if (rest)
+    legend.push_back({"at rest", {1.0, 1.0, 1.0, 1.0}, Swatch::area, MarkerShape::circle, kGuide});
+  if (map.untrusted) legend.push_back({"not trusted", kInk, Swatch::line});
+  draw_frame(cr, map.tr, map.x, map.y, in.style);
+  draw_legend(cr, legend, legend_column(in), {}, in.style);
   draw_title(cr, in.layout.title_anchor,
-             in.spec.title.empty() ? "Regime map: the period of the motion" : in.spec.title, style);
+             in.spec.title.empty() ? "Regime map: the period of the motion" : in.spec.title,
+             in.style);
 }
 
 }  // namespace vibro::render
@@ -240,10 +192,11 @@ namespace vibro {
 std::optional<ParameterAxis> parameter_axis(const FigureSpec& figure, const SweepSpec& spec) {
   if (figure.plots.empty()) return std::nullopt;
   const PlotKind kind = figure.plots.front().kind;
-  if (kind != PlotKind::bifurcation && kind != PlotKind::regime_map) return std::nullopt;
+  const bool map = kind == PlotKind::regime_map || kind == PlotKind::lyapunov_map;
+  if (!map && kind != PlotKind::bifurcation && kind != PlotKind::lyapunov) return std::nullopt;
   const render::Rect area = render::figure_layout(figure).front().plots.front();
   const render::Range x =
-      kind == PlotKind::bifurcation ? render::bifurcation_range(spec.axis) : render::cell_range(spec.axis);
+      map ? render::cell_range(spec.axis) : render::bifurcation_range(spec.axis);
   return ParameterAxis{area.x, area.y, area.w, area.h, x.lo, x.hi};
 }
 

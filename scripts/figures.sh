@@ -12,6 +12,17 @@ $vibro preset paper | python3 -c '
 import json,sys; s=json.load(sys.stdin); s.update(json.load(open("/tmp/vibro_cyl_patch.json"))); print(json.dumps(s))' \
   | $vibro render - -o docs/images/paper-cylinder.png > /dev/null
 $vibro orbit --preset impact-oscillator -o docs/images/orbit-branch-impact-oscillator.png
+# Bifurcation diagrams, regime and impact maps (docs/SWEEPS.md).
+$vibro sweep --preset impact-oscillator -o docs/images/bifurcation-impact-oscillator.png
+$vibro sweep --preset paper-bifurcation -o docs/images/bifurcation-paper.png
+$vibro sweep docs/scenes/impact-oscillator-regimes.json -o docs/images/regime-map-impact-oscillator.png
+$vibro sweep docs/scenes/impact-oscillator-impacts.json --plot impact_map \
+  -o docs/images/impact-map-impact-oscillator.png
+# The largest Lyapunov exponent of the impact oscillator over Ω, and over (Ω, F0) (docs/SWEEPS.md).
+$vibro sweep docs/scenes/impact-oscillator-lyapunov.json --plot lyapunov \
+  -o docs/images/lyapunov-impact-oscillator.png
+$vibro sweep docs/scenes/impact-oscillator-lyapunov-map.json --plot lyapunov_map \
+  -o docs/images/lyapunov-map-impact-oscillator.png
 echo "figures: docs/images/ regenerated"
 
 # The web page with the paper scene, from a real server, in headless Chromium.

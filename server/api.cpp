@@ -313,7 +313,8 @@ void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Res
   PlotSpec plot;
   const auto kind = sweep_plot_kind(req.get_param_value("plot"), spec);
   if (!kind)
-    return send_error(res, {400, "plot", "must be \"bifurcation\", \"section\", \"impact_map\" or \"regime_map\""});
+    return send_error(res, {400, "plot", std::string("must be ") + kSweepPlotNames});
+  if (auto e = validate_sweep_plot(*kind, spec)) return send_error(res, ApiError::from(*e));
   plot.kind = *kind;
   if (req.has_param("pellet")) {
     const std::string p = req.get_param_value("pellet");

@@ -1,9 +1,10 @@
 // A sweep's chains as bytes and in a checkpoint file: exact to the bit, a record cut off by a
-// crash left out, another scene's checkpoint or another file refused.
+// crash left out, another scene's or another version's checkpoint or another file refused.
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <cstdio>
+#include <limits>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
@@ -32,6 +33,9 @@ SweepRun awkward_run(int k) {
   r.termination = Termination::step_limit;
   r.message = "stopped at t = 3 s: the run reached its limit";
   r.error_estimate = 3e-9;
+  // Every form the exponent takes: none, −infinity, a value that is no short decimal.
+  if (k % 3 == 1) r.lyapunov = -std::numeric_limits<double>::infinity();
+  if (k % 3 == 2) r.lyapunov = -0.1 - k / 7.0;
   return r;
 }
 
@@ -59,19 +63,23 @@ void expect_same(const SweepRun& a, const SweepRun& b) {
   EXPECT_EQ(a.termination, b.termination);
   EXPECT_EQ(a.message, b.message);
   EXPECT_EQ(a.error_estimate, b.error_estimate);
+  ASSERT_EQ(a.lyapunov.has_value(), b.lyapunov.has_value());
+  if (a.lyapunov) {
+    EXPECT_EQ(std::memcmp(&*a.lyapunov, &*b.lyapunov, sizeof(double)), 0);
+  }
 }
 
 TEST(SweepWire, ChainsComeBackToTheBit) {
   std::string bytes;
-  append_chain(bytes, {7, {awkward_run(1), awkward_run(2)}});
+  append_chain(bytes, {7, {awkward_run(0), awkward_run(1), awkward_run(2)}});
   append_chain(bytes, {3, {}});
   const ReadChains read = read_chains(bytes);
   EXPECT_FALSE(read.malformed);
   EXPECT_EQ(read.consumed, bytes.size());
   ASSERT_EQ(read.chains.size(), 2u);
   EXPECT_EQ(read.chains[0].chain, 7);
-  ASSERT_EQ(read.chains[0].runs.size(), 2u);
-  expect_same(read.chains[0].runs[1], awkward_run(2));
+  ASSERT_EQ(read.chains[0].runs.size(), 3u);
+  for (int k = 0; k < 3; ++k) expect_same(read.chains[0].runs[k], awkward_run(k));
   EXPECT_EQ(read.chains[1].chain, 3);
   EXPECT_TRUE(read.chains[1].runs.empty());
 }
@@ -119,7 +127,9 @@ TEST(SweepCheckpoint, KeepsChainsForItsSceneOnlyAndResumesWhole) {
   Checkpoint c = std::get<Checkpoint>(read);
   ASSERT_EQ(c.chains.size(), 2u);
   EXPECT_EQ(c.runs, 3u);
+  expect_same(c.chains[0].runs[0], awkward_run(0));
   expect_same(c.chains[1].runs[0], awkward_run(1));
+  expect_same(c.chains[1].runs[1], awkward_run(2));
 
   // What decides the runs decides the fingerprint; the figure does not.
   Scene drawn = scene;
@@ -156,6 +166,14 @@ TEST(SweepCheckpoint, KeepsChainsForItsSceneOnlyAndResumesWhole) {
   refused = read_checkpoint(path, fp);
   ASSERT_TRUE(std::holds_alternative<std::string>(refused));
   EXPECT_NE(std::get<std::string>(refused).find("does not exist"), std::string::npos);
+
+  // A checkpoint of an earlier version, whose records do not carry what these do.
+  std::string v1 = before;
+  v1.replace(v1.find(" v2 "), 4, " v1 ");
+  std::ofstream(path, std::ios::binary) << v1;
+  refused = read_checkpoint(path, fp);
+  ASSERT_TRUE(std::holds_alternative<std::string>(refused));
+  EXPECT_NE(std::get<std::string>(refused).find("another version"), std::string::npos);
 
   std::ofstream(path) << "x,y\n1,2\n";
   refused = read_checkpoint(path, fp);

@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # `vibro sweep` under mpirun (issue 11), on this machine: 3 ranks oversubscribed and a hostfile
 # naming localhost twice give the one-process output byte for byte, with and without
-# continuation; a rank that crashes ends the job with a message naming the value it ran, the
+# continuation, with each run's Lyapunov exponent (bits carried between ranks and through the
+# checkpoint); a rank that crashes ends the job with a message naming the value it ran, the
 # finished chains kept in OUT.partial, which a rerun refuses to overwrite and --resume completes,
 # again byte for byte. Usage: mpi_sweep_test.sh path/to/vibro
 set -euo pipefail
@@ -26,7 +27,7 @@ check() {  # check NAME CONDITION...
 "$vibro" preset impact-oscillator | python3 -c '
 import json, sys
 s = json.load(sys.stdin)
-s["sweep"].update(count=90, transient=40, record=10, continuation="none")
+s["sweep"].update(count=90, transient=40, record=10, continuation="none", lyapunov=True)
 json.dump(s, open("none.json", "w"))
 s["sweep"].update(count=24, continuation="both", initial_states=3, seed=7)
 json.dump(s, open("both.json", "w"))'
@@ -51,7 +52,7 @@ check "the message names the rank and the value" \
   grep -q "rank 1 on .* failed while running model.pellets\[0\].Omega = [0-9]" failed.err
 check "no output is written" test ! -e failed.csv
 check "the finished chains are kept, flagged as a checkpoint" \
-  grep -q "^vibro sweep checkpoint v1" failed.csv.partial
+  grep -q "^vibro sweep checkpoint v2" failed.csv.partial
 status=0
 "$vibro" sweep none.json -o failed.csv 2> again.err || status=$?
 check "a rerun does not overwrite the checkpoint" grep -q -- '"field":"-o"' again.err

@@ -10,22 +10,15 @@
 #include "render/figure.h"
 #include "render/layout.h"
 #include "svg_check.h"
+#include "swept.h"
 
 namespace vibro {
 namespace {
 
-Model impact_oscillator() {
-  Model m;
-  m.R = 0.5;
-  m.pellets = {{0.1, 0.1, 0.0, {0.3, 5.0, 0.0}}};
-  m.limiters = {{0.0, 0.8, false, -1, {}}};
-  return m;
-}
-
-struct Swept {
-  SweepSpec spec;
-  SweepResult result;
-};
+using testing::draw;
+using testing::figure_of;
+using testing::impact_oscillator;
+using testing::Swept;
 
 Swept sweep(SectionKind section, bool grid) {
   Swept s;
@@ -52,15 +45,6 @@ double share_of_blue(const testing::Decoded& image) {
     n += b - r > 40 ? 1 : 0;
   }
   return static_cast<double>(n) / static_cast<double>(image.argb.size());
-}
-
-RenderResult draw(PlotKind kind, const Swept& s, ImageFormat format) {
-  FigureSpec figure;
-  PlotSpec plot;
-  plot.kind = kind;
-  figure.plots = {plot};
-  return render_figure(figure, impact_oscillator(), RunResult{}, format,
-                       {nullptr, &s.spec, &s.result});
 }
 
 TEST(SweepPlots, EachKindDrawsItsPoints) {
@@ -108,10 +92,7 @@ TEST(SweepPlots, TheRegimeMapsLegendAndSeamsHideNoCell) {
       run.period = 1;
       s.result.runs.push_back(run);
     }
-  FigureSpec figure;
-  PlotSpec plot;
-  plot.kind = PlotKind::regime_map;
-  figure.plots = {plot};
+  const FigureSpec figure = figure_of(PlotKind::regime_map);
   const RenderResult png = draw(PlotKind::regime_map, s, ImageFormat::png);
   ASSERT_TRUE(png.ok()) << png.error->message;
   const testing::Decoded image = testing::decode_png(png.bytes);
@@ -131,11 +112,8 @@ TEST(SweepPlots, TheRegimeMapsLegendAndSeamsHideNoCell) {
 }
 
 TEST(SweepPlots, WithoutASweepTheyAreRefused) {
-  FigureSpec figure;
-  PlotSpec plot;
-  plot.kind = PlotKind::bifurcation;
-  figure.plots = {plot};
-  const RenderResult r = render_figure(figure, impact_oscillator(), RunResult{}, ImageFormat::png);
+  const RenderResult r = render_figure(figure_of(PlotKind::bifurcation), impact_oscillator(),
+                                       RunResult{}, ImageFormat::png);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error->field, "plots[0].kind");
 }

@@ -73,6 +73,13 @@ TEST(SweepJobs, ASweepRunsAsAJobAndAnswersInEveryFormat) {
   auto bad = c.Get((location + "/result?format=gif").c_str());
   EXPECT_EQ(bad->status, 400);
   EXPECT_EQ(json::parse(bad->body)["field"], "format");
+  // A Lyapunov plot of a sweep that computed no exponents: the sweep's field is named.
+  auto lyapunov = c.Get((location + "/result?format=png&plot=lyapunov").c_str());
+  EXPECT_EQ(lyapunov->status, 400);
+  EXPECT_EQ(json::parse(lyapunov->body)["field"], "sweep.lyapunov");
+  auto unknown = c.Get((location + "/result?format=png&plot=orbit").c_str());
+  EXPECT_EQ(unknown->status, 400);
+  EXPECT_NE(json::parse(unknown->body)["error"].get<std::string>().find("lyapunov_map"), std::string::npos);
 }
 
 TEST(SweepJobs, AJobIsCancelledAndAFullQueueAnswers503) {

@@ -1,0 +1,102 @@
+// A sweep's "lyapunov" field read strictly and written back, and the exponents in the result's
+// JSON (null where there is none or it is −infinity: JSON has no infinities) and CSV (an empty
+// cell, "-inf", or the value to the bit), after the columns that were there before.
+#include "io/sweep_json.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <cstdlib>
+#include <cstring>
+#include <limits>
+#include <sstream>
+
+#include "io/presets.h"
+#include "io/scene_json.h"
+
+namespace vibro {
+namespace {
+
+using nlohmann::json;
+
+// The impact-oscillator preset with its sweep's "lyapunov" set to `value` (absent: not set).
+std::variant<Scene, FieldError> with_lyapunov(const std::optional<json>& value) {
+  json scene = json::parse(*preset_json("impact-oscillator"));
+  if (value) scene["sweep"]["lyapunov"] = *value;
+  return scene_from_text(scene.dump());
+}
+
+TEST(SweepJson, LyapunovIsReadStrictlyAndWrittenBack) {
+  EXPECT_FALSE(std::get<Scene>(with_lyapunov(std::nullopt)).sweep->lyapunov);
+  EXPECT_FALSE(std::get<Scene>(with_lyapunov(false)).sweep->lyapunov);
+  const Scene asked = std::get<Scene>(with_lyapunov(true));
+  ASSERT_TRUE(asked.sweep->lyapunov);
+  EXPECT_EQ(sweep_to_json(*asked.sweep)["lyapunov"], true);
+  const Scene again = std::get<Scene>(scene_from_text(scene_to_json(asked).dump()));
+  EXPECT_TRUE(again.sweep->lyapunov);
+  for (const json& wrong : {json(1), json("true"), json::array()}) {
+    const auto read = with_lyapunov(wrong);
+    ASSERT_TRUE(std::holds_alternative<FieldError>(read)) << wrong;
+    EXPECT_EQ(std::get<FieldError>(read).field, "sweep.lyapunov");
+  }
+}
+
+// Three runs of one point each: an exponent that is no short decimal, none, and −infinity.
+SweepResult three_runs() {
+  SweepResult result;
+  for (int k = 0; k < 3; ++k) {
+    SweepRun run;
+    run.value = k;
+    run.points = {{0, 1.0, 0.5, -0.25, 0.0, -1, true}};
+    result.runs.push_back(run);
+  }
+  result.runs[0].lyapunov = 0.1 + 1.0 / 3.0;
+  result.runs[2].lyapunov = -std::numeric_limits<double>::infinity();
+  return result;
+}
+
+TEST(SweepJson, TheResultsRunsCarryTheExponentOrNull) {
+  SweepSpec spec;
+  spec.lyapunov = true;
+  const json j = sweep_result_json(spec, three_runs());
+  const json& column = j["runs"]["lyapunov"];
+  ASSERT_EQ(column.size(), 3u);
+  EXPECT_EQ(column[0].get<double>(), 0.1 + 1.0 / 3.0);
+  EXPECT_TRUE(column[1].is_null());
+  EXPECT_TRUE(column[2].is_null());
+  // What a client parses back is the same number, and never an infinity or NaN.
+  const std::string text = j.dump();
+  EXPECT_EQ(json::parse(text)["runs"]["lyapunov"][0].get<double>(), 0.1 + 1.0 / 3.0);
+  EXPECT_EQ(text.find("inf"), std::string::npos);
+  EXPECT_EQ(text.find("nan"), std::string::npos);
+  EXPECT_EQ(j["runs"]["error_estimate"].size(), 3u);  // the columns before it are all there
+}
+
+TEST(SweepJson, TheCsvEndsWithTheExponentEmptyOrMinusInf) {
+  std::istringstream csv(sweep_result_csv(three_runs()));
+  std::string header, line;
+  std::getline(csv, header);
+  EXPECT_EQ(header,
+            "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
+            "impacts_per_period,lyapunov");
+  std::vector<std::string> last_cells;
+  while (std::getline(csv, line)) last_cells.push_back(line.substr(line.rfind(',') + 1));
+  ASSERT_EQ(last_cells.size(), 3u);
+  const double back = std::strtod(last_cells[0].c_str(), nullptr);
+  const double sent = 0.1 + 1.0 / 3.0;
+  EXPECT_EQ(std::memcmp(&back, &sent, sizeof back), 0) << last_cells[0];
+  EXPECT_EQ(last_cells[1], "");
+  EXPECT_EQ(last_cells[2], "-inf");
+  EXPECT_EQ(std::strtod(last_cells[2].c_str(), nullptr), -std::numeric_limits<double>::infinity());
+}
+
+TEST(SweepJson, TheLyapunovPlotsHaveNames) {
+  const SweepSpec spec;
+  EXPECT_EQ(sweep_plot_kind("lyapunov", spec), PlotKind::lyapunov);
+  EXPECT_EQ(sweep_plot_kind("lyapunov_map", spec), PlotKind::lyapunov_map);
+  EXPECT_EQ(sweep_plot_kind("lyapunov map", spec), std::nullopt);
+  EXPECT_NE(std::string(kSweepPlotNames).find("\"lyapunov_map\""), std::string::npos);
+}
+
+}  // namespace
+}  // namespace vibro

@@ -1,0 +1,37 @@
+// A sweep and its result for the tests of the sweep plots, drawn over the impact oscillator (one
+// pellet forced at 0.3 N striking a stop at the bottom).
+#pragma once
+
+#include "core/sweep.h"
+#include "render/figure.h"
+
+namespace vibro::testing {
+
+inline Model impact_oscillator() {
+  Model m;
+  m.R = 0.5;
+  m.pellets = {{0.1, 0.1, 0.0, {0.3, 5.0, 0.0}}};
+  m.limiters = {{0.0, 0.8, false, -1, {}}};
+  return m;
+}
+
+struct Swept {
+  SweepSpec spec;
+  SweepResult result;
+};
+
+// A figure of one plot of this kind, the rest defaults.
+inline FigureSpec figure_of(PlotKind kind) {
+  FigureSpec figure;
+  PlotSpec plot;
+  plot.kind = kind;
+  figure.plots = {plot};
+  return figure;
+}
+
+inline RenderResult draw(PlotKind kind, const Swept& s, ImageFormat format) {
+  return render_figure(figure_of(kind), impact_oscillator(), RunResult{}, format,
+                       {nullptr, &s.spec, &s.result});
+}
+
+}  // namespace vibro::testing
