@@ -51,13 +51,14 @@ void draw_sweep_panel(cairo_t* cr, const render::PanelInput& in) {
 }
 
 std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, const Model& model,
-                                      const RunResult& run, const PanelData& data) {
+                                      const RunResult& run, const PanelData& data,
+                                      std::vector<PhaseAxes>& axes) {
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
   cairo_paint(cr);
   const render::Style style = render::style_for(figure.width, figure.height);
   const auto layouts = render::figure_layout(figure);
   for (std::size_t i = 0; i < layouts.size(); ++i) {
-    const render::PanelInput in{figure.plots[i], model, run, layouts[i], style, data};
+    const render::PanelInput in{figure.plots[i], model, run, layouts[i], style, data, &axes};
     switch (figure.plots[i].kind) {
       case PlotKind::phase:
         render::draw_phase_panel(cr, in);
@@ -99,19 +100,20 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
   return std::nullopt;
 }
 
-RenderResult failure(FieldError error) { return {{}, {}, std::move(error)}; }
+RenderResult failure(FieldError error) { return {{}, {}, std::move(error), {}}; }
 
 RenderResult render_png(const FigureSpec& figure, const Model& model, const RunResult& run,
                         const PanelData& data) {
   SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, figure.width, figure.height));
   CairoPtr cr(cairo_create(surface.get()));
-  if (auto e = draw_figure(cr.get(), figure, model, run, data)) return failure(*e);
+  std::vector<PhaseAxes> axes;
+  if (auto e = draw_figure(cr.get(), figure, model, run, data, axes)) return failure(*e);
   cairo_surface_flush(surface.get());
   auto bytes =
       render::encode_png_argb32(cairo_image_surface_get_data(surface.get()), figure.width,
                                 figure.height, cairo_image_surface_get_stride(surface.get()), true);
   if (bytes.empty()) return failure({"", "PNG encoding failed"});
-  return {std::move(bytes), std::string(content_type(ImageFormat::png)), std::nullopt};
+  return {std::move(bytes), std::string(content_type(ImageFormat::png)), std::nullopt, std::move(axes)};
 }
 
 cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
@@ -135,18 +137,19 @@ RenderResult render_vector(const FigureSpec& figure, const Model& model, const R
   // Pixels, not cairo's default points, so that the SVG shows at the size asked for.
   if (format == ImageFormat::svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
   std::vector<render::PlacedText> texts;
+  std::vector<PhaseAxes> axes;
   {
     CairoPtr cr(cairo_create(surface.get()));
     cairo_scale(cr.get(), scale, scale);
     if (format == ImageFormat::svg) render::collect_text(cr.get(), &texts);
-    if (auto e = draw_figure(cr.get(), figure, model, run, data)) return failure(*e);
+    if (auto e = draw_figure(cr.get(), figure, model, run, data, axes)) return failure(*e);
   }
   cairo_surface_finish(surface.get());
   if (format == ImageFormat::svg) render::append_to_svg(bytes, render::svg_text_elements(texts));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
     return failure({"", std::string(format == ImageFormat::pdf ? "PDF" : "SVG") + " output failed: " +
                             cairo_status_to_string(cairo_surface_status(surface.get()))});
-  return {std::move(bytes), std::string(content_type(format)), std::nullopt};
+  return {std::move(bytes), std::string(content_type(format)), std::nullopt, std::move(axes)};
 }
 
 }  // namespace

@@ -19,7 +19,8 @@ RenderResult render_orbit_figure(const FigureSpec& figure, const Model& model,
                          {nullptr, beneath ? in.sweep_spec : nullptr, beneath ? in.sweep : nullptr,
                           in.branch, in.continuation});
   }
-  if (!in.orbit.converged) return {{}, {}, FieldError{"periodic_orbit", "no periodic motion to draw: " + in.orbit.message}};
+  if (!in.orbit.converged)
+    return {{}, {}, FieldError{"periodic_orbit", "no periodic motion to draw: " + in.orbit.message}, {}};
   // One return from the orbit's state: its section time t0 is a whole number of every force's
   // periods, so the forces' phases are those of t = 0.
   Model on = model;

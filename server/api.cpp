@@ -98,6 +98,7 @@ void send(httplib::Response& res, const CachedResponse& answer, bool hit) {
   res.set_header("ETag", answer.etag);
   res.set_header("Cache-Control", kCacheForever);
   res.set_header("X-Vibro-Cache", hit ? "hit" : "miss");
+  for (const auto& [name, value] : answer.headers) res.set_header(name, value);
   res.set_content(answer.body, answer.content_type);
 }
 
@@ -390,7 +391,7 @@ void Api::answer(const std::string& key, std::function<JobResult()> job,
   if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
   Produced& p = std::get<Produced>(*produced);
   auto entry = std::make_shared<const CachedResponse>(
-      CachedResponse{std::move(p.body), std::move(p.content_type), etag});
+      CachedResponse{std::move(p.body), std::move(p.content_type), etag, std::move(p.headers)});
   cache_.insert(key, entry);
   send(res, *entry, false);
 }
@@ -430,7 +431,7 @@ bool Api::warm_up(std::string& error) {
   const std::string key = render_key(paper, ImageFormat::png);
   Produced& p = std::get<Produced>(produced);
   cache_.insert(key, std::make_shared<const CachedResponse>(CachedResponse{
-                         std::move(p.body), std::move(p.content_type), etag_of(key)}));
+                         std::move(p.body), std::move(p.content_type), etag_of(key), std::move(p.headers)}));
   return true;
 }
 

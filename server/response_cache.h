@@ -10,6 +10,8 @@
 #include <string>
 #include <string_view>
 #include <unordered_map>
+#include <utility>
+#include <vector>
 
 namespace vibro::server {
 
@@ -17,6 +19,7 @@ struct CachedResponse {
   std::string body;
   std::string content_type;
   std::string etag;
+  std::vector<std::pair<std::string, std::string>> headers;  // the answer's own, e.g. its axes
 };
 
 class ResponseCache {

@@ -4,6 +4,8 @@
 #include <iomanip>
 #include <sstream>
 
+#include <nlohmann/json.hpp>
+
 #include "core/simulate.h"
 #include "core/parameter.h"
 #include "core/work_precision.h"
@@ -57,6 +59,17 @@ std::optional<ApiError> stopped_by_limit(const RunResult& run, const Scene& scen
   ApiError error{422, "t_end", why.str()};
   error.extra["stats"] = result_to_json(run, scene.model)["stats"];
   return error;
+}
+
+// Where the phase panels lie, as compact JSON: [{"pellet", "left", "top", "width", "height",
+// "phi": [lo, hi], "dphi": [lo, hi]}], image pixels and the axes' spans; a click on the page's
+// image names a state from it.
+std::string phase_axes_header(const std::vector<PhaseAxes>& axes) {
+  nlohmann::json list = nlohmann::json::array();
+  for (const PhaseAxes& a : axes)
+    list.push_back({{"pellet", a.pellet}, {"left", a.left}, {"top", a.top}, {"width", a.width},
+                    {"height", a.height}, {"phi", {a.phi_lo, a.phi_hi}}, {"dphi", {a.dphi_lo, a.dphi_hi}}});
+  return list.dump();
 }
 
 }  // namespace
@@ -147,13 +160,13 @@ JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat
       render_orbit_figure(scene.figure, scene.model, scene.sim,
                           {result.orbit, &result.branch, continuation ? &*continuation : nullptr}, format);
   if (!image.ok()) return ApiError::from(*image.error, image.error->field == "periodic_orbit" ? 422 : 500);
-  return Produced{std::string(image.bytes.begin(), image.bytes.end()), image.content_type};
+  return Produced{std::string(image.bytes.begin(), image.bytes.end()), image.content_type, {}};
 }
 
 JobResult orbit_scene(const Scene& scene, std::optional<ImageFormat> image) {
   const OrbitResult result = run_orbit_request(scene.model, scene.sim, *scene.periodic_orbit);
   if (image) return orbit_image(scene, result, *image);
-  return Produced{orbit_result_json(result).dump(), "application/json"};
+  return Produced{orbit_result_json(result).dump(), "application/json", {}};
 }
 
 SimOptions bounded_options(const SimOptions& options, const Limits& limits) {
@@ -167,8 +180,8 @@ JobResult simulate_scene(const Scene& scene, const Limits& limits, std::optional
   const SimOptions b = bounded(std::move(options), limits);
   const RunResult run = simulate(scene.model, b);
   if (auto error = stopped_by_limit(run, scene, b, limits)) return *error;
-  if (table) return Produced{run_csv(run, *table), "text/csv"};
-  return Produced{result_to_json(run, scene.model).dump(), "application/json"};
+  if (table) return Produced{run_csv(run, *table), "text/csv", {}};
+  return Produced{result_to_json(run, scene.model).dump(), "application/json", {}};
 }
 
 JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& limits) {
@@ -178,7 +191,9 @@ JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& lim
   if (auto error = stopped_by_limit(run, scene, b, limits)) return *error;
   RenderResult image = render_figure(scene.figure, scene.model, run, format);
   if (!image.ok()) return ApiError::from(*image.error);
-  return Produced{std::string(image.bytes.begin(), image.bytes.end()), image.content_type};
+  Produced p{std::string(image.bytes.begin(), image.bytes.end()), image.content_type, {}};
+  if (!image.phase_axes.empty()) p.headers.emplace_back("X-Vibro-Phase-Axes", phase_axes_header(image.phase_axes));
+  return p;
 }
 
 JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> image,
@@ -190,7 +205,7 @@ JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> im
   SimOptions options = bounded(scene.sim, limits);
   options.deadline_ms = limits.deadline_ms / 16.0;
   const WorkPrecisionReport report = work_precision(scene.model, options, sweep);
-  if (!image) return Produced{work_precision_to_json(report).dump(), "application/json"};
+  if (!image) return Produced{work_precision_to_json(report).dump(), "application/json", {}};
   FigureSpec figure;
   figure.width = scene.figure.width;
   figure.height = scene.figure.height;
@@ -199,7 +214,7 @@ JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> im
   figure.plots = {plot};
   RenderResult drawn = render_figure(figure, scene.model, RunResult{}, *image, {&report});
   if (!drawn.ok()) return ApiError::from(*drawn.error);
-  return Produced{std::string(drawn.bytes.begin(), drawn.bytes.end()), drawn.content_type};
+  return Produced{std::string(drawn.bytes.begin(), drawn.bytes.end()), drawn.content_type, {}};
 }
 
 }  // namespace vibro::server

@@ -5,7 +5,9 @@
 
 #include <optional>
 #include <string>
+#include <utility>
 #include <variant>
+#include <vector>
 
 #include "io/orbit_request.h"
 #include "io/run_csv.h"
@@ -19,6 +21,7 @@ namespace vibro::server {
 struct Produced {
   std::string body;
   std::string content_type;
+  std::vector<std::pair<std::string, std::string>> headers;  // sent (and cached) with the body
 };
 
 using JobResult = std::variant<Produced, ApiError>;

@@ -1,7 +1,7 @@
 // The page: a scene editor on the left, the run on the right. This file wires the modules
 // together; each view and each encoding lives in web/js/.
 
-import { ApiError, getPreset, listPresets, renderImage, simulate } from "./js/api.js";
+import { ApiError, clickedState, getPreset, listPresets, renderFigure, renderImage, simulate } from "./js/api.js";
 import { curlCommand } from "./js/curl.js";
 import { fill } from "./js/dom.js";
 import { showEvents } from "./js/events_table.js";
@@ -107,11 +107,11 @@ async function render() {
   setStatus("Simulating and drawing…");
   const started = performance.now();
   try {
-    const [run, image] = await Promise.all([
+    const [run, figure] = await Promise.all([
       simulate(scene, controller.signal),
-      renderImage(scene, format, controller.signal),
+      renderFigure(scene, format, controller.signal),
     ]);
-    showRun(scene, run, image, format);
+    showRun(scene, run, figure, format);
     state.runs += 1;
     ui.results.dataset.run = String(state.runs);
     ui.results.dataset.state = "done";
@@ -129,11 +129,12 @@ async function render() {
   }
 }
 
-function showRun(scene, { result, text }, image, format) {
+function showRun(scene, { result, text }, { image, phaseAxes }, format) {
   forgetRun();
   const imageUrl = URL.createObjectURL(image);
   const jsonUrl = URL.createObjectURL(new Blob([text], { type: "application/json" }));
-  state.run = { scene, images: { [format]: imageUrl }, json: jsonUrl };
+  state.run = { scene, images: { [format]: imageUrl }, json: jsonUrl, phaseAxes };
+  ui.imageBox.classList.toggle("clickable", phaseAxes.length > 0);
 
   const panels = (scene.plots ?? []).map((p) => p.kind).join(", ");
   const img = new Image();
@@ -180,6 +181,24 @@ for (const format of ["png", "svg"]) {
     }
   });
 }
+
+// A click on a phase portrait starts its pellet from the clicked (φ, φ̇), as pplane does.
+ui.imageBox.addEventListener("click", async (e) => {
+  const img = e.target.closest("img#figure");
+  if (!img || !state.run?.phaseAxes?.length) return;
+  const rect = img.getBoundingClientRect();
+  const scale = img.naturalWidth / rect.width;
+  const at = clickedState(state.run.phaseAxes, (e.clientX - rect.left) * scale, (e.clientY - rect.top) * scale);
+  if (!at) return;
+  const scene = structuredClone(state.run.scene);
+  const pellet = scene.model.pellets[at.pellet];
+  pellet.phi0 = Number(at.phi.toPrecision(4));
+  pellet.dphi0 = Number(at.dphi.toPrecision(4));
+  form.load(scene);
+  edited();
+  setStatus(`Pellet ${at.pellet + 1} starts at φ = ${pellet.phi0} rad, φ̇ = ${pellet.dphi0} rad/s.`);
+  await render();
+});
 
 // [SECTION] sweep
 

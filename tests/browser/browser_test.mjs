@@ -301,6 +301,30 @@ try {
     expect(Math.abs(omega - 6) < 0.3, `the click set Ω = ${omega}, not about 6 rad/s`);
   });
 
+  await check("a click on a phase portrait starts its pellet there", async () => {
+    // The scene on the page (the impact oscillator, from the sweep's click), asked for again.
+    const scene = (await page.inputValue("#curl")).split("\n")[2];
+    const picked = await runCount(page);
+    const axes = await page.evaluate(async (body) => {
+      const r = await fetch("/api/render?format=png", { method: "POST", headers: { "Content-Type": "application/json" }, body });
+      return JSON.parse(r.headers.get("X-Vibro-Phase-Axes") ?? "[]");
+    }, scene);
+    expect(axes.length === 1 && axes[0].pellet === 0, `the phase panels: ${JSON.stringify(axes)}`);
+    const a = axes[0];
+    // A quarter of the way across and down the plot area, in the image's own pixels.
+    await page.locator("#figure").scrollIntoViewIfNeeded();
+    const box = await page.locator("#figure").boundingBox();
+    const natural = await page.evaluate(() => document.getElementById("figure").naturalWidth);
+    const k = box.width / natural;
+    await page.mouse.click(box.x + (a.left + a.width / 4) * k, box.y + (a.top + a.height / 4) * k);
+    await waitForRun(page, picked);
+    const phi = Number(await page.inputValue('[data-field="model.pellets[0].phi0"]'));
+    const dphi = Number(await page.inputValue('[data-field="model.pellets[0].dphi0"]'));
+    const wantPhi = a.phi[0] + (a.phi[1] - a.phi[0]) / 4, wantDphi = a.dphi[1] - (a.dphi[1] - a.dphi[0]) / 4;
+    expect(Math.abs(phi - wantPhi) < 0.01 * (a.phi[1] - a.phi[0]), `φ0 = ${phi}, clicked ${wantPhi}`);
+    expect(Math.abs(dphi - wantDphi) < 0.01 * (a.dphi[1] - a.dphi[0]), `φ̇0 = ${dphi}, clicked ${wantDphi}`);
+  });
+
   await check("the periodic-motion panel finds the impact oscillator's motion and draws it", async () => {
     // The preset at Ω = 5 rad/s (picked above, then set again): past the period doubling, its
     // period-1 motion is unstable, a multiplier below −1.

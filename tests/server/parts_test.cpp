@@ -18,7 +18,7 @@ namespace {
 
 std::shared_ptr<const CachedResponse> answer(std::size_t bytes) {
   return std::make_shared<const CachedResponse>(
-      CachedResponse{std::string(bytes, 'x'), "application/json", "\"t\""});
+      CachedResponse{std::string(bytes, 'x'), "application/json", "\"t\"", {}});
 }
 
 TEST(ResponseCache, DropsTheLeastRecentlyUsedBeyondItsBytes) {

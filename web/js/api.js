@@ -53,11 +53,32 @@ export async function simulate(scene, signal) {
   return { result: JSON.parse(text), text };
 }
 
-// format: "png" | "svg"; resolves to a Blob of that type.
+// format: "png" | "svg"; resolves to {image: a Blob of that type, phaseAxes: where each phase
+// panel lies on it and what its axes span ([] when none)}.
 // A figure of work–precision panels only is a sweep of timed runs, which has its own endpoint.
-export async function renderImage(scene, format, signal) {
+export async function renderFigure(scene, format, signal) {
   const plots = scene.plots ?? [];
   const sweep = plots.length > 0 && plots.every((p) => p.kind === "work_precision");
   const path = sweep ? "/api/work-precision" : "/api/render";
-  return (await postJson(`${path}?format=${format}`, scene, signal)).blob();
+  const response = await postJson(`${path}?format=${format}`, scene, signal);
+  const header = response.headers.get("X-Vibro-Phase-Axes");
+  return { image: await response.blob(), phaseAxes: header ? JSON.parse(header) : [] };
+}
+
+export async function renderImage(scene, format, signal) {
+  return (await renderFigure(scene, format, signal)).image;
+}
+
+// The state (pellet, φ, φ̇) under a click at (x, y) in the image's own pixels, or null outside
+// every phase panel's plot area.
+export function clickedState(phaseAxes, x, y) {
+  for (const a of phaseAxes) {
+    if (x < a.left || x > a.left + a.width || y < a.top || y > a.top + a.height) continue;
+    return {
+      pellet: a.pellet,
+      phi: a.phi[0] + ((x - a.left) / a.width) * (a.phi[1] - a.phi[0]),
+      dphi: a.dphi[1] - ((y - a.top) / a.height) * (a.dphi[1] - a.dphi[0]),
+    };
+  }
+  return null;
 }
