@@ -24,6 +24,20 @@ TEST_F(Caching, TheSameSceneGivesTheSameBytesFromTheCache) {
   EXPECT_FALSE(first->get_header_value("ETag").empty());
   EXPECT_EQ(first->get_header_value("ETag"), second->get_header_value("ETag"));
   EXPECT_EQ(first->get_header_value("Cache-Control"), "public, max-age=3600");
+  // Where the phase portraits lie comes with the image, from the cache too: one per phase panel,
+  // inside the image, with axes that span something.
+  const std::string axes = first->get_header_value("X-Vibro-Phase-Axes");
+  EXPECT_EQ(second->get_header_value("X-Vibro-Phase-Axes"), axes);
+  const nlohmann::json list = nlohmann::json::parse(axes);
+  ASSERT_EQ(list.size(), 2u);
+  EXPECT_EQ(list[0]["pellet"], 0);
+  EXPECT_EQ(list[1]["pellet"], 1);
+  for (const auto& a : list) {
+    EXPECT_GT(a["left"].get<double>(), 0.0);
+    EXPECT_LT(a["left"].get<double>() + a["width"].get<double>(), 1200.0);
+    EXPECT_LT(a["phi"][0].get<double>(), a["phi"][1].get<double>());
+    EXPECT_LT(a["dphi"][0].get<double>(), a["dphi"][1].get<double>());
+  }
 }
 
 TEST_F(Caching, RunResultsAreCachedToo) {
