@@ -5,6 +5,7 @@
 #include <cairo.h>
 
 #include <exception>
+#include <utility>
 
 #include "render/axes.h"
 #include "render/cairo_ptr.h"
@@ -50,6 +51,57 @@ void draw_sweep_panel(cairo_t* cr, const render::PanelInput& in) {
     render::draw_sweep_points_panel(cr, in);
 }
 
+// Draws panel i of the figure with the given layout.
+std::optional<FieldError> draw_panel(cairo_t* cr, const FigureSpec& figure, std::size_t i,
+                                     const render::PanelInput& in) {
+  const PanelData& data = in.data;
+  const std::string kind_field = "plots[" + std::to_string(i) + "].kind";
+  switch (figure.plots[i].kind) {
+    case PlotKind::phase:
+      render::draw_phase_panel(cr, in);
+      break;
+    case PlotKind::time:
+      render::draw_time_panel(cr, in);
+      break;
+    case PlotKind::cylinder:
+      if (auto message = render::draw_cylinder_panel(cr, in)) return FieldError{kind_field, *message};
+      break;
+    case PlotKind::work_precision:
+      if (!data.work_precision) return FieldError{kind_field, "needs a work-precision sweep"};
+      render::draw_work_precision_panel(cr, in);
+      break;
+    case PlotKind::bifurcation:
+    case PlotKind::section:
+    case PlotKind::impact_map:
+    case PlotKind::regime_map:
+    case PlotKind::lyapunov:
+    case PlotKind::lyapunov_map:
+      if (!data.sweep || !data.sweep_spec) return FieldError{kind_field, "needs a sweep"};
+      if (auto e = validate_sweep_plot(figure.plots[i].kind, *data.sweep_spec)) return e;
+      draw_sweep_panel(cr, in);
+      break;
+    case PlotKind::branch:
+      if (!data.branch || !data.continuation) return FieldError{kind_field, "needs a continued periodic motion"};
+      render::draw_branch_panel(cr, in);
+      break;
+  }
+  return std::nullopt;
+}
+
+// The same panel with room for its legend beside the plot or above it, whichever leaves the data
+// the larger share of its plot area.
+std::pair<render::PanelLayout, render::LegendPlace> with_room_for_legend(
+    const render::PanelLayout& layout, const render::Style& style, const render::LegendFit& fit) {
+  const render::Rect& plot = layout.plots.front();
+  const double column = fit.size.x / style.scale + 2.0 * render::kLegendInset;
+  const double strip = fit.size.y / style.scale + render::kLegendInset;
+  const int stacked = static_cast<int>(layout.plots.size());
+  const double beside = 1.0 - style.px(column) / plot.w;
+  const double above = 1.0 - style.px(strip) / (stacked * plot.h);
+  if (beside >= above) return {render::panel_layout(layout.cell, style, stacked, column), render::LegendPlace::beside};
+  return {render::panel_layout(layout.cell, style, stacked, 0.0, strip), render::LegendPlace::above};
+}
+
 std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, const Model& model,
                                       const RunResult& run, const PanelData& data,
                                       std::vector<PhaseAxes>& axes) {
@@ -57,40 +109,42 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
   cairo_paint(cr);
   const render::Style style = render::style_for(figure.width, figure.height);
   const auto layouts = render::figure_layout(figure);
+  // A legend that would hide data in every corner of its plot goes beside it or above it instead:
+  // the panel is drawn again, narrower or lower. An image is drawn once and its cell painted over when it must be
+  // redrawn; a vector figure (where what is painted over stays in the file) is first drawn on a
+  // pixel of scratch, which only measures.
+  const bool raster = cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE;
+  render::SurfacePtr scratch_surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1));
+  render::CairoPtr scratch(cairo_create(scratch_surface.get()));
   for (std::size_t i = 0; i < layouts.size(); ++i) {
-    const render::PanelInput in{figure.plots[i], model, run, layouts[i], style, data, &axes};
-    switch (figure.plots[i].kind) {
-      case PlotKind::phase:
-        render::draw_phase_panel(cr, in);
-        break;
-      case PlotKind::time:
-        render::draw_time_panel(cr, in);
-        break;
-      case PlotKind::cylinder:
-        if (auto message = render::draw_cylinder_panel(cr, in))
-          return FieldError{"plots[" + std::to_string(i) + "].kind", *message};
-        break;
-      case PlotKind::work_precision:
-        if (!data.work_precision)
-          return FieldError{"plots[" + std::to_string(i) + "].kind", "needs a work-precision sweep"};
-        render::draw_work_precision_panel(cr, in);
-        break;
-      case PlotKind::bifurcation:
-      case PlotKind::section:
-      case PlotKind::impact_map:
-      case PlotKind::regime_map:
-      case PlotKind::lyapunov:
-      case PlotKind::lyapunov_map:
-        if (!data.sweep || !data.sweep_spec)
-          return FieldError{"plots[" + std::to_string(i) + "].kind", "needs a sweep"};
-        if (auto e = validate_sweep_plot(figure.plots[i].kind, *data.sweep_spec)) return e;
-        draw_sweep_panel(cr, in);
-        break;
-      case PlotKind::branch:
-        if (!data.branch || !data.continuation)
-          return FieldError{"plots[" + std::to_string(i) + "].kind", "needs a continued periodic motion"};
-        render::draw_branch_panel(cr, in);
-        break;
+    const PlotKind kind = figure.plots[i].kind;
+    const bool movable = kind != PlotKind::cylinder && kind != PlotKind::regime_map &&
+                         kind != PlotKind::lyapunov_map;
+    render::LegendFit fit;
+    std::vector<PhaseAxes> measured;
+    cairo_t* first = raster || !movable ? cr : scratch.get();
+    render::watch_legends(first, &fit);
+    const std::size_t axes_before = axes.size();
+    auto e = draw_panel(first, figure, i,
+                        {figure.plots[i], model, run, layouts[i], style, data, first == cr ? &axes : &measured});
+    render::watch_legends(first, nullptr);
+    if (e) return e;
+    if (movable && fit.hid_data) {
+      axes.resize(axes_before);
+      if (first == cr) {
+        const render::Rect& c = layouts[i].cell;
+        cairo_rectangle(cr, c.x, c.y, c.w, c.h);
+        cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
+        cairo_fill(cr);
+      }
+      const auto [roomy, place] = with_room_for_legend(layouts[i], style, fit);
+      render::place_legends(cr, place);
+      e = draw_panel(cr, figure, i, {figure.plots[i], model, run, roomy, style, data, &axes});
+      render::place_legends(cr, render::LegendPlace::inside);
+      if (e) return e;
+    } else if (first != cr) {
+      if (auto again = draw_panel(cr, figure, i, {figure.plots[i], model, run, layouts[i], style, data, &axes}))
+        return again;
     }
     if (layouts.size() > 1) render::draw_panel_letter(cr, layouts[i].cell, i, style);
   }

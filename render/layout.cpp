@@ -45,11 +45,12 @@ std::vector<Rect> grid_cells(int count, int width, int height) {
   return cells;
 }
 
-PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double legend_column) {
+PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double legend_column,
+                         double legend_strip) {
   PanelLayout layout{cell, {cell.x + 0.5 * cell.w, cell.y + style.px(kTitleTop)}, {}};
-  const double left = cell.x + style.px(kLeft), top = cell.y + style.px(kTop);
+  const double left = cell.x + style.px(kLeft), top = cell.y + style.px(kTop + legend_strip);
   const double width = std::max(1.0, cell.w - style.px(kLeft + kRight + legend_column));
-  const double height = std::max(1.0, cell.h - style.px(kTop + kBottom));
+  const double height = std::max(1.0, cell.h - style.px(kTop + kBottom + legend_strip));
   const int n = std::max(1, stacked);
   const double gap = style.px(kStackGap);
   const double each = std::max(1.0, (height - gap * (n - 1)) / n);

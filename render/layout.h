@@ -22,8 +22,10 @@ struct PanelLayout {
 };
 
 // A 2-D panel with `stacked` plot areas (1, or 2 for φ(t) over φ̇(t)) above a shared x axis,
-// `legend_column` pixels (at scale 1) kept free right of the plot for a legend beside the data.
-PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double legend_column = 0.0);
+// `legend_column` pixels (at scale 1) kept free right of the plot for a legend beside the data,
+// or `legend_strip` pixels above it for a legend over the data.
+PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double legend_column = 0.0,
+                         double legend_strip = 0.0);
 
 // The width (at scale 1) a map of a sweep (regime or Lyapunov map) keeps right of its plot for
 // its legend or colour bar: every cell is data, so no corner of the plot is free for it.

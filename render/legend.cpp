@@ -44,6 +44,19 @@ void draw_swatch(cairo_t* cr, const LegendEntry& e, Point left_middle, const Sty
   cairo_set_dash(cr, nullptr, 0, 0.0);
 }
 
+// What a legend box hides: a label costs more than any length of curve. Zero: nothing.
+double placement_cost(const Rect& box, const Obstacles& avoid) {
+  double cost = 0.0;
+  for (const Rect& b : avoid.boxes) cost += box.overlaps(b) ? 1e9 : 0.0;
+  for (const auto& line : avoid.lines) cost += length_inside(box, line);
+  return cost;
+}
+
+const cairo_user_data_key_t kFitKey{};
+const cairo_user_data_key_t kPlaceKey{};
+// Stable addresses for the places, kept as cairo user data.
+const LegendPlace kPlaces[] = {LegendPlace::inside, LegendPlace::beside, LegendPlace::above};
+
 }  // namespace
 
 double length_inside(const Rect& box, std::span<const Point> line) {
@@ -84,10 +97,7 @@ Rect legend_box(Point size, const Rect& area, const Obstacles& avoid, double ins
   double least = std::numeric_limits<double>::infinity();
   for (const auto& [i, j] : order) {
     const Rect c{xs[i], ys[j], size.x, size.y};
-    // A hidden label costs more than any length of curve.
-    double cost = 0.0;
-    for (const Rect& b : avoid.boxes) cost += c.overlaps(b) ? 1e9 : 0.0;
-    for (const auto& line : avoid.lines) cost += length_inside(c, line);
+    const double cost = placement_cost(c, avoid);
     if (cost < least) least = cost, best = c;
   }
   return best;
@@ -103,10 +113,27 @@ Point legend_size(cairo_t* cr, const std::vector<LegendEntry>& entries, const St
           2.0 * pad + row * entries.size() - (row - style.note_font())};
 }
 
+void watch_legends(cairo_t* cr, LegendFit* fit) { cairo_set_user_data(cr, &kFitKey, fit, nullptr); }
+
+void place_legends(cairo_t* cr, LegendPlace place) {
+  cairo_set_user_data(cr, &kPlaceKey, const_cast<LegendPlace*>(&kPlaces[static_cast<int>(place)]), nullptr);
+}
+
 void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rect& area,
                  const Obstacles& avoid, const Style& style) {
   if (entries.empty()) return;
-  const Rect box = legend_box(legend_size(cr, entries, style), area, avoid, style.px(kLegendInset));
+  const Point size = legend_size(cr, entries, style);
+  const auto* set = static_cast<const LegendPlace*>(cairo_get_user_data(cr, &kPlaceKey));
+  const LegendPlace place = set ? *set : LegendPlace::inside;
+  const double inset = style.px(kLegendInset);
+  const Rect box = place == LegendPlace::beside ? Rect{area.right() + inset, area.y, size.x, size.y}
+                   : place == LegendPlace::above
+                       ? Rect{area.right() - size.x, area.y - inset - size.y, size.x, size.y}
+                       : legend_box(size, area, avoid, inset);
+  if (auto* fit = static_cast<LegendFit*>(cairo_get_user_data(cr, &kFitKey))) {
+    fit->hid_data = fit->hid_data || (place == LegendPlace::inside && placement_cost(box, avoid) > 0.0);
+    fit->size = {std::max(fit->size.x, size.x), std::max(fit->size.y, size.y)};
+  }
   const double pad = style.px(kPadding), row = kRowHeight * style.note_font();
 
   cairo_rectangle(cr, box.x, box.y, box.w, box.h);

@@ -43,8 +43,23 @@ inline constexpr double kLegendInset = 8.0;
 // The size of the legend box of the entries (nothing when there are none), in the note font.
 Point legend_size(cairo_t* cr, const std::vector<LegendEntry>& entries, const Style& style);
 
-// Draws the entries in the best corner of `area`; nothing when there are none.
+// Draws the entries in the best corner of `area`; nothing when there are none. Beside or above
+// the plot instead while the figure asks for it (place_legends).
 void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rect& area,
                  const Obstacles& avoid, const Style& style);
+
+// What the legends drawn on cr while a fit is watched needed: whether the best corner of one
+// still hid data (a curve, a mark or a label), and the largest legend's size.
+struct LegendFit {
+  bool hid_data = false;
+  Point size;
+};
+// Watches the legends drawn on cr from now on (null: stops).
+void watch_legends(cairo_t* cr, LegendFit* fit);
+// Where legends go: in the best corner of their plot area, or where the figure has made room
+// for a panel whose legend would hide data in every corner: right of the plot, top aligned, or
+// above it, right aligned.
+enum class LegendPlace { inside, beside, above };
+void place_legends(cairo_t* cr, LegendPlace place);
 
 }  // namespace vibro::render

@@ -2,6 +2,10 @@
 
 #include <gtest/gtest.h>
 
+#include <cstdint>
+
+#include "render/cairo_ptr.h"
+
 namespace vibro::render {
 namespace {
 
@@ -53,6 +57,55 @@ TEST(LegendBox, FallsBackToTheMiddleOfAnEdge) {
   const Rect box = legend_box({100, 50}, kArea, avoid, 5.0);
   EXPECT_EQ(box.x, 5);
   EXPECT_EQ(box.y, 125);
+}
+
+}  // namespace
+}  // namespace vibro::render
+
+namespace vibro::render {
+namespace {
+
+// A legend whose every place in the plot hides a curve says so, with its size; beside or above
+// the plot it is drawn where the figure made room, and hides nothing there.
+TEST(LegendFit, ALegendWithNoFreeCornerIsReportedAndMovedOutOfThePlot) {
+  SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 700, 500));
+  CairoPtr cr(cairo_create(surface.get()));
+  const Style style = style_for(1200, 800);
+  const Rect area{100, 150, 400, 300};
+  Obstacles everywhere;
+  for (double y = 160; y < 450; y += 20) everywhere.lines.push_back({{100, y}, {500, y}});
+  const std::vector<LegendEntry> entries = {{"pellet 1", kInk}, {"limiter impact", kInk, Swatch::marker}};
+  LegendFit fit;
+  watch_legends(cr.get(), &fit);
+  draw_legend(cr.get(), entries, area, everywhere, style);
+  EXPECT_TRUE(fit.hid_data);
+  EXPECT_GT(fit.size.x, 50.0);
+  EXPECT_GT(fit.size.y, 20.0);
+
+  LegendFit beside, above;
+  watch_legends(cr.get(), &beside);
+  place_legends(cr.get(), LegendPlace::beside);
+  draw_legend(cr.get(), entries, area, everywhere, style);
+  watch_legends(cr.get(), &above);
+  place_legends(cr.get(), LegendPlace::above);
+  draw_legend(cr.get(), entries, area, everywhere, style);
+  place_legends(cr.get(), LegendPlace::inside);
+  watch_legends(cr.get(), nullptr);
+  EXPECT_FALSE(beside.hid_data);
+  EXPECT_FALSE(above.hid_data);
+  cairo_surface_flush(surface.get());
+  // Ink right of the plot (beside) and over it (above): the legends' frames and text.
+  const auto* data = cairo_image_surface_get_data(surface.get());
+  const int stride = cairo_image_surface_get_stride(surface.get());
+  auto ink_in = [&](Rect r) {
+    long n = 0;
+    for (int y = static_cast<int>(r.y); y < static_cast<int>(r.bottom()); ++y)
+      for (int x = static_cast<int>(r.x); x < static_cast<int>(r.right()); ++x)
+        n += (reinterpret_cast<const std::uint32_t*>(data + y * stride)[x] & 0xffffff) != 0;
+    return n;
+  };
+  EXPECT_GT(ink_in({area.right() + 1, area.y, 190, fit.size.y}), 100);
+  EXPECT_GT(ink_in({area.right() - fit.size.x, area.y - fit.size.y - 10, fit.size.x, fit.size.y}), 100);
 }
 
 }  // namespace
