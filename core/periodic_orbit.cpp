@@ -1,6 +1,7 @@
 #include "core/periodic_orbit.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <sstream>
 
@@ -149,6 +150,14 @@ double residual_norm(const Model& model, const Vec& r) {
 }
 
 PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options, const OrbitSpec& spec) {
+  // options.deadline_ms bounds the whole search: each map's run gets what is left of it.
+  const auto started = std::chrono::steady_clock::now();
+  auto within = [&] {
+    SimOptions o = options;
+    o.deadline_ms = options.deadline_ms -
+                    std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    return o;
+  };
   PeriodicOrbit orbit;
   orbit.periods = spec.periods;
   orbit.period = forcing_period(model);
@@ -160,7 +169,7 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
   } else {
     for (int i = 0; i < n; ++i) x.segment(2 * i, 2) << model.pellets[i].phi0, model.pellets[i].dphi0;
     if (spec.transient > 0) {
-      const RunResult warmup = map_run(model, options, orbit.t0, x, false);
+      const RunResult warmup = map_run(model, within(), orbit.t0, x, false);
       if (warmup.stats.termination != Termination::completed) {
         orbit.message = "the run that gives the starting guess " + warmup.stats.message;
         return orbit;
@@ -169,10 +178,14 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
     }
   }
   const double tol = tolerance_for(options);
-  MapPoint p = stroboscopic_map(model, options, spec.periods, x);
+  MapPoint p = stroboscopic_map(model, within(), spec.periods, x);
   double norm = residual_norm(model, orbit_residual(p));
   for (orbit.iterations = 0; p.ok && norm > tol && orbit.iterations < spec.max_iterations;
        ++orbit.iterations) {
+    if (within().deadline_ms <= 0.0) {
+      orbit.message = "the search took longer than its deadline of " + number(options.deadline_ms) + " ms";
+      break;
+    }
     const Mat A = p.jacobian - Mat::Identity(2 * n, 2 * n);
     const Vec dx = A.fullPivLu().solve(-orbit_residual(p));
     if (!dx.allFinite()) break;
@@ -180,7 +193,7 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
     // sequence of events.
     bool accepted = false;
     for (double lambda = 1.0; lambda >= 1.0 / 256.0 && !accepted; lambda /= 2.0) {
-      MapPoint trial = stroboscopic_map(model, options, spec.periods, p.x + lambda * dx);
+      MapPoint trial = stroboscopic_map(model, within(), spec.periods, p.x + lambda * dx);
       const double trial_norm = trial.ok ? residual_norm(model, orbit_residual(trial)) : INFINITY;
       if (trial_norm < (1.0 - 1e-4 * lambda) * norm) {
         p = std::move(trial);
@@ -198,9 +211,10 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
   }
   orbit.converged = norm <= tol;
   if (!orbit.converged) {
-    orbit.message = "Newton's method stopped after " + std::to_string(orbit.iterations) +
-                    " iterations with the state returning " + number(norm) +
-                    " away (needed " + number(tol) + "): no periodic motion near the guess, or one the map's events make nonsmooth there";
+    if (orbit.message.empty())
+      orbit.message = "Newton's method stopped after " + std::to_string(orbit.iterations) +
+                      " iterations with the state returning " + number(norm) + " away (needed " +
+                      number(tol) + "): no periodic motion near the guess, or one the map's events make nonsmooth there";
     return orbit;
   }
   orbit.exact_jacobian = p.exact;
@@ -222,7 +236,7 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
 
   // The check: the orbit run with the shadow at a tighter tolerance must return to itself, with
   // its events vouched for and no near miss that could change them.
-  SimOptions check = options;
+  SimOptions check = within();
   check.t_end = spec.periods * orbit.period;
   check.check = true;
   check.record.clear();

@@ -203,6 +203,15 @@ TEST(PeriodicOrbit, TwoReturnsOfAPeriodOneMotionSquareItsMultipliers) {
   }
 }
 
+// The run's deadline bounds the whole search, not each of its runs.
+TEST(PeriodicOrbit, TheDeadlineBoundsTheWholeSearch) {
+  SimOptions o = tight();
+  o.deadline_ms = 1e-3;
+  const PeriodicOrbit orbit = find_periodic_orbit(impact_oscillator(5.5), o, from_guess(0.12, 0.15));
+  EXPECT_FALSE(orbit.converged);
+  EXPECT_NE(orbit.message.find("deadline"), std::string::npos) << orbit.message;
+}
+
 TEST(PeriodicOrbit, BadRequestsNameTheirField) {
   Model unforced = impact_oscillator(5.0);
   unforced.pellets[0].force = {};
