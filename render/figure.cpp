@@ -104,7 +104,7 @@ std::pair<render::PanelLayout, render::LegendPlace> with_room_for_legend(
 
 std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, const Model& model,
                                       const RunResult& run, const PanelData& data,
-                                      std::vector<PhaseAxes>& axes) {
+                                      std::vector<PlotAxes>& axes) {
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
   cairo_paint(cr);
   const render::Style style = render::style_for(figure.width, figure.height);
@@ -121,7 +121,7 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
     const bool movable = kind != PlotKind::cylinder && kind != PlotKind::regime_map &&
                          kind != PlotKind::lyapunov_map;
     render::LegendFit fit;
-    std::vector<PhaseAxes> measured;
+    std::vector<PlotAxes> measured;
     cairo_t* first = raster || !movable ? cr : scratch.get();
     render::watch_legends(first, &fit);
     const std::size_t axes_before = axes.size();
@@ -160,7 +160,7 @@ RenderResult render_png(const FigureSpec& figure, const Model& model, const RunR
                         const PanelData& data) {
   SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, figure.width, figure.height));
   CairoPtr cr(cairo_create(surface.get()));
-  std::vector<PhaseAxes> axes;
+  std::vector<PlotAxes> axes;
   if (auto e = draw_figure(cr.get(), figure, model, run, data, axes)) return failure(*e);
   cairo_surface_flush(surface.get());
   auto bytes =
@@ -191,7 +191,7 @@ RenderResult render_vector(const FigureSpec& figure, const Model& model, const R
   // Pixels, not cairo's default points, so that the SVG shows at the size asked for.
   if (format == ImageFormat::svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
   std::vector<render::PlacedText> texts;
-  std::vector<PhaseAxes> axes;
+  std::vector<PlotAxes> axes;
   {
     CairoPtr cr(cairo_create(surface.get()));
     cairo_scale(cr.get(), scale, scale);

@@ -37,13 +37,15 @@ inline constexpr long kMaxFigurePixels = 40'000'000;  // width × height
 inline constexpr int kMinFigureSide = 64;             // smaller leaves no room for axes
 inline constexpr int kMaxPanels = 16;
 
-// Where a phase panel lies on the image and what its axes span, so that a click on the image can
-// name a state (φ, φ̇) of its pellet (the web page starts the pellet there).
-struct PhaseAxes {
-  int pellet = 0;
+// Where a phase or time panel's plot lies on the image and what its axes span, so that a point
+// of the image names a state or a time: the web page starts a pellet where a portrait is clicked,
+// and moves markers over the image as it animates the run.
+struct PlotAxes {
+  PlotKind kind = PlotKind::phase;  // phase: x φ (rad), y φ̇ (rad/s); time: x t (s), y φ (rad)
+  int pellet = -1;                  // phase: the pellet drawn
   double left = 0.0, top = 0.0, width = 0.0, height = 0.0;  // the plot area, image pixels
-  double phi_lo = 0.0, phi_hi = 0.0;    // rad, at the left and right edges
-  double dphi_lo = 0.0, dphi_hi = 0.0;  // rad/s, at the bottom and top edges
+  double x_lo = 0.0, x_hi = 0.0;  // at the left and right edges
+  double y_lo = 0.0, y_hi = 0.0;  // at the bottom and top edges
 };
 
 struct RenderResult {
@@ -52,7 +54,7 @@ struct RenderResult {
   // The offending field as the scene JSON spells it ("width", "plots[1].pellet") and what was
   // expected; FieldError is core's error type, so the server reports both kinds alike.
   std::optional<FieldError> error;
-  std::vector<PhaseAxes> phase_axes;  // one per phase panel, in the figure's order
+  std::vector<PlotAxes> plot_axes;  // one per phase or time panel (its φ plot), in order
 
   bool ok() const { return !error; }
 };

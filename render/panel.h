@@ -23,7 +23,7 @@ struct PanelInput {
   const PanelLayout& layout;
   const Style& style;
   const PanelData& data;  // for work-precision and bifurcation panels
-  std::vector<PhaseAxes>* phase_axes = nullptr;  // phase panels add where they lie
+  std::vector<PlotAxes>* plot_axes = nullptr;  // phase and time panels add where they lie
 };
 
 // The (φ, φ̇) portrait of one pellet: numbered branches, impacts, limiters, optional overlays.

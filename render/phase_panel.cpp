@@ -146,9 +146,9 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
   const Axis x = make_axis(phi_axis, area.w, true, kPhiLabel);
   const Axis y = make_axis(dphi_axis, area.h, false, kDphiLabel, true);
   const Transform tr(area, x.range, y.range);
-  if (in.phase_axes)
-    in.phase_axes->push_back({spec.pellet, area.x, area.y, area.w, area.h, x.range.lo, x.range.hi,
-                              y.range.lo, y.range.hi});
+  if (in.plot_axes)
+    in.plot_axes->push_back({PlotKind::phase, spec.pellet, area.x, area.y, area.w, area.h,
+                             x.range.lo, x.range.hi, y.range.lo, y.range.hi});
 
   draw_grid(cr, tr, x, y, style);
   cairo_save(cr);

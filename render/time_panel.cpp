@@ -95,6 +95,9 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   phi_range.lo -= style.px(14.0) / top.h * phi_range.span();  // below the data, not over it
   const Axis y_phi = make_axis(phi_range, top.h, true, kPhiLabel, true);
   const Transform tr_phi(top, x.range, y_phi.range);
+  if (in.plot_axes)
+    in.plot_axes->push_back({PlotKind::time, -1, top.x, top.y, top.w, top.h, x.range.lo, x.range.hi,
+                             y_phi.range.lo, y_phi.range.hi});
 
   Obstacles avoid;
   std::vector<LegendEntry> legend;

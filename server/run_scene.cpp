@@ -61,14 +61,15 @@ std::optional<ApiError> stopped_by_limit(const RunResult& run, const Scene& scen
   return error;
 }
 
-// Where the phase panels lie, as compact JSON: [{"pellet", "left", "top", "width", "height",
-// "phi": [lo, hi], "dphi": [lo, hi]}], image pixels and the axes' spans; a click on the page's
-// image names a state from it.
-std::string phase_axes_header(const std::vector<PhaseAxes>& axes) {
+// Where the phase and time plots lie, as compact JSON: [{"kind": "phase"|"time", "pellet",
+// "left", "top", "width", "height", "x": [lo, hi], "y": [lo, hi]}], image pixels and the axes'
+// spans (render/figure.h, PlotAxes); the page reads clicks and places markers from it.
+std::string plot_axes_header(const std::vector<PlotAxes>& axes) {
   nlohmann::json list = nlohmann::json::array();
-  for (const PhaseAxes& a : axes)
-    list.push_back({{"pellet", a.pellet}, {"left", a.left}, {"top", a.top}, {"width", a.width},
-                    {"height", a.height}, {"phi", {a.phi_lo, a.phi_hi}}, {"dphi", {a.dphi_lo, a.dphi_hi}}});
+  for (const PlotAxes& a : axes)
+    list.push_back({{"kind", a.kind == PlotKind::phase ? "phase" : "time"}, {"pellet", a.pellet},
+                    {"left", a.left}, {"top", a.top}, {"width", a.width}, {"height", a.height},
+                    {"x", {a.x_lo, a.x_hi}}, {"y", {a.y_lo, a.y_hi}}});
   return list.dump();
 }
 
@@ -192,7 +193,7 @@ JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& lim
   RenderResult image = render_figure(scene.figure, scene.model, run, format);
   if (!image.ok()) return ApiError::from(*image.error);
   Produced p{std::string(image.bytes.begin(), image.bytes.end()), image.content_type, {}};
-  if (!image.phase_axes.empty()) p.headers.emplace_back("X-Vibro-Phase-Axes", phase_axes_header(image.phase_axes));
+  if (!image.plot_axes.empty()) p.headers.emplace_back("X-Vibro-Plot-Axes", plot_axes_header(image.plot_axes));
   return p;
 }
 

@@ -11,6 +11,7 @@ import { describePreset, fillPicker, sameScene } from "./js/presets.js";
 import { SceneForm } from "./js/scene_form.js";
 import { setPath } from "./js/scene_path.js";
 import { clickedValue, defaultSweep, runSweep, sweepablePaths } from "./js/sweep.js";
+import { drawMarkers, drawMechanism, parseTrajectory } from "./js/animation.js";
 import { describeOrbit, findOrbit, sceneOnOrbit } from "./js/orbit.js";
 import { showSummary, showWarnings } from "./js/summary.js";
 
@@ -129,19 +130,29 @@ async function render() {
   }
 }
 
-function showRun(scene, { result, text }, { image, phaseAxes }, format) {
+function showRun(scene, { result, text }, { image, plotAxes }, format) {
   forgetRun();
   const imageUrl = URL.createObjectURL(image);
   const jsonUrl = URL.createObjectURL(new Blob([text], { type: "application/json" }));
-  state.run = { scene, images: { [format]: imageUrl }, json: jsonUrl, phaseAxes };
-  ui.imageBox.classList.toggle("clickable", phaseAxes.length > 0);
+  state.run = { scene, images: { [format]: imageUrl }, json: jsonUrl, plotAxes };
+  ui.imageBox.classList.toggle("clickable", plotAxes.length > 0);
 
   const panels = (scene.plots ?? []).map((p) => p.kind).join(", ");
   const img = new Image();
   img.src = imageUrl;
   img.alt = `Figure of the scene${scene.name ? ` “${scene.name}”` : ""}${panels ? `: ${panels} panels` : ""}. The summary below states the outcome in words.`;
   img.id = "figure";
-  fill(ui.imageBox, img);
+  const marks = document.createElement("canvas");
+  marks.id = "figure-marks";
+  img.addEventListener("load", () => {
+    marks.width = img.naturalWidth;
+    marks.height = img.naturalHeight;
+  });
+  const stack = document.createElement("div");
+  stack.className = "figure-stack";
+  stack.append(img, marks);
+  fill(ui.imageBox, stack);
+  resetAnimation(scene);
 
   showSummary(ui.summary, result);
   showWarnings(ui.warnings, result.warnings);
@@ -185,10 +196,10 @@ for (const format of ["png", "svg"]) {
 // A click on a phase portrait starts its pellet from the clicked (φ, φ̇), as pplane does.
 ui.imageBox.addEventListener("click", async (e) => {
   const img = e.target.closest("img#figure");
-  if (!img || !state.run?.phaseAxes?.length) return;
+  if (!img || !state.run?.plotAxes?.length) return;
   const rect = img.getBoundingClientRect();
   const scale = img.naturalWidth / rect.width;
-  const at = clickedState(state.run.phaseAxes, (e.clientX - rect.left) * scale, (e.clientY - rect.top) * scale);
+  const at = clickedState(state.run.plotAxes, (e.clientX - rect.left) * scale, (e.clientY - rect.top) * scale);
   if (!at) return;
   const scene = structuredClone(state.run.scene);
   const pellet = scene.model.pellets[at.pellet];
@@ -198,6 +209,85 @@ ui.imageBox.addEventListener("click", async (e) => {
   edited();
   setStatus(`Pellet ${at.pellet + 1} starts at φ = ${pellet.phi0} rad, φ̇ = ${pellet.dphi0} rad/s.`);
   await render();
+});
+
+// [SECTION] animation
+
+const animUi = { box: $("animation"), canvas: $("mechanism"), play: $("anim-play"), time: $("anim-time"), label: $("anim-label") };
+const anim = { scene: null, trajectory: null, loading: null, t: 0, playing: false, frame: 0 };
+
+function resetAnimation(scene) {
+  cancelAnimationFrame(anim.frame);
+  Object.assign(anim, { scene, trajectory: null, loading: null, t: 0, playing: false });
+  animUi.play.textContent = "Play";
+  animUi.time.max = String(scene.t_end);
+  animUi.time.value = "0";
+  animUi.label.textContent = "t = 0 s";
+  animUi.box.hidden = false;
+  loadTrajectory().then(() => showAt(0));
+}
+
+// The run's sampled trajectory, fetched once per run.
+function loadTrajectory() {
+  const scene = anim.scene;
+  anim.loading ??= fetch("/api/simulate?format=csv&what=trajectory", {
+    method: "POST",
+    headers: { "Content-Type": "application/json" },
+    body: JSON.stringify(scene),
+  })
+    .then((r) => (r.ok ? r.text() : Promise.reject(new Error(`${r.status}`))))
+    .then((csv) => {
+      if (anim.scene === scene) anim.trajectory = parseTrajectory(csv);
+    })
+    .catch(() => {
+      animUi.label.textContent = "The trajectory could not be fetched.";
+    });
+  return anim.loading;
+}
+
+function showAt(t) {
+  if (!anim.trajectory) return;
+  anim.t = t;
+  animUi.time.value = String(t);
+  animUi.label.textContent = `t = ${t.toFixed(3)} s`;
+  drawMechanism(animUi.canvas, anim.scene, anim.trajectory, t);
+  const marks = $("figure-marks");
+  if (marks && state.run) drawMarkers(marks, state.run.plotAxes, anim.trajectory, t);
+}
+
+// Plays the run in about ten seconds, or in real time when it is shorter.
+function play() {
+  const t_end = anim.scene.t_end;
+  const rate = Math.max(1, t_end / 10);
+  let last = performance.now();
+  if (anim.t >= t_end) anim.t = 0;
+  const step = (now) => {
+    if (!anim.playing) return;
+    const t = Math.min(t_end, anim.t + ((now - last) / 1000) * rate);
+    last = now;
+    showAt(t);
+    if (t >= t_end) return pause();
+    anim.frame = requestAnimationFrame(step);
+  };
+  anim.playing = true;
+  animUi.play.textContent = "Pause";
+  anim.frame = requestAnimationFrame(step);
+}
+
+function pause() {
+  anim.playing = false;
+  cancelAnimationFrame(anim.frame);
+  animUi.play.textContent = "Play";
+}
+
+animUi.play.addEventListener("click", async () => {
+  if (anim.playing) return pause();
+  await loadTrajectory();
+  if (anim.trajectory) play();
+});
+animUi.time.addEventListener("input", async () => {
+  await loadTrajectory();
+  showAt(Number(animUi.time.value));
 });
 
 // [SECTION] sweep

@@ -307,7 +307,7 @@ try {
     const picked = await runCount(page);
     const axes = await page.evaluate(async (body) => {
       const r = await fetch("/api/render?format=png", { method: "POST", headers: { "Content-Type": "application/json" }, body });
-      return JSON.parse(r.headers.get("X-Vibro-Phase-Axes") ?? "[]");
+      return JSON.parse(r.headers.get("X-Vibro-Plot-Axes") ?? "[]").filter((a) => a.kind === "phase");
     }, scene);
     expect(axes.length === 1 && axes[0].pellet === 0, `the phase panels: ${JSON.stringify(axes)}`);
     const a = axes[0];
@@ -320,9 +320,9 @@ try {
     await waitForRun(page, picked);
     const phi = Number(await page.inputValue('[data-field="model.pellets[0].phi0"]'));
     const dphi = Number(await page.inputValue('[data-field="model.pellets[0].dphi0"]'));
-    const wantPhi = a.phi[0] + (a.phi[1] - a.phi[0]) / 4, wantDphi = a.dphi[1] - (a.dphi[1] - a.dphi[0]) / 4;
-    expect(Math.abs(phi - wantPhi) < 0.01 * (a.phi[1] - a.phi[0]), `φ0 = ${phi}, clicked ${wantPhi}`);
-    expect(Math.abs(dphi - wantDphi) < 0.01 * (a.dphi[1] - a.dphi[0]), `φ̇0 = ${dphi}, clicked ${wantDphi}`);
+    const wantPhi = a.x[0] + (a.x[1] - a.x[0]) / 4, wantDphi = a.y[1] - (a.y[1] - a.y[0]) / 4;
+    expect(Math.abs(phi - wantPhi) < 0.01 * (a.x[1] - a.x[0]), `φ0 = ${phi}, clicked ${wantPhi}`);
+    expect(Math.abs(dphi - wantDphi) < 0.01 * (a.y[1] - a.y[0]), `φ̇0 = ${dphi}, clicked ${wantDphi}`);
   });
 
   await check("the periodic-motion panel finds the impact oscillator's motion and draws it", async () => {
@@ -344,6 +344,32 @@ try {
     const fig = await pixelsOf(page, "figure");
     expect(fig.ink > 0.002, "the orbit's figure is blank");
     await page.screenshot({ path: join(shots, "orbit.png"), fullPage: true });
+  });
+
+  await check("the animation plays the run: the mechanism and markers move, the slider sets the time", async () => {
+    // The last render (the periodic motion drawn above): one period of the impact oscillator.
+    await page.locator("#anim-play").scrollIntoViewIfNeeded();
+    const painted = (id) => page.evaluate((canvasId) => {
+      const c = document.getElementById(canvasId);
+      const { data } = c.getContext("2d").getImageData(0, 0, c.width, c.height);
+      let n = 0;
+      for (let i = 3; i < data.length; i += 4) n += data[i] > 0 ? 1 : 0;
+      return n;
+    }, id);
+    await page.click("#anim-play");
+    await page.waitForTimeout(700);
+    const t = Number(await page.inputValue("#anim-time"));
+    expect(t > 0, `the slider did not move: t = ${t}`);
+    expect((await painted("mechanism")) > 500, "the mechanism is not drawn");
+    expect((await painted("figure-marks")) > 20, "no marker over the figure");
+    await page.click("#anim-play");  // pause
+    await page.evaluate(() => {
+      const s = document.getElementById("anim-time");
+      s.value = "0.5";
+      s.dispatchEvent(new Event("input"));
+    });
+    await page.waitForFunction(() => document.getElementById("anim-label").textContent === "t = 0.500 s", null, { timeout: 5000 });
+    await page.screenshot({ path: join(shots, "animation.png"), fullPage: true });
   });
 
   await check("no script errors on the page", async () => {

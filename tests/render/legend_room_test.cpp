@@ -1,6 +1,6 @@
 // Legends never cover data: in a small figure, where every corner of a phase portrait holds a
 // curve or a mark, its legend is drawn beside or above the plot, outside the plot area the
-// figure reports (RenderResult::phase_axes).
+// figure reports (RenderResult::plot_axes).
 #include <gtest/gtest.h>
 
 #include <string>
@@ -37,12 +37,12 @@ TEST(LegendRoom, InASmallFigureThePortraitsLegendsStayOutOfTheirPlots) {
   figure.height = 300;
   const RenderResult svg = render_figure(figure, model, run, ImageFormat::svg);
   ASSERT_TRUE(svg.ok()) << svg.error->message;
-  ASSERT_EQ(svg.phase_axes.size(), 2u);
+  ASSERT_EQ(svg.plot_axes.size(), 2u);
   const std::string text(svg.bytes.begin(), svg.bytes.end());
   const auto labels = text_positions(text, "limiter impact");
   ASSERT_EQ(labels.size(), 2u);
   for (const auto& [x, y] : labels) {
-    for (const PhaseAxes& p : svg.phase_axes) {
+    for (const PlotAxes& p : svg.plot_axes) {
       const bool inside = x >= p.left && x <= p.left + p.width && y >= p.top && y <= p.top + p.height;
       EXPECT_FALSE(inside) << "a legend label at (" << x << ", " << y << ") inside the plot of pellet "
                            << p.pellet + 1;
@@ -55,7 +55,7 @@ TEST(LegendRoom, InASmallFigureThePortraitsLegendsStayOutOfTheirPlots) {
   const std::string large_text(large.bytes.begin(), large.bytes.end());
   int inside = 0;
   for (const auto& [x, y] : text_positions(large_text, "limiter impact"))
-    for (const PhaseAxes& p : large.phase_axes)
+    for (const PlotAxes& p : large.plot_axes)
       inside += x >= p.left && x <= p.left + p.width && y >= p.top && y <= p.top + p.height;
   EXPECT_GE(inside, 1);
 }

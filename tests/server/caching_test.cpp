@@ -24,19 +24,22 @@ TEST_F(Caching, TheSameSceneGivesTheSameBytesFromTheCache) {
   EXPECT_FALSE(first->get_header_value("ETag").empty());
   EXPECT_EQ(first->get_header_value("ETag"), second->get_header_value("ETag"));
   EXPECT_EQ(first->get_header_value("Cache-Control"), "public, max-age=3600");
-  // Where the phase portraits lie comes with the image, from the cache too: one per phase panel,
-  // inside the image, with axes that span something.
-  const std::string axes = first->get_header_value("X-Vibro-Phase-Axes");
-  EXPECT_EQ(second->get_header_value("X-Vibro-Phase-Axes"), axes);
+  // Where the phase portraits and φ(t) lie comes with the image, from the cache too: one per
+  // panel, inside the image, with axes that span something.
+  const std::string axes = first->get_header_value("X-Vibro-Plot-Axes");
+  EXPECT_EQ(second->get_header_value("X-Vibro-Plot-Axes"), axes);
   const nlohmann::json list = nlohmann::json::parse(axes);
-  ASSERT_EQ(list.size(), 2u);
+  ASSERT_EQ(list.size(), 3u);
+  EXPECT_EQ(list[0]["kind"], "phase");
   EXPECT_EQ(list[0]["pellet"], 0);
   EXPECT_EQ(list[1]["pellet"], 1);
+  EXPECT_EQ(list[2]["kind"], "time");
+  EXPECT_EQ(list[2]["x"][1], 6.0);  // φ(t) to t_end
   for (const auto& a : list) {
     EXPECT_GT(a["left"].get<double>(), 0.0);
     EXPECT_LT(a["left"].get<double>() + a["width"].get<double>(), 1200.0);
-    EXPECT_LT(a["phi"][0].get<double>(), a["phi"][1].get<double>());
-    EXPECT_LT(a["dphi"][0].get<double>(), a["dphi"][1].get<double>());
+    EXPECT_LT(a["x"][0].get<double>(), a["x"][1].get<double>());
+    EXPECT_LT(a["y"][0].get<double>(), a["y"][1].get<double>());
   }
 }
 

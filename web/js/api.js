@@ -53,16 +53,16 @@ export async function simulate(scene, signal) {
   return { result: JSON.parse(text), text };
 }
 
-// format: "png" | "svg"; resolves to {image: a Blob of that type, phaseAxes: where each phase
-// panel lies on it and what its axes span ([] when none)}.
+// format: "png" | "svg"; resolves to {image: a Blob of that type, plotAxes: where each phase and
+// φ(t) plot lies on it and what its axes span ([] when none; server/run_scene.cpp)}.
 // A figure of work–precision panels only is a sweep of timed runs, which has its own endpoint.
 export async function renderFigure(scene, format, signal) {
   const plots = scene.plots ?? [];
   const sweep = plots.length > 0 && plots.every((p) => p.kind === "work_precision");
   const path = sweep ? "/api/work-precision" : "/api/render";
   const response = await postJson(`${path}?format=${format}`, scene, signal);
-  const header = response.headers.get("X-Vibro-Phase-Axes");
-  return { image: await response.blob(), phaseAxes: header ? JSON.parse(header) : [] };
+  const header = response.headers.get("X-Vibro-Plot-Axes");
+  return { image: await response.blob(), plotAxes: header ? JSON.parse(header) : [] };
 }
 
 export async function renderImage(scene, format, signal) {
@@ -70,15 +70,23 @@ export async function renderImage(scene, format, signal) {
 }
 
 // The state (pellet, φ, φ̇) under a click at (x, y) in the image's own pixels, or null outside
-// every phase panel's plot area.
-export function clickedState(phaseAxes, x, y) {
-  for (const a of phaseAxes) {
-    if (x < a.left || x > a.left + a.width || y < a.top || y > a.top + a.height) continue;
+// every phase portrait's plot area.
+export function clickedState(plotAxes, x, y) {
+  for (const a of plotAxes) {
+    if (a.kind !== "phase" || x < a.left || x > a.left + a.width || y < a.top || y > a.top + a.height) continue;
     return {
       pellet: a.pellet,
-      phi: a.phi[0] + ((x - a.left) / a.width) * (a.phi[1] - a.phi[0]),
-      dphi: a.dphi[1] - ((y - a.top) / a.height) * (a.dphi[1] - a.dphi[0]),
+      phi: a.x[0] + ((x - a.left) / a.width) * (a.x[1] - a.x[0]),
+      dphi: a.y[1] - ((y - a.top) / a.height) * (a.y[1] - a.y[0]),
     };
   }
   return null;
+}
+
+// Where a value pair (x, y) in a plot's axes lies on the image, in its own pixels.
+export function plotPoint(a, x, y) {
+  return {
+    x: a.left + ((x - a.x[0]) / (a.x[1] - a.x[0])) * a.width,
+    y: a.top + ((a.y[1] - y) / (a.y[1] - a.y[0])) * a.height,
+  };
 }
