@@ -1,50 +1,68 @@
-// vibro: phase portraits of vibro-impact dynamics. `vibro help` lists the subcommands.
+// vibro: phase portraits of vibro-impact dynamics. `vibro --help` lists the subcommands;
+// `vibro COMMAND --help` (or `vibro help COMMAND`) lists a subcommand's options.
 #include <iostream>
+#include <string>
+#include <vector>
 
 #include "app/commands.h"
-
-namespace vibro {
-
-const std::vector<Command>& commands() {
-  static const std::vector<Command> list = {
-      {"simulate", "vibro simulate SCENE.json | - | --preset NAME [--t-end S] [--method M] "
-                   "[--rtol X] [--atol X] [--deadline-ms MS] [--no-check] [--trajectories] [-o OUT.json|OUT.csv] [--what events|trajectory]",
-       simulate_command},
-      {"render", "vibro render SCENE.json | - | --preset NAME -o OUT.png|OUT.svg [overrides]",
-       render_command},
-      {"work-precision",
-       "vibro work-precision SCENE.json | - | --preset NAME [-o OUT.png|OUT.svg] [--repeats N]",
-       work_precision_command},
-      {"sweep",
-       "vibro sweep SCENE.json | - | --preset NAME [-o OUT.json|.csv|.png|.svg] [--threads N] "
-       "[--plot bifurcation|section|impact_map|regime_map|lyapunov|lyapunov_map] [--pellet I] "
-       "[--coordinate dphi|phi]",
-       sweep_command},
-      {"orbit",
-       "vibro orbit SCENE.json | - | --preset NAME [-o OUT.json|.png|.svg|.pdf] (the scene's periodic_orbit, "
-       "or a period-1 orbit after 100 periods)",
-       orbit_command},
-      {"serve", "vibro serve [--host 127.0.0.1] [--port 8080] [--threads N] [--web DIR] "
-                "[--quiet] (--help: every flag)",
-       serve_command},
-      {"presets", "vibro presets", presets_command},
-      {"preset", "vibro preset NAME", preset_command},
-  };
-  return list;
-}
-
-}  // namespace vibro
+#include "app/usage.h"
 
 int main(int argc, char** argv) {
-  const vibro::Args all(argv + 1, argv + argc);
-  if (all.empty() || all[0] == "help" || all[0] == "--help" || all[0] == "-h") {
-    std::cout << "vibro: phase portraits of vibro-impact dynamics\n\nusage:\n";
-    for (const auto& c : vibro::commands()) std::cout << "  " << c.usage << "\n";
-    return all.empty() ? 2 : 0;
+  using namespace vibro;
+  CLI::App app("vibro: phase portraits of vibro-impact dynamics", "vibro");
+  // A repeated option's last value counts, as it always has. Arguments nobody declared are left
+  // in remaining() rather than thrown, so that they are reported below as JSON naming them.
+  app.option_defaults()->multi_option_policy(CLI::MultiOptionPolicy::TakeLast);
+  app.allow_extras();
+  // At most one command: a second command's name is an argument of the first.
+  app.require_subcommand(0, 1);
+  const std::vector<Command> commands = {
+      add_simulate_command(app), add_render_command(app), add_work_precision_command(app),
+      add_sweep_command(app),    add_orbit_command(app),  add_serve_command(app),
+      add_presets_command(app),  add_preset_command(app),
+  };
+  std::string topic;
+  CLI::App* help =
+      app.add_subcommand("help", "List the commands, or with COMMAND that command's options");
+  help->add_option("COMMAND", topic, "the command to explain");
+  // After the subcommands, which would inherit it.
+  app.footer(
+      "`vibro COMMAND --help` lists a command's options. Bad usage is reported as JSON, "
+      "{\"error\", \"field\"}, on stderr with exit code 2.");
+  try {
+    app.parse(argc, argv);
+  } catch (const CLI::Success& e) {  // --help
+    return app.exit(e);
+  } catch (const CLI::ParseError& e) {
+    const FieldError error = field_error(e);
+    print_error(error.field, error.message);
+    return 2;
   }
-  for (const auto& c : vibro::commands()) {
-    if (c.name == all[0]) return c.run(vibro::Args(all.begin() + 1, all.end()));
+  if (const auto extra = app.remaining(); !extra.empty()) {
+    print_error(extra[0], "is not a command or option of `vibro` (see `vibro --help`)");
+    return 2;
   }
-  std::cerr << "vibro: unknown command \"" << all[0] << "\" (try `vibro help`)\n";
+  for (const CLI::App* command : app.get_subcommands()) {  // the one given
+    const std::string name = command->get_name();
+    if (const auto extra = command->remaining(); !extra.empty()) {
+      print_error(extra[0],
+                  "is not an option of `vibro " + name + "` (see `vibro " + name + " --help`)");
+      return 2;
+    }
+    for (const Command& c : commands)
+      if (c.app == command) return c.run();
+  }
+  if (!help->parsed() || topic.empty()) {  // with no command at all, the list as a usage error
+    // The program's own help: app.help() would give that of the command given, `help`.
+    std::cout << app.get_formatter()->make_help(&app, "vibro", CLI::AppFormatMode::Normal);
+    return help->parsed() ? 0 : 2;
+  }
+  for (const Command& c : commands) {
+    if (c.app->get_name() == topic) {
+      std::cout << c.app->help("vibro");
+      return 0;
+    }
+  }
+  print_error(topic, "is not a command of `vibro` (see `vibro --help`)");
   return 2;
 }

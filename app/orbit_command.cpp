@@ -13,11 +13,14 @@
 #include <fstream>
 #include <functional>
 #include <iostream>
+#include <memory>
 #include <optional>
 #include <thread>
 
 #include "app/commands.h"
 #include "app/progress_bar.h"
+#include "app/scene_options.h"
+#include "app/usage.h"
 #include "io/orbit_json.h"
 #include "render/orbit_figure.h"
 
@@ -25,7 +28,8 @@ namespace vibro {
 namespace {
 
 // The scene's sweep, when it draws beneath the branch: the same parameter, one axis.
-std::optional<SweepResult> sweep_beneath(const Scene& scene, const OrbitRequest& request, ProgressBar& bar) {
+std::optional<SweepResult> sweep_beneath(const Scene& scene, const OrbitRequest& request,
+                                         ProgressBar& bar) {
   if (!request.continuation || !scene.sweep || scene.sweep->axis2 ||
       scene.sweep->axis.parameter != request.continuation->parameter)
     return std::nullopt;
@@ -33,20 +37,19 @@ std::optional<SweepResult> sweep_beneath(const Scene& scene, const OrbitRequest&
   control.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (isatty(STDERR_FILENO))
     control.progress = [&bar](long done, long total) {
-      bar(static_cast<double>(done) / total, "sweep: " + std::to_string(done) + " of " + std::to_string(total) + " runs");
+      bar(static_cast<double>(done) / total,
+          "sweep: " + std::to_string(done) + " of " + std::to_string(total) + " runs");
     };
   SimOptions options = scene.sim;
   options.check = false;
   return run_sweep(scene.model, options, *scene.sweep, control);
 }
 
-}  // namespace
-
-int orbit_command(const Args& args) {
-  const auto job = scene_and_output(args, "orbit");
-  if (!job) return 2;
-  const Scene& scene = job->scene;
-  const std::string& out = job->out;
+int orbit(const SceneOutput& o) {
+  const auto loaded = load_scene(o.scene);
+  if (!loaded) return 2;
+  const Scene& scene = *loaded;
+  const std::string& out = o.out;
   const std::optional<ImageFormat> image = image_format_of_file(out);
   if (!out.empty() && !out.ends_with(".json") && !image) {
     print_error("-o", "name the output OUT.json, OUT.png, OUT.svg or OUT.pdf");
@@ -88,6 +91,18 @@ int orbit_command(const Args& args) {
     return 1;
   }
   return result.orbit.converged ? 0 : 1;
+}
+
+}  // namespace
+
+Command add_orbit_command(CLI::App& vibro) {
+  auto o = std::make_shared<SceneOutput>();
+  CLI::App* command = add_scene_command(
+      vibro, "orbit",
+      "Find the scene's periodic_orbit (or a period-1 motion after 100 periods), its stability, "
+      "and the branch it follows",
+      "write OUT.json instead of JSON on stdout, or draw OUT.png, OUT.svg or OUT.pdf", *o);
+  return {command, [o] { return orbit(*o); }};
 }
 
 }  // namespace vibro

@@ -1,9 +1,13 @@
-// `vibro render SCENE -o OUT.png|OUT.svg`: simulate what the scene's plots need and draw them.
+// `vibro render SCENE | - | --preset NAME -o OUT.png|OUT.svg|OUT.pdf`: simulate what the scene's
+// plots need and draw them; prints the image's name and size, the answer and the run's stats.
 #include <fstream>
 #include <iostream>
+#include <memory>
 #include <nlohmann/json.hpp>
 
 #include "app/commands.h"
+#include "app/scene_options.h"
+#include "app/usage.h"
 #include "core/simulate.h"
 #include "core/work_precision.h"
 #include "io/result_json.h"
@@ -11,20 +15,21 @@
 #include "render/run_plan.h"
 
 namespace vibro {
+namespace {
 
-int render_command(const Args& args) {
-  auto job = scene_and_output(args, "render");
-  if (!job) return 2;
-  const Scene& scene = job->scene;
-  const std::string& out = job->out;
+int render(const SceneOutput& o) {
+  const auto loaded = load_scene(o.scene);
+  if (!loaded) return 2;
+  const Scene& scene = *loaded;
+  const std::string& out = o.out;
   const auto named = image_format_of_file(out);
   if (out.empty() || !named) {
-    std::cerr << nlohmann::json{{"error", "name the image with -o OUT.png, OUT.svg or OUT.pdf"}, {"field", "-o"}}.dump() << "\n";
+    print_error("-o", "name the image with -o OUT.png, OUT.svg or OUT.pdf");
     return 2;
   }
   const ImageFormat format = *named;
   if (auto e = validate_figure(scene.figure, scene.model, format)) {
-    std::cerr << nlohmann::json{{"error", e->message}, {"field", e->field}}.dump() << "\n";
+    print_error(e->field, e->message);
     return 2;
   }
   const RunPlan plan = plan_run(scene.figure, scene.sim, scene.model.size());
@@ -34,13 +39,14 @@ int render_command(const Args& args) {
   const RenderResult image =
       render_figure(scene.figure, scene.model, run, format, {sweep ? &*sweep : nullptr});
   if (!image.ok()) {
-    std::cerr << nlohmann::json{{"error", image.error->message}, {"field", image.error->field}}.dump() << "\n";
+    print_error(image.error->field, image.error->message);
     return 1;
   }
   std::ofstream file(out, std::ios::binary);
-  file.write(reinterpret_cast<const char*>(image.bytes.data()), static_cast<std::streamsize>(image.bytes.size()));
+  file.write(reinterpret_cast<const char*>(image.bytes.data()),
+             static_cast<std::streamsize>(image.bytes.size()));
   if (!file) {
-    std::cerr << nlohmann::json{{"error", "cannot write the file"}, {"field", out}}.dump() << "\n";
+    print_error(out, "cannot write the file");
     return 1;
   }
   nlohmann::json j = result_to_json(run, scene.model);
@@ -51,6 +57,17 @@ int render_command(const Args& args) {
                    .dump(2)
             << "\n";
   return 0;
+}
+
+}  // namespace
+
+Command add_render_command(CLI::App& vibro) {
+  auto o = std::make_shared<SceneOutput>();
+  CLI::App* command = add_scene_command(
+      vibro, "render",
+      "Draw a scene's plots (phase portraits, phi(t), the 3-D cylinder) to an image",
+      "the image: OUT.png, OUT.svg or OUT.pdf", *o);
+  return {command, [o] { return render(*o); }};
 }
 
 }  // namespace vibro

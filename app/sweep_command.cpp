@@ -11,12 +11,15 @@
 #include <algorithm>
 #include <fstream>
 #include <iostream>
-#include <nlohmann/json.hpp>
+#include <memory>
+#include <optional>
 #include <thread>
 
 #include "app/commands.h"
 #include "app/mpi_sweep.h"
 #include "app/progress_bar.h"
+#include "app/scene_options.h"
+#include "app/usage.h"
 #include "core/sweep.h"
 #include "io/sweep_checkpoint.h"
 #include "io/sweep_json.h"
@@ -25,9 +28,15 @@
 namespace vibro {
 namespace {
 
-void usage_error(const std::string& field, const std::string& message) {
-  std::cerr << nlohmann::json{{"error", message}, {"field", field}}.dump() << "\n";
-}
+// The command line of a sweep, as parsed.
+struct SweepOptions {
+  SceneOutput job;
+  int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+  std::string plot;
+  std::optional<std::string> pellet;  // checked against the scene's pellets once it is read
+  SectionCoordinate coordinate = SectionCoordinate::dphi;
+  bool resume = false;
+};
 
 // A sweep as the command line asks for it, checked.
 struct SweepJob {
@@ -39,93 +48,64 @@ struct SweepJob {
   std::optional<Checkpoint> resumed;  // rank 0 only
 };
 
-// Reads and checks the arguments; on rank 0 (`root`) also the checkpoint. On failure prints
-// why and returns nothing with the exit code in `code`.
-std::optional<SweepJob> prepare(const Args& args, bool root, int& code) {
+// Reads the scene and checks the options against it; on rank 0 (`root`) also reads the
+// checkpoint. On failure prints why and returns nothing with the exit code in `code`.
+std::optional<SweepJob> prepare(const SweepOptions& o, bool root, int& code) {
   code = 2;
-  std::size_t next = 0;
-  auto scene = load_scene(args, next);
+  auto scene = load_scene(o.job.scene);
   if (!scene) return std::nullopt;
   SweepJob job;
   job.scene = std::move(*scene);
-  job.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  std::string plot_name;
-  bool resume = false;
-  for (; next < args.size(); ++next) {
-    const std::string& a = args[next];
-    if ((a == "-o" || a == "--output") && next + 1 < args.size()) {
-      job.out = args[++next];
-    } else if (a == "--threads" && next + 1 < args.size()) {
-      try {
-        job.threads = std::stoi(args[++next]);
-      } catch (const std::exception&) {
-        job.threads = 0;
-      }
-      if (job.threads < 1 || job.threads > 1024) {
-        usage_error("--threads", "must be an integer in [1, 1024]");
-        return std::nullopt;
-      }
-    } else if (a == "--pellet" && next + 1 < args.size()) {
-      const std::string& v = args[++next];
-      job.plot.pellet = v.size() == 1 && v[0] >= '0' && v[0] <= '9' ? v[0] - '0' : -1;
-      if (job.plot.pellet < 0 || job.plot.pellet >= job.scene.model.size()) {
-        usage_error("--pellet",
-                    "must be a pellet index in 0.." + std::to_string(job.scene.model.size() - 1));
-        return std::nullopt;
-      }
-    } else if (a == "--plot" && next + 1 < args.size()) {
-      plot_name = args[++next];
-    } else if (a == "--coordinate" && next + 1 < args.size()) {
-      const std::string& v = args[++next];
-      if (v != "dphi" && v != "phi") {
-        usage_error("--coordinate", "must be \"dphi\" or \"phi\"");
-        return std::nullopt;
-      }
-      job.plot.coordinate = v == "phi" ? SectionCoordinate::phi : SectionCoordinate::dphi;
-    } else if (a == "--resume") {
-      resume = true;
-    } else {
-      usage_error(a, "is not an option of `vibro sweep`");
+  job.out = o.job.out;
+  job.threads = o.threads;
+  job.plot.coordinate = o.coordinate;
+  if (o.pellet) {
+    const std::string& v = *o.pellet;
+    job.plot.pellet = v.size() == 1 && v[0] >= '0' && v[0] <= '9' ? v[0] - '0' : -1;
+    if (job.plot.pellet < 0 || job.plot.pellet >= job.scene.model.size()) {
+      print_error("--pellet",
+                  "must be a pellet index in 0.." + std::to_string(job.scene.model.size() - 1));
       return std::nullopt;
     }
   }
   if (!job.scene.sweep) {
-    usage_error("sweep", "the scene has no sweep: add one (API.md, \"Sweeps\")");
+    print_error("sweep", "the scene has no sweep: add one (API.md, \"Sweeps\")");
     return std::nullopt;
   }
-  const auto kind = sweep_plot_kind(plot_name, *job.scene.sweep);
+  const auto kind = sweep_plot_kind(o.plot, *job.scene.sweep);
   if (!kind) {
-    usage_error("--plot", std::string("must be ") + kSweepPlotNames);
+    print_error("--plot", std::string("must be ") + kSweepPlotNames);
     return std::nullopt;
   }
   job.plot.kind = *kind;
   job.image = image_format_of_file(job.out);
   if (!job.out.empty() && !job.out.ends_with(".json") && !job.out.ends_with(".csv") && !job.image) {
-    usage_error("-o", "name the output OUT.json, OUT.csv, OUT.png, OUT.svg or OUT.pdf");
+    print_error("-o", "name the output OUT.json, OUT.csv, OUT.png, OUT.svg or OUT.pdf");
     return std::nullopt;
   }
   // Before the sweep runs, not after it: a plot of what the sweep does not compute.
   if (const auto e =
           job.image ? validate_sweep_plot(job.plot.kind, *job.scene.sweep) : std::nullopt) {
-    usage_error(e->field, e->message);
+    print_error(e->field, e->message);
     return std::nullopt;
   }
-  if (resume && job.out.empty()) {
-    usage_error("--resume", "resumes the sweep of an output file: name it with -o");
+  if (o.resume && job.out.empty()) {
+    print_error("--resume", "resumes the sweep of an output file: name it with -o");
     return std::nullopt;
   }
   if (!root || job.out.empty()) return job;
   const std::string partial = checkpoint_path(job.out);
-  if (resume) {
+  if (o.resume) {
     auto read = read_checkpoint(partial, scene_fingerprint(job.scene));
     if (auto* why = std::get_if<std::string>(&read)) {
-      usage_error("--resume", *why);
+      print_error("--resume", *why);
       return std::nullopt;
     }
     job.resumed = std::move(std::get<Checkpoint>(read));
   } else if (std::ifstream(partial)) {
-    usage_error("-o", partial + " holds the finished part of an earlier run of this sweep: "
-                "--resume continues it; remove it to start afresh");
+    print_error("-o", partial +
+                          " holds the finished part of an earlier run of this sweep: "
+                          "--resume continues it; remove it to start afresh");
     return std::nullopt;
   }
   return job;
@@ -142,7 +122,7 @@ int write_result(const SweepJob& job, const SweepResult& result) {
     const RenderResult drawn = render_figure(figure, job.scene.model, RunResult{}, *job.image,
                                              {nullptr, &*job.scene.sweep, &result});
     if (!drawn.ok()) {
-      usage_error(drawn.error->field, drawn.error->message);
+      print_error(drawn.error->field, drawn.error->message);
       return 1;
     }
     text.assign(drawn.bytes.begin(), drawn.bytes.end());
@@ -157,16 +137,16 @@ int write_result(const SweepJob& job, const SweepResult& result) {
   std::ofstream file(job.out, std::ios::binary);
   file << text;
   if (!file) {
-    usage_error(job.out, "cannot write the file");
+    print_error(job.out, "cannot write the file");
     return 1;
   }
   return 0;
 }
 
 // The sweep on this process's threads, or on every rank's under MPI; rank 0 writes the result.
-int run_job(const Args& args, bool mpi, int rank) {
+int run_job(const SweepOptions& o, bool mpi, int rank) {
   int code = 0;
-  const std::optional<SweepJob> job = prepare(args, rank == 0, code);
+  const std::optional<SweepJob> job = prepare(o, rank == 0, code);
 #ifdef VIBRO_HAVE_MPI
   if (mpi && !mpi_all_agree(job.has_value())) return job ? 1 : code;
 #endif
@@ -178,13 +158,14 @@ int run_job(const Args& args, bool mpi, int rank) {
     checkpoint.emplace(checkpoint_path(job->out), scene_fingerprint(job->scene),
                        job->resumed ? &*job->resumed : nullptr);
     if (!checkpoint->ok()) {
-      usage_error("-o", "cannot write " + checkpoint_path(job->out));
+      print_error("-o", "cannot write " + checkpoint_path(job->out));
       return 1;
     }
     done_before.assign(sweep_chain_count(spec), 0);
     if (job->resumed)
       for (const ChainRuns& c : job->resumed->chains)
-        if (c.chain >= 0 && c.chain < static_cast<int>(done_before.size())) done_before[c.chain] = 1;
+        if (c.chain >= 0 && c.chain < static_cast<int>(done_before.size()))
+          done_before[c.chain] = 1;
   }
   ProgressBar bar;
   SweepControl control;
@@ -216,22 +197,54 @@ int run_job(const Args& args, bool mpi, int rank) {
   return written;
 }
 
-}  // namespace
-
-int sweep_command(const Args& args) {
-  if (!launched_by_mpi()) return run_job(args, false, 0);
+int sweep(const SweepOptions& o) {
+  if (!launched_by_mpi()) return run_job(o, false, 0);
 #ifdef VIBRO_HAVE_MPI
   int rank = 0;
   if (!mpi_start(rank)) return 1;
-  const int code = run_job(args, true, rank);
+  const int code = run_job(o, true, rank);
   mpi_finish();
   return code;
 #else
-  usage_error("mpirun", "this vibro was built without MPI, so under mpirun every process would run "
+  print_error("mpirun",
+              "this vibro was built without MPI, so under mpirun every process would run "
               "the whole sweep: install Open MPI (apt-get install openmpi-bin libopenmpi-dev, or "
               "scripts/setup.sh) and build again");
   return 2;
 #endif
+}
+
+}  // namespace
+
+Command add_sweep_command(CLI::App& vibro) {
+  auto o = std::make_shared<SweepOptions>();
+  CLI::App* command = add_scene_command(
+      vibro, "sweep",
+      "Run the scene's sweep (a bifurcation diagram, regime map, ...) on every core, or over an "
+      "MPI job under mpirun or srun",
+      "write OUT.json or OUT.csv instead of JSON on stdout, or draw OUT.png, OUT.svg or OUT.pdf; "
+      "finished chains are kept in OUT.partial until it is written",
+      o->job);
+  command->add_option("--threads", o->threads, "worker threads (default: one per core)")
+      ->transform(integer_in(1, 1024))
+      ->type_name("N");
+  command->add_option("--plot", o->plot, std::string("what to draw: ") + kSweepPlotNames)
+      ->type_name("KIND");
+  command->add_option("--pellet", o->pellet, "the pellet drawn, an index from 0 (default 0)")
+      ->type_name("I");
+  command
+      ->add_option_function<std::string>(
+          "--coordinate",
+          [o](const std::string& v) {
+            o->coordinate = v == "phi" ? SectionCoordinate::phi : SectionCoordinate::dphi;
+          },
+          "the coordinate drawn at each section: dphi (the default) or phi")
+      ->check(accepted_if([](const std::string& v) { return v == "dphi" || v == "phi"; },
+                          "must be \"dphi\" or \"phi\""))
+      ->type_name("C");
+  command->add_flag("--resume", o->resume,
+                    "continue the sweep of -o OUT from OUT.partial, left by a run that stopped");
+  return {command, [o] { return sweep(*o); }};
 }
 
 }  // namespace vibro

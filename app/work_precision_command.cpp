@@ -1,11 +1,13 @@
-// `vibro work-precision SCENE [-o wp.png|wp.svg] [--repeats N]`: for each method and tolerance
-// from 1e-3 to 1e-12, the median run time and the true error; prints the table as JSON and
-// draws the diagram.
+// `vibro work-precision SCENE [-o wp.png|wp.svg|wp.pdf] [--repeats N]`: for each method and
+// tolerance from 1e-3 to 1e-12, the median run time and the true error; prints the table as JSON
+// and draws the diagram.
 #include <fstream>
 #include <iostream>
-#include <nlohmann/json.hpp>
+#include <memory>
 
 #include "app/commands.h"
+#include "app/scene_options.h"
+#include "app/usage.h"
 #include "core/work_precision.h"
 #include "io/work_precision_json.h"
 #include "render/figure.h"
@@ -13,42 +15,20 @@
 namespace vibro {
 namespace {
 
-void usage_error(const std::string& field, const std::string& message) {
-  std::cerr << nlohmann::json{{"error", message}, {"field", field}}.dump() << "\n";
-}
+struct WorkPrecisionCommandOptions {
+  SceneOutput job;
+  WorkPrecisionOptions run;
+};
 
-}  // namespace
-
-int work_precision_command(const Args& args) {
-  std::size_t next = 0;
-  auto scene = load_scene(args, next);
+int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
+  const auto scene = load_scene(o.job.scene);
   if (!scene) return 2;
-  std::string out;
-  WorkPrecisionOptions options;
-  for (; next < args.size(); ++next) {
-    const std::string& a = args[next];
-    if ((a == "-o" || a == "--output") && next + 1 < args.size()) {
-      out = args[++next];
-    } else if (a == "--repeats" && next + 1 < args.size()) {
-      try {
-        options.repeats = std::stoi(args[++next]);
-      } catch (const std::exception&) {
-        options.repeats = 0;
-      }
-      if (options.repeats < 1 || options.repeats > 50) {
-        usage_error("--repeats", "must be an integer in [1, 50]");
-        return 2;
-      }
-    } else {
-      usage_error(a, "is not an option of `vibro work-precision`");
-      return 2;
-    }
-  }
+  const std::string& out = o.job.out;
   if (!out.empty() && !image_format_of_file(out)) {
-    usage_error("-o", "name the image OUT.png, OUT.svg or OUT.pdf");
+    print_error("-o", "name the image OUT.png, OUT.svg or OUT.pdf");
     return 2;
   }
-  const WorkPrecisionReport report = work_precision(scene->model, scene->sim, options);
+  const WorkPrecisionReport report = work_precision(scene->model, scene->sim, o.run);
   if (!out.empty()) {
     FigureSpec figure;
     figure.width = scene->figure.width;
@@ -60,19 +40,35 @@ int work_precision_command(const Args& args) {
     const ImageFormat format = *image_format_of_file(out);
     const RenderResult image = render_figure(figure, scene->model, RunResult{}, format, {&report});
     if (!image.ok()) {
-      usage_error(image.error->field, image.error->message);
+      print_error(image.error->field, image.error->message);
       return 1;
     }
     std::ofstream file(out, std::ios::binary);
     file.write(reinterpret_cast<const char*>(image.bytes.data()),
                static_cast<std::streamsize>(image.bytes.size()));
     if (!file) {
-      usage_error(out, "cannot write the file");
+      print_error(out, "cannot write the file");
       return 1;
     }
   }
   std::cout << work_precision_to_json(report).dump(2) << "\n";
   return 0;
+}
+
+}  // namespace
+
+Command add_work_precision_command(CLI::App& vibro) {
+  auto o = std::make_shared<WorkPrecisionCommandOptions>();
+  CLI::App* command = add_scene_command(
+      vibro, "work-precision",
+      "Error against run time per method, tolerances 1e-3 to 1e-12: the table as JSON, the diagram",
+      "also draw the diagram: OUT.png, OUT.svg or OUT.pdf", o->job);
+  command
+      ->add_option("--repeats", o->run.repeats,
+                   "timed runs per point, their median kept (default 3)")
+      ->transform(integer_in(1, 50))
+      ->type_name("N");
+  return {command, [o] { return work_precision_diagram(*o); }};
 }
 
 }  // namespace vibro

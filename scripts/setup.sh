@@ -6,7 +6,7 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libeigen3-dev libosmesa6-dev libcairo2-dev libpng-dev
           nlohmann-json3-dev libcpp-httplib-dev libgtest-dev librapidcheck-dev fonts-dejavu-core
-          openmpi-bin libopenmpi-dev)
+          openmpi-bin libopenmpi-dev libcli11-dev)
 if [[ "${1:-}" == "--test" ]]; then
   packages+=(libbenchmark-dev python3-scipy chromium curl jq nginx)
   # The base image ships Node.js (with npm) from its own packages; Debian's would conflict.

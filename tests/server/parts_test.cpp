@@ -1,4 +1,4 @@
-// The server's parts alone: the cache's bound, tags, the worker queue's bound, flags, signals.
+// The server's parts alone: the cache's bound, tags, the worker queue's bound, signals.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -8,7 +8,6 @@
 #include <thread>
 
 #include "server/etag.h"
-#include "server/flags.h"
 #include "server/response_cache.h"
 #include "server/stop_signals.h"
 #include "server/worker_pool.h"
@@ -76,29 +75,6 @@ TEST(WorkerPool, RefusesWorkBeyondItsQueue) {
     release.set_value();
   }  // the destructor runs what was queued
   EXPECT_EQ(ran, 3);
-}
-
-TEST(Flags, SetTheConfigAndNameBadOnes) {
-  auto parsed = config_from_flags({"--port", "9000", "--max-t-end", "50", "--threads", "3",
-                                   "--quiet", "--cache-mib", "8", "--deadline-ms", "250"});
-  ASSERT_TRUE(std::holds_alternative<ServerConfig>(parsed));
-  const ServerConfig& c = std::get<ServerConfig>(parsed);
-  EXPECT_EQ(c.port, 9000);
-  EXPECT_EQ(c.limits.t_end, 50.0);
-  EXPECT_EQ(c.workers, 3);
-  EXPECT_FALSE(c.access_log);
-  EXPECT_EQ(c.cache_bytes, 8u << 20);
-  EXPECT_EQ(c.limits.deadline_ms, 250.0);
-  EXPECT_EQ(c.host, "127.0.0.1");
-
-  auto field = [](std::vector<std::string> args) {
-    auto r = config_from_flags(args);
-    return std::holds_alternative<FieldError>(r) ? std::get<FieldError>(r).field : "";
-  };
-  EXPECT_EQ(field({"--port", "http"}), "--port");
-  EXPECT_EQ(field({"--port", "70000"}), "--port");
-  EXPECT_EQ(field({"--max-width"}), "--max-width");
-  EXPECT_EQ(field({"--colour", "red"}), "--colour");
 }
 
 TEST(StopOnSignals, SigtermCallsStopOutsideTheHandler) {

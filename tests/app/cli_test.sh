@@ -1,0 +1,144 @@
+#!/usr/bin/env bash
+# The `vibro` command line (app/main.cpp, CLI11): --help on the program and on every subcommand
+# names each option; bad usage is {"error", "field"} JSON on stderr naming the option, exit 2;
+# the serve flags reach the server's config. Usage: cli_test.sh path/to/vibro
+set -uo pipefail
+vibro="$1"
+work="$(mktemp -d)"
+server=""
+cleanup() {
+  [[ -n "$server" ]] && kill "$server" 2> /dev/null && wait "$server" 2> /dev/null
+  rm -rf "$work"
+}
+trap cleanup EXIT
+cd "$work" || exit 1
+
+failures=0
+pass() { echo "PASS $1"; }
+fail() { echo "FAIL $1"; failures=$((failures + 1)); }
+
+# help NAME ARGS... -- OPTION...: `vibro ARGS` exits 0 and its stdout names every OPTION.
+help() {
+  local name="$1" args=() missing=()
+  shift
+  while [[ "$1" != "--" ]]; do args+=("$1"); shift; done
+  shift
+  local out status=0
+  out="$("$vibro" "${args[@]}" 2>&1)" || status=$?
+  for option in "$@"; do grep -qF -- "$option" <<< "$out" || missing+=("$option"); done
+  if ((status == 0 && ${#missing[@]} == 0)); then pass "$name"; else
+    fail "$name (exit $status, missing: ${missing[*]})"; echo "$out"; fi
+}
+
+# usage NAME FIELD [MESSAGE] -- ARGS...: `vibro ARGS` exits 2 with one line of JSON on stderr
+# whose field is FIELD (and whose error is MESSAGE, when given).
+usage() {
+  local name="$1" field="$2" message="" status=0
+  shift 2
+  [[ "$1" != "--" ]] && { message="$1"; shift; }
+  shift
+  "$vibro" "$@" > out.txt 2> err.txt < /dev/null || status=$?
+  if ((status == 2)) && python3 - "$field" "$message" << 'PY'; then pass "$name"; else
+import json, sys
+error = json.loads(open("err.txt").read())
+assert set(error) == {"error", "field"}, error
+assert error["field"] == sys.argv[1], error
+assert not sys.argv[2] or error["error"] == sys.argv[2], error
+PY
+    fail "$name (exit $status)"; cat err.txt; fi
+}
+
+scene=(SCENE --preset --t-end --method --rtol --atol --deadline-ms --no-check --trajectories)
+help "vibro --help lists the commands" --help -- simulate render work-precision sweep orbit \
+  serve presets preset help
+help "vibro help lists the commands" help -- simulate render work-precision sweep orbit serve
+help "simulate --help" simulate --help -- "${scene[@]}" -o --output --what
+help "render --help" render --help -- "${scene[@]}" -o --output
+help "work-precision --help" work-precision --help -- "${scene[@]}" -o --output --repeats
+help "sweep --help" sweep --help -- "${scene[@]}" -o --output --threads --plot --pellet \
+  --coordinate --resume
+help "vibro help sweep" help sweep -- "${scene[@]}" --threads --resume
+help "orbit --help" orbit --help -- "${scene[@]}" -o --output
+help "serve --help" serve --help -- --host --port --web --threads --queue --connections \
+  --read-timeout --write-timeout --keep-alive --cache-mib --quiet --max-body --max-t-end \
+  --max-events --max-steps --max-samples --deadline-ms --max-width --max-height --max-pixels \
+  --max-pellets --max-limiters --max-plots --sweep-jobs --sweep-threads --sweep-queue --replica
+help "serve -h" serve -h -- --port --replica
+help "presets --help" presets --help -- presets
+help "preset --help" preset --help -- NAME
+
+status=0
+"$vibro" > out.txt 2>&1 || status=$?
+if ((status == 2)) && grep -q "simulate" out.txt; then pass "no command: the list, exit 2"; else
+  fail "no command: the list, exit 2 (exit $status)"; fi
+
+usage "an unknown option" --colour "is not an option of \`vibro sweep\` (see \`vibro sweep --help\`)" \
+  -- sweep --preset impact-oscillator --colour red
+usage "an unknown serve flag" --colour -- serve --colour red
+usage "an unknown command" frobnicate -- frobnicate
+usage "an extra positional argument" b.json -- simulate a.json b.json
+usage "presets takes no arguments" extra -- presets extra
+usage "--threads 0" --threads "must be an integer in [1, 1024]" \
+  -- sweep --preset impact-oscillator --threads 0
+usage "--threads not a number" --threads "must be an integer in [1, 1024]" \
+  -- sweep --preset impact-oscillator --threads four
+usage "--repeats 51" --repeats "must be an integer in [1, 50]" \
+  -- work-precision --preset paper --repeats 51
+usage "--coordinate" --coordinate "must be \"dphi\" or \"phi\"" \
+  -- sweep --preset impact-oscillator --coordinate psi
+usage "--pellet out of range" --pellet "must be a pellet index in 0..0" \
+  -- sweep --preset impact-oscillator --pellet 3
+usage "--plot unknown" --plot -- sweep --preset impact-oscillator --plot pie
+usage "--resume without -o" --resume -- sweep --preset impact-oscillator --resume
+usage "--t-end not a number" --t-end "must be a number" -- simulate --preset paper --t-end soon
+usage "--t-end out of range: the scene's field" t_end -- simulate --preset paper --t-end -1
+usage "--method unknown: the scene's field" solver.method -- simulate --preset paper --method rk4
+usage "--deadline-ms 0" --deadline-ms "must be a positive number of milliseconds" \
+  -- simulate --preset paper --deadline-ms 0
+usage "--what" --what "must be \"events\" or \"trajectory\"" \
+  -- simulate --preset paper --what everything -o run.csv
+usage "--what with JSON" --what -- simulate --preset paper --what events
+usage "a missing value" --max-width "needs a value" -- serve --max-width
+usage "a missing value of -o" --output "needs a value" -- simulate --preset paper -o
+usage "--port not a number" --port "must be an integer in [0, 65535]" -- serve --port http
+usage "--port out of range" --port "must be an integer in [0, 65535]" -- serve --port 70000
+usage "--max-t-end" --max-t-end "must be a number in [1, 1000000]" -- serve --max-t-end 0.5
+usage "a flag given a value" --quiet "cannot take the value \"maybe\"" -- serve --quiet=maybe
+usage "an unknown preset" preset -- simulate --preset nope
+usage "no scene" scene -- simulate
+usage "two scenes" scene -- simulate --preset paper a.json
+usage "an unreadable scene" scene -- simulate missing.json
+usage "render without -o" -o -- render --preset paper
+usage "render to .gif" -o -- render --preset paper -o paper.gif
+usage "preset without a name" preset -- preset
+echo '{"model":{"R":0.5,"alpah0":0.1,"pellets":[{"m":1,"phi0":0}]},"t_end":1}' > typo.json
+usage "a scene's unknown key" model.alpah0 -- simulate typo.json
+
+# Runs: a scene on stdin with overrides, the last of a repeated option counting.
+if "$vibro" preset paper | "$vibro" simulate - --t-end 0.5 --t-end 0.2 --method dopri5 \
+    --rtol 1e-6 --no-check -o run.json && python3 -c '
+import json; r = json.load(open("run.json")); assert r["stats"]["t_reached"] <= 0.2 + 1e-12, r["stats"]'
+then pass "simulate - with overrides"; else fail "simulate - with overrides"; fi
+
+# The serve flags reach the config: the limits and workers the server reports.
+"$vibro" serve --port 0 --quiet --threads 3 --max-t-end 50 --deadline-ms 250 --max-pixels 1e6 \
+  --cache-mib 8 > serve.out 2> serve.err &
+server=$!
+if python3 - << 'PY'; then pass "serve flags set the config"; else
+import json, re, time, urllib.request
+for _ in range(300):
+    m = re.search(r"http://127\.0\.0\.1:(\d+)/", open("serve.out").read())
+    if m:
+        break
+    time.sleep(0.1)
+base = "http://127.0.0.1:%s" % m.group(1)
+limits = json.load(urllib.request.urlopen(base + "/api/limits"))
+health = json.load(urllib.request.urlopen(base + "/api/health"))
+assert limits["t_end"] == 50 and limits["deadline_ms"] == 250, limits
+assert limits["pixels"] == 1000000, limits
+assert health["workers"] == 3, health
+PY
+  fail "serve flags set the config"; cat serve.out serve.err; fi
+
+echo "$failures failed"
+((failures == 0))
