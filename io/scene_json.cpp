@@ -115,15 +115,25 @@ std::optional<AxisLimits> axis_limits(Fields& f, const char* name) {
 }
 
 
-PlotSpec read_plot(const json& j, const std::string& path, int pellets) {
+// The instant a mechanism panel shows, in [0, t_end] s.
+double read_instant(Fields& f, double t_end) {
+  const double t = f.number("t", 0.0);
+  if (!(t >= 0.0 && t <= t_end))
+    throw FieldException(f.path("t"),
+                         "must be a time in [0, t_end] = [0, " + json(t_end).dump() + "] s");
+  return t;
+}
+
+PlotSpec read_plot(const json& j, const std::string& path, int pellets, double t_end) {
   Fields f(j, path);
   PlotSpec p;
   const auto kind = f.string("kind", 32);
-  const char* kinds = "\"phase\", \"time\", \"cylinder\" or \"work_precision\"";
+  const char* kinds = "\"phase\", \"time\", \"cylinder\", \"mechanism\" or \"work_precision\"";
   if (!kind) throw FieldException(f.path("kind"), std::string("is required: ") + kinds);
   if (*kind == "phase") p.kind = PlotKind::phase;
   else if (*kind == "time") p.kind = PlotKind::time;
   else if (*kind == "cylinder") p.kind = PlotKind::cylinder;
+  else if (*kind == "mechanism") p.kind = PlotKind::mechanism;
   else if (*kind == "work_precision") p.kind = PlotKind::work_precision;
   else throw FieldException(f.path("kind"), std::string("must be ") + kinds + ", got \"" + *kind + "\"");
 
@@ -136,13 +146,18 @@ PlotSpec read_plot(const json& j, const std::string& path, int pellets) {
       for (int i = 0; i < pellets; ++i) p.pellets.push_back(i);
     }
     p.show_dphi = f.boolean("dphi", false);
+  } else if (p.kind == PlotKind::mechanism) {
+    // Every pellet, at one instant: no pellet to pick and no window.
+    p.t = read_instant(f, t_end);
   } else if (p.kind != PlotKind::work_precision) {
     if (const json* v = f.value("pellet")) p.pellet = index_in(*v, f.path("pellet"), pellets, "pellet");
   }
-  p.t_from = f.number("t_from", 0.0);
-  if (auto to = f.number("t_to")) p.t_to = *to;
-  if (p.t_from < 0.0) throw FieldException(f.path("t_from"), "must be ≥ 0");
-  if (!(p.t_to > p.t_from)) throw FieldException(f.path("t_to"), "must be greater than t_from");
+  if (p.kind != PlotKind::mechanism) {
+    p.t_from = f.number("t_from", 0.0);
+    if (auto to = f.number("t_to")) p.t_to = *to;
+    if (p.t_from < 0.0) throw FieldException(f.path("t_from"), "must be ≥ 0");
+    if (!(p.t_to > p.t_from)) throw FieldException(f.path("t_to"), "must be greater than t_from");
+  }
   if (p.kind == PlotKind::phase) {
     if (const json* list = f.array("branches", 10000)) {
       for (std::size_t i = 0; i < list->size(); ++i) {
@@ -229,7 +244,8 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
     s.sim.lyapunov = f.boolean("lyapunov", false);
     if (const json* plots = f.array("plots", limits.max_plots)) {
       for (std::size_t i = 0; i < plots->size(); ++i)
-        s.figure.plots.push_back(read_plot((*plots)[i], item("plots", i), s.model.size()));
+        s.figure.plots.push_back(
+            read_plot((*plots)[i], item("plots", i), s.model.size(), s.sim.t_end));
     }
     if (auto w = f.integer("width")) s.figure.width = static_cast<int>(*w);
     if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
@@ -387,10 +403,13 @@ json scene_to_json(const Scene& s) {
       case PlotKind::lyapunov: pj["kind"] = "lyapunov"; break;
       case PlotKind::lyapunov_map: pj["kind"] = "lyapunov_map"; break;
       case PlotKind::branch: pj["kind"] = "branch"; break;
+      case PlotKind::mechanism: pj["kind"] = "mechanism"; break;
     }
     if (p.kind == PlotKind::time) {
       pj["pellets"] = p.pellets;
       if (p.show_dphi) pj["dphi"] = true;
+    } else if (p.kind == PlotKind::mechanism) {
+      pj["t"] = p.t;
     } else if (p.kind != PlotKind::work_precision) {
       pj["pellet"] = p.pellet;
     }

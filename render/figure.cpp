@@ -4,6 +4,7 @@
 #include <cairo-svg.h>
 #include <cairo.h>
 
+#include <cstdio>
 #include <exception>
 #include <utility>
 
@@ -11,6 +12,7 @@
 #include "render/cairo_ptr.h"
 #include "render/cylinder_panel.h"
 #include "render/layout.h"
+#include "render/mechanism_panel.h"
 #include "render/panel.h"
 #include "render/png.h"
 #include "render/svg_text.h"
@@ -23,17 +25,31 @@ namespace {
 using render::CairoPtr;
 using render::SurfacePtr;
 
-// The run must hold the track of every pellet a panel draws.
+// The field that names the pellets a panel draws.
+const char* pellets_field(PlotKind kind) {
+  if (kind == PlotKind::time) return "pellets";
+  return kind == PlotKind::mechanism ? "kind" : "pellet";  // a mechanism draws every pellet
+}
+
+// The run must hold the track of every pellet a panel draws, and reach the instant a mechanism
+// panel shows (the scene reader holds it to t_end; a run may end earlier).
 std::optional<FieldError> check_tracks(const FigureSpec& figure, const Model& model,
                                        const RunResult& run) {
   for (std::size_t i = 0; i < figure.plots.size(); ++i) {
     const PlotSpec& plot = figure.plots[i];
+    const std::string field = "plots[" + std::to_string(i) + "].";
     for (int pellet : render::panel_pellets(plot, model.size())) {
       if (render::find_track(run, pellet)) continue;
-      return FieldError{"plots[" + std::to_string(i) + "]." +
-                            (plot.kind == PlotKind::time ? "pellets" : "pellet"),
+      return FieldError{field + pellets_field(plot.kind),
                         "the run recorded no trajectory for pellet " + std::to_string(pellet + 1) +
                             "; ask for its branches"};
+    }
+    const double end = run.stats.t_reached;
+    if (plot.kind == PlotKind::mechanism && plot.t > end + 1e-12 * (1.0 + end)) {
+      char text[96];
+      std::snprintf(text, sizeof text,
+                    "is after the end of the run at t = %g s: must be within [0, t_end]", end);
+      return FieldError{field + "t", text};
     }
   }
   return std::nullopt;
@@ -83,6 +99,9 @@ std::optional<FieldError> draw_panel(cairo_t* cr, const FigureSpec& figure, std:
     case PlotKind::branch:
       if (!data.branch || !data.continuation) return FieldError{kind_field, "needs a continued periodic motion"};
       render::draw_branch_panel(cr, in);
+      break;
+    case PlotKind::mechanism:
+      render::draw_mechanism_panel(cr, in);
       break;
   }
   return std::nullopt;

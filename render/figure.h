@@ -3,7 +3,8 @@
 //
 // What the caller must provide:
 //  - a RunResult whose `tracks` hold every pellet a panel draws (phase and cylinder panels:
-//    `pellet`; time panels: `pellets`, or all of the model's pellets when that list is empty);
+//    `pellet`; time panels: `pellets`, or all of the model's pellets when that list is empty;
+//    mechanism panels: all of them, the run reaching their `t`);
 //  - events in time order (impacts are marked from them).
 // Each panel draws the part of the run inside its [t_from, t_to] (s). Errors are values: nothing
 // throws out of these functions.
@@ -60,7 +61,8 @@ struct RenderResult {
 };
 
 // Checks a figure against the model before any simulation: sizes, panel count, pellet indices,
-// time windows, overlay points, and 3-D panels (PNG only, and only in builds with 3-D).
+// time windows and instants (≥ 0; the scene reader holds them to t_end), overlay points, and 3-D
+// panels (PNG only, and only in builds with 3-D).
 std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model& model,
                                           ImageFormat format);
 

@@ -27,8 +27,8 @@ std::optional<FieldError> check_plot(std::size_t i, const PlotSpec& plot, const 
       const std::string field = plot_field(i, "pellets") + "[" + std::to_string(j) + "]";
       if (auto e = check_pellet(field, plot.pellets[j], model.size())) return e;
     }
-  } else if (plot.kind == PlotKind::work_precision) {
-    // Draws the work-precision sweep, not the run: no pellet to check.
+  } else if (plot.kind == PlotKind::work_precision || plot.kind == PlotKind::mechanism) {
+    // Draws the work-precision sweep, or every pellet: no pellet to check.
   } else if (auto e = check_pellet(plot_field(i, "pellet"), plot.pellet, model.size())) {
     return e;
   }
@@ -40,6 +40,9 @@ std::optional<FieldError> check_plot(std::size_t i, const PlotSpec& plot, const 
     return FieldError{plot_field(i, "t_from"), "must be a finite time ≥ 0 s"};
   if (std::isnan(plot.t_to) || plot.t_to <= plot.t_from)
     return FieldError{plot_field(i, "t_to"), "must be later than t_from"};
+  // Whether t is within the run is checked against the run (render_figure).
+  if (plot.kind == PlotKind::mechanism && !(std::isfinite(plot.t) && plot.t >= 0.0))
+    return FieldError{plot_field(i, "t"), "must be a finite time ≥ 0 s, within [0, t_end]"};
   if (plot.first_integral_through && (!std::isfinite(plot.first_integral_through->phi) ||
                                       !std::isfinite(plot.first_integral_through->dphi)))
     return FieldError{plot_field(i, "first_integral_through"), "must be a finite (phi, dphi)"};

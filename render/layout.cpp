@@ -67,7 +67,7 @@ std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
   std::vector<PanelLayout> layouts;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const PlotSpec& plot = figure.plots[i];
-    if (plot.kind == PlotKind::cylinder) {
+    if (plot.kind == PlotKind::cylinder || plot.kind == PlotKind::mechanism) {
       const Rect& c = cells[i];
       const double top = style.px(kTop);
       layouts.push_back({c,

@@ -23,6 +23,7 @@ enum class PlotKind {
   lyapunov,        // a 1-D sweep's largest Lyapunov exponents against the swept parameter
   lyapunov_map,    // a 2-D sweep's cells coloured by the largest Lyapunov exponent
   branch,          // a continued periodic motion against its parameter, stability and bifurcations
+  mechanism,       // the circle, limiters, pellets and forces at one instant, to scale (paper Fig. 1)
 };
 // The plot kinds that draw a sweep rather than a run.
 inline bool draws_sweep(PlotKind kind) {
@@ -33,7 +34,8 @@ inline bool draws_sweep(PlotKind kind) {
 
 // The plot kinds that draw the scene's own run (the others draw a report, a sweep or a branch).
 inline bool draws_run(PlotKind kind) {
-  return kind == PlotKind::phase || kind == PlotKind::time || kind == PlotKind::cylinder;
+  return kind == PlotKind::phase || kind == PlotKind::time || kind == PlotKind::cylinder ||
+         kind == PlotKind::mechanism;
 }
 
 // The section coordinate a bifurcation diagram draws against the parameter.
@@ -58,6 +60,7 @@ struct PlotSpec {
   bool show_dphi = false;         // time: also draw φ̇(t) on a second axis
   double t_from = 0.0;            // window drawn, s
   double t_to = std::numeric_limits<double>::infinity();  // clipped to t_end
+  double t = 0.0;                 // mechanism: the instant drawn, s, in [0, t_end]
   std::vector<int> branches;      // phase: only these motion intervals (numbered from 1); empty: all
   std::optional<PhasePoint> first_integral_through;  // phase: exact unforced curve through it
   bool friction_zone = false;     // phase: shade |φ| ≤ α0 (mod 2π) where a pellet can rest

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 
+#include "render/track_window.h"
+
 namespace vibro {
 
 RunPlan plan_run(const FigureSpec& figure, const SimOptions& base, int pellets) {
@@ -13,19 +15,13 @@ RunPlan plan_run(const FigureSpec& figure, const SimOptions& base, int pellets) 
   plan.options.lyapunov = false;
   double until = 0.0;
   for (const PlotSpec& p : figure.plots) {
-    if (p.kind == PlotKind::work_precision) {
-      plan.needs_work_precision = true;
-    } else if (!draws_run(p.kind)) {
-      // Draws a sweep or a branch: nothing from the run.
-    } else if (p.kind == PlotKind::time) {
-      if (p.pellets.empty()) plan.options.record.assign(pellets, true);
-      for (int i : p.pellets)
-        if (i >= 0 && i < pellets) plan.options.record[i] = true;
-    } else if (p.pellet >= 0 && p.pellet < pellets) {
-      plan.options.record[p.pellet] = true;
-    }
+    plan.needs_work_precision = plan.needs_work_precision || p.kind == PlotKind::work_precision;
+    // Only the pellets drawn; a sweep, a report or a branch draws none of the run.
+    for (int i : render::panel_pellets(p, pellets))
+      if (i >= 0 && i < pellets) plan.options.record[i] = true;
     plan.needs_3d = plan.needs_3d || p.kind == PlotKind::cylinder;
-    until = std::max(until, p.t_to);
+    // A mechanism shows one instant: the run need go no further.
+    until = std::max(until, p.kind == PlotKind::mechanism ? p.t : p.t_to);
   }
   if (!figure.plots.empty()) {
     plan.options.t_end = std::min(base.t_end, until);

@@ -40,6 +40,23 @@ const PelletTrack* find_track(const RunResult& run, int pellet) {
   return nullptr;
 }
 
+std::optional<Sample> state_at(const PelletTrack& track, double t) {
+  const Sample* held = nullptr;
+  for (const Branch& b : track.branches) {
+    if (b.samples.empty()) continue;
+    const auto after = std::upper_bound(b.samples.begin(), b.samples.end(), t,
+                                        [](double v, const Sample& s) { return v < s.t; });
+    if (after == b.samples.begin()) {  // this branch, and every later one, starts after t
+      if (!held) held = &b.samples.front();
+      break;
+    }
+    if (after != b.samples.end()) return interpolate(*(after - 1), *after, t);
+    held = &b.samples.back();
+  }
+  if (!held) return std::nullopt;
+  return Sample{t, held->phi, held->dphi};
+}
+
 bool branch_selected(const PlotSpec& spec, int index) {
   return spec.branches.empty() ||
          std::find(spec.branches.begin(), spec.branches.end(), index) != spec.branches.end();
@@ -73,8 +90,8 @@ std::string window_suffix(const PlotSpec& spec, double t_end) {
 
 std::vector<int> panel_pellets(const PlotSpec& spec, int pellet_count) {
   if (!draws_run(spec.kind)) return {};
-  if (spec.kind != PlotKind::time) return {spec.pellet};
-  if (!spec.pellets.empty()) return spec.pellets;
+  if (spec.kind != PlotKind::time && spec.kind != PlotKind::mechanism) return {spec.pellet};
+  if (spec.kind == PlotKind::time && !spec.pellets.empty()) return spec.pellets;
   std::vector<int> all;
   for (int i = 0; i < pellet_count; ++i) all.push_back(i);
   return all;

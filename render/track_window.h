@@ -1,6 +1,7 @@
-// What of a run falls inside a panel's time window [t_from, t_to].
+// What of a run falls inside a panel's time window [t_from, t_to], or at one instant.
 #pragma once
 
+#include <optional>
 #include <span>
 #include <string>
 #include <vector>
@@ -17,8 +18,14 @@ std::vector<Sample> clip_to_window(std::span<const Sample> samples, double t_fro
 // The recorded track of `pellet`, or null when the run did not record it.
 const PelletTrack* find_track(const RunResult& run, int pellet);
 
+// The pellet's state at time t, interpolated linearly between the samples around it. Where no
+// branch spans t (a pellet at rest that the run stopped sampling, or t past the record) it holds
+// the last sample before t; before the first sample, the first. Nothing for a track without
+// samples.
+std::optional<Sample> state_at(const PelletTrack& track, double t);
+
 // The pellets a panel draws: `pellet` for phase and cylinder panels; `pellets` for time panels,
-// or every pellet of the model when that list is empty.
+// or every pellet of the model when that list is empty; every pellet for mechanism panels.
 std::vector<int> panel_pellets(const PlotSpec& spec, int pellet_count);
 
 // The marked event (limiter impact, collision, chatter) touching `pellet` at time t (within

@@ -5,6 +5,7 @@ cd "$(dirname "$0")/.."
 mkdir -p docs/images
 vibro=${VIBRO:-./build/vibro}
 $vibro render --preset paper -o docs/images/paper.png > /dev/null
+$vibro render --preset paper-fig1 -o docs/images/paper-fig1.png > /dev/null
 $vibro render --preset paper-fig5 -o docs/images/paper-fig5.svg > /dev/null
 $vibro render --preset paper-fig6 -o docs/images/paper-fig6.png > /dev/null
 echo '{"plots":[{"kind":"cylinder","pellet":0}],"width":900,"height":700}' > /tmp/vibro_cyl_patch.json

@@ -182,6 +182,29 @@ TEST(SceneJson, APlotsAxesWrapAndLabelsAreKept) {
   EXPECT_EQ(canonical["plots"][1]["dphi_range"], json({-3.0, 3.0}));
 }
 
+// A mechanism panel shows one instant of the run, every pellet: a time in [0, t_end], no pellet
+// and no window.
+TEST(SceneJson, AMechanismPanelReadsItsTimeWithinTheRun) {
+  json scene = base_scene();
+  scene["plots"][1] = {{"kind", "mechanism"}, {"t", 1.5}};
+  const SceneOrError read = scene_from_json(scene);
+  ASSERT_TRUE(std::holds_alternative<Scene>(read)) << std::get<FieldError>(read).field;
+  const PlotSpec& plot = std::get<Scene>(read).figure.plots[1];
+  EXPECT_EQ(plot.kind, PlotKind::mechanism);
+  EXPECT_EQ(plot.t, 1.5);
+  EXPECT_EQ(scene_to_json(std::get<Scene>(read))["plots"][1], json({{"kind", "mechanism"}, {"t", 1.5}}));
+  scene["plots"][1].erase("t");
+  EXPECT_EQ(std::get<Scene>(scene_from_json(scene)).figure.plots[1].t, 0.0);
+  for (const json& bad : {json(-0.1), json(2.5), json("1")}) {
+    scene["plots"][1]["t"] = bad;
+    EXPECT_EQ(field_of(scene), "plots[1].t") << bad;
+  }
+  scene["plots"][1] = {{"kind", "mechanism"}, {"pellet", 0}};
+  EXPECT_EQ(field_of(scene), "plots[1].pellet");
+  scene["plots"][1] = {{"kind", "mechanism"}, {"t_to", 1.0}};
+  EXPECT_EQ(field_of(scene), "plots[1].t_to");
+}
+
 TEST(SceneJson, ThePaperPresetStatesItsAssumptionsAndComesFirst) {
   ASSERT_FALSE(presets().empty());
   EXPECT_EQ(presets().front().name, "paper");

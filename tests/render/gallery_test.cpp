@@ -35,6 +35,13 @@ PlotSpec time(std::vector<int> pellets, bool show_dphi) {
   return p;
 }
 
+PlotSpec mechanism(double t) {
+  PlotSpec p;
+  p.kind = PlotKind::mechanism;
+  p.t = t;
+  return p;
+}
+
 std::vector<GalleryFigure> gallery() {
   std::vector<GalleryFigure> figures;
   PlotSpec zone = phase(0);
@@ -54,6 +61,8 @@ std::vector<GalleryFigure> gallery() {
   overlay.first_integral_through = PhasePoint{0.2, 9.0};
   overlay.friction_zone = true;
   figures.push_back({"synthetic_overlay", {{overlay, time({0, 1}, true)}, 1200, 800}, true});
+  figures.push_back({"paper_mechanism", {{mechanism(0.0), mechanism(12.0)}, 1200, 640}});
+  figures.push_back({"synthetic_mechanism_thumb", {{mechanism(3.0)}, 480, 340}, true});
   return figures;
 }
 

@@ -26,6 +26,26 @@ TEST(ClipToWindow, WholeOrNothing) {
   EXPECT_DOUBLE_EQ(inside_one_step[1].phi, 1.8);
 }
 
+// Two branches with a gap between them (a pellet at rest that the run stopped sampling).
+const PelletTrack kTrack{0, {Branch{1, {{0.5, 0.0, 2.0}, {1.0, 1.0, 2.0}}},
+                             Branch{2, {{1.0, 1.0, -1.0}, {1.5, 0.5, -1.0}}},
+                             Branch{3, {{3.0, 0.5, 0.0}, {4.0, 0.5, 0.0}}}}};
+
+TEST(StateAt, InterpolatesInsideABranch) {
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 0.75)->phi, 0.5);
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 1.25)->phi, 0.75);
+  // At an event the state after it: where the next branch starts.
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 1.0)->dphi, -1.0);
+}
+
+TEST(StateAt, HoldsThePlaceWhereNoBranchSpansTheTime) {
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 2.0)->phi, 0.5);   // between branches
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 9.0)->phi, 0.5);   // after the record
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 0.0)->phi, 0.0);   // before it
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 9.0)->t, 9.0);
+  EXPECT_FALSE(state_at(PelletTrack{0, {Branch{1, {}}}}, 1.0));
+}
+
 Event event(double t, EventKind kind, std::vector<int> pellets) {
   Event e;
   e.t = t;
@@ -45,7 +65,7 @@ TEST(FindImpact, MatchesTimePelletAndMarkedKind) {
   EXPECT_EQ(find_impact(events, 0, 0.5), nullptr);
 }
 
-TEST(PanelPellets, TimePanelsDefaultToEveryPellet) {
+TEST(PanelPellets, TimeAndMechanismPanelsDefaultToEveryPellet) {
   PlotSpec time;
   time.kind = PlotKind::time;
   EXPECT_EQ(panel_pellets(time, 3), (std::vector<int>{0, 1, 2}));
@@ -54,6 +74,9 @@ TEST(PanelPellets, TimePanelsDefaultToEveryPellet) {
   PlotSpec phase;
   phase.pellet = 2;
   EXPECT_EQ(panel_pellets(phase, 3), (std::vector<int>{2}));
+  PlotSpec mechanism;
+  mechanism.kind = PlotKind::mechanism;
+  EXPECT_EQ(panel_pellets(mechanism, 2), (std::vector<int>{0, 1}));
 }
 
 TEST(WindowSuffix, NamesARestrictedWindowOnly) {

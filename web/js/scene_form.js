@@ -26,9 +26,10 @@ const PLOT_KINDS = [
   { value: "phase", label: "phase portrait", short: "Phase" },
   { value: "time", label: "time series", short: "Time" },
   { value: "cylinder", label: "cylinder (3-D)", short: "Cylinder" },
+  { value: "mechanism", label: "mechanism (to scale)", short: "Mechanism" },
   { value: "work_precision", label: "work–precision", short: "Work–precision" },
 ];
-const KIND_TITLES = { phase: "phase portrait", time: "time series", cylinder: "phase cylinder", work_precision: "work–precision" };
+const KIND_TITLES = { phase: "phase portrait", time: "time series", cylinder: "phase cylinder", mechanism: "mechanism", work_precision: "work–precision" };
 
 export class SceneForm {
   // root: an element to fill; onEdit: called after any change made by the user.
@@ -288,6 +289,12 @@ export class SceneForm {
         ),
         ...fiFields,
       ];
+    } else if (kind === "mechanism") {
+      // The circle, limiters, pellets and forces at one instant of the run: no pellet, no window.
+      fields = [
+        kindField, title, blank,
+        numberField({ path: `${path}.t`, label: "at t", unit: "s", value: p.t, placeholder: "0", hint: "0 … t_end" }),
+      ];
     } else if (kind === "work_precision") {
       // A sweep over methods and tolerances of the whole scene: no pellet, no window.
       fields = [
@@ -353,14 +360,17 @@ function removeButton(label, disabled, onClick) {
 
 function newPlot(kind, pelletCount) {
   if (kind === "work_precision") return { kind };
+  if (kind === "mechanism") return { kind, t: 0 };
   if (kind === "time") return { kind, pellets: Array.from({ length: pelletCount }, (_, i) => i) };
   return { kind, pellet: 0 };
 }
 
-// Keeps what two kinds share (window, title, pellet) when a panel changes kind.
+// Keeps what two kinds share (window, title, pellet) when a panel changes kind; a mechanism
+// shows the instant the window started at.
 function convertPlot(p, kind) {
   const q = { kind };
   if (p.title !== undefined) q.title = p.title;
+  if (kind === "mechanism") return { ...q, t: p.t ?? p.t_from ?? 0 };
   if (p.t_from !== undefined) q.t_from = p.t_from;
   if (p.t_to !== undefined) q.t_to = p.t_to;
   if (kind === "work_precision") return q;
