@@ -10,17 +10,12 @@
 #include "core/periodic_orbit.h"
 #include "core/simulate.h"
 #include "core/sweep.h"
+#include "tests/core/impact_oscillator.h"
 
 namespace vibro {
 namespace {
 
-Model impact_oscillator(double Omega) {
-  Model m;
-  m.R = 0.5;
-  m.pellets = {{0.1, 0.1, 0.0, {0.3, Omega, 0.0}}};
-  m.limiters = {{0.0, 0.8, false, -1, {}}};
-  return m;
-}
+using testing::impact_oscillator;
 
 SimOptions tight(double t_end) {
   SimOptions o;

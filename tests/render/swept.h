@@ -4,16 +4,9 @@
 
 #include "core/sweep.h"
 #include "render/figure.h"
+#include "tests/core/impact_oscillator.h"
 
 namespace vibro::testing {
-
-inline Model impact_oscillator() {
-  Model m;
-  m.R = 0.5;
-  m.pellets = {{0.1, 0.1, 0.0, {0.3, 5.0, 0.0}}};
-  m.limiters = {{0.0, 0.8, false, -1, {}}};
-  return m;
-}
 
 struct Swept {
   SweepSpec spec;
