@@ -19,17 +19,12 @@ LyapunovSpectrum lyapunov_spectrum(const Model& model, const std::vector<PathSeg
   Mat Q = Mat::Identity(n, n);
   std::vector<double> sums(n, 0.0);
   for (std::size_t k = first; k < path.size(); ++k) {
-    const PathJacobian S = instant_saltation(model, path[k], k == 0 ? std::vector<int>{} : path[k - 1].normal_sides);
-    if (!S.unsupported.empty()) {
-      out.unsupported = S.unsupported;
+    const PathJacobian step = segment_jacobian(model, path, k, rtol);
+    if (!step.unsupported.empty()) {
+      out.unsupported = step.unsupported;
       return out;
     }
-    const PathJacobian F = interval_transition(model, path[k], rtol);
-    if (!F.unsupported.empty()) {
-      out.unsupported = F.unsupported;
-      return out;
-    }
-    const Eigen::HouseholderQR<Mat> qr(F.matrix * S.matrix * Q);
+    const Eigen::HouseholderQR<Mat> qr(step.matrix * Q);
     const Mat R = qr.matrixQR().triangularView<Eigen::Upper>();
     Q = qr.householderQ();
     for (int i = 0; i < n; ++i) {

@@ -221,19 +221,24 @@ PathJacobian interval_transition(const Model& model, const PathSegment& segment,
   return out;
 }
 
+PathJacobian segment_jacobian(const Model& model, const std::vector<PathSegment>& path,
+                              std::size_t k, double rtol) {
+  PathJacobian S = instant_saltation(model, path[k], k == 0 ? std::vector<int>{} : path[k - 1].normal_sides);
+  if (!S.unsupported.empty()) return S;
+  PathJacobian F = interval_transition(model, path[k], rtol);
+  if (!F.unsupported.empty()) return F;
+  F.matrix = F.matrix * S.matrix;
+  return F;
+}
+
 PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol) {
   const int n = model.size();
   PathJacobian out;
   Mat M = Mat::Identity(2 * n, 2 * n);
-  const std::vector<int> none;
   for (std::size_t k = 0; k < path.size(); ++k) {
-    const PathSegment& segment = path[k];
-    for (const PathJacobian& step :
-         {instant_saltation(model, segment, k == 0 ? none : path[k - 1].normal_sides),
-          interval_transition(model, segment, rtol)}) {
-      if (!step.unsupported.empty()) return step;
-      M = step.matrix * M;
-    }
+    const PathJacobian step = segment_jacobian(model, path, k, rtol);
+    if (!step.unsupported.empty()) return step;
+    M = step.matrix * M;
   }
   out.matrix = std::move(M);
   return out;

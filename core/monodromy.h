@@ -33,7 +33,12 @@ PathJacobian instant_saltation(const Model& model, const PathSegment& segment,
 // integrated with DOP853 at rtol.
 PathJacobian interval_transition(const Model& model, const PathSegment& segment, double rtol);
 
-// The whole path's: transitions and saltations in turn.
+// Segment k's: its instant's saltation, then its interval's transition (the sides before the
+// instant are segment k − 1's).
+PathJacobian segment_jacobian(const Model& model, const std::vector<PathSegment>& path,
+                              std::size_t k, double rtol);
+
+// The whole path's: the segments' in turn.
 PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol);
 
 }  // namespace vibro

@@ -28,7 +28,7 @@ async function request(url, options = {}) {
   throw new ApiError(message, { status: response.status, field: body?.field ?? null });
 }
 
-function postJson(url, scene, signal) {
+export function postJson(url, scene, signal) {
   return request(url, {
     method: "POST",
     headers: { "Content-Type": "application/json" },

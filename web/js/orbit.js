@@ -1,26 +1,13 @@
 // The periodic-motion panel: the scene's periodic motion on the stroboscopic section (API.md,
 // "Periodic motions and their stability"), what it is in words, and a scene that starts on it.
 
-import { ApiError } from "./api.js";
+import { postJson } from "./api.js";
 import { formatState, formatValue } from "./numbers.js";
 
-// POSTs the scene with its periodic_orbit request; resolves to the answer's JSON.
+// POSTs the scene with its periodic_orbit request; resolves to the answer's JSON (a refusal is
+// an ApiError naming its field).
 export async function findOrbit(scene, request) {
-  const response = await fetch("/api/periodic-orbit", {
-    method: "POST",
-    headers: { "Content-Type": "application/json" },
-    body: JSON.stringify({ ...scene, periodic_orbit: request }),
-  });
-  let body = null;
-  try {
-    body = await response.json();
-  } catch {
-    // not JSON: the status alone
-  }
-  if (!response.ok) {
-    throw new ApiError(body?.error ?? `${response.status} ${response.statusText}`, { status: response.status, field: body?.field ?? null });
-  }
-  return body;
+  return (await postJson("/api/periodic-orbit", { ...scene, periodic_orbit: request })).json();
 }
 
 const digits = (x, n = 4) => (x === null || x === undefined ? "—" : formatValue(x, n));
