@@ -362,7 +362,9 @@ try {
     expect(t > 0, `the slider did not move: t = ${t}`);
     expect((await painted("mechanism")) > 500, "the mechanism is not drawn");
     expect((await painted("figure-marks")) > 20, "no marker over the figure");
-    await page.click("#anim-play");  // pause
+    // Pause, unless the one-period run has already played to its end and stopped by itself
+    // (a click then would play it again).
+    if ((await page.textContent("#anim-play")) === "Pause") await page.click("#anim-play");
     await page.evaluate(() => {
       const s = document.getElementById("anim-time");
       s.value = "0.5";
