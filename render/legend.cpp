@@ -81,7 +81,7 @@ double length_inside(const Rect& box, std::span<const Point> line) {
         t1 = std::min(t1, t);
       outside = t0 > t1;
     }
-    if (!outside) inside += (t1 - t0) * std::hypot(dx, dy);
+    if (!outside) inside += (t1 - t0) * std::sqrt(dx * dx + dy * dy);  // pixels: no overflow
   }
   return inside;
 }

@@ -22,6 +22,17 @@ std::vector<Point> radial_filter(std::span<const Point> points, double radius) {
   return kept;
 }
 
+// Pixel coordinates are bounded (render/polyline.h clamps them near the plot), so squares do not
+// overflow and std::hypot's care, several times the cost, buys nothing.
+double squared_distance_to_segment(Point p, Point a, Point b) {
+  const double dx = b.x - a.x, dy = b.y - a.y;
+  const double length2 = dx * dx + dy * dy;
+  double t = length2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / length2 : 0.0;
+  t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
+  const double ex = p.x - (a.x + t * dx), ey = p.y - (a.y + t * dy);
+  return ex * ex + ey * ey;
+}
+
 // Ramer–Douglas–Peucker with an explicit stack (no recursion depth limit on long branches).
 std::vector<Point> douglas_peucker(const std::vector<Point>& points, double tolerance) {
   const std::size_t n = points.size();
@@ -35,10 +46,10 @@ std::vector<Point> douglas_peucker(const std::vector<Point>& points, double tole
     double worst = -1.0;
     std::size_t worst_index = first;
     for (std::size_t i = first + 1; i < last; ++i) {
-      const double d = distance_to_segment(points[i], points[first], points[last]);
+      const double d = squared_distance_to_segment(points[i], points[first], points[last]);
       if (d > worst) worst = d, worst_index = i;
     }
-    if (worst > tolerance) {
+    if (worst > tolerance * tolerance) {
       keep[worst_index] = true;
       stack.push_back({first, worst_index});
       stack.push_back({worst_index, last});
@@ -53,11 +64,7 @@ std::vector<Point> douglas_peucker(const std::vector<Point>& points, double tole
 }  // namespace
 
 double distance_to_segment(Point p, Point a, Point b) {
-  const double dx = b.x - a.x, dy = b.y - a.y;
-  const double length2 = dx * dx + dy * dy;
-  double t = length2 > 0.0 ? ((p.x - a.x) * dx + (p.y - a.y) * dy) / length2 : 0.0;
-  t = t < 0.0 ? 0.0 : t > 1.0 ? 1.0 : t;
-  return std::hypot(p.x - (a.x + t * dx), p.y - (a.y + t * dy));
+  return std::sqrt(squared_distance_to_segment(p, a, b));
 }
 
 std::vector<Point> thin_polyline(std::span<const Point> points, double tolerance_px) {

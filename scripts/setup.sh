@@ -4,7 +4,7 @@
 set -euo pipefail
 cd "$(dirname "$0")/.."
 
-packages=(cmake g++ make pkg-config libeigen3-dev libosmesa6-dev libcairo2-dev libpng-dev
+packages=(cmake g++ make pkg-config libeigen3-dev libosmesa6-dev libcairo2-dev libdeflate-dev
           nlohmann-json3-dev libcpp-httplib-dev libgtest-dev librapidcheck-dev fonts-dejavu-core
           openmpi-bin libopenmpi-dev libcli11-dev)
 if [[ "${1:-}" == "--test" ]]; then
