@@ -8,7 +8,7 @@ packages=(cmake g++ make pkg-config libeigen3-dev libosmesa6-dev libcairo2-dev l
           nlohmann-json3-dev libcpp-httplib-dev libgtest-dev librapidcheck-dev fonts-dejavu-core
           openmpi-bin libopenmpi-dev libcli11-dev)
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(libbenchmark-dev python3-scipy chromium curl jq nginx)
+  packages+=(libbenchmark-dev python3-scipy chromium curl jq nginx zlib1g-dev)
   # The base image ships Node.js (with npm) from its own packages; Debian's would conflict.
   command -v node > /dev/null || packages+=(nodejs)
   command -v npm > /dev/null || packages+=(npm)
