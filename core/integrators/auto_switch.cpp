@@ -1,5 +1,7 @@
 #include "core/integrators/auto_switch.h"
 
+#include <limits>
+
 namespace vibro::integrators {
 
 template <class Explicit>
@@ -43,16 +45,65 @@ void AutoSwitchWith<Explicit>::switch_method() {
 }
 
 template <class Explicit>
+double AutoSwitchWith<Explicit>::work() const {
+  return static_cast<double>(explicit_.stats().rhs_evals) +
+         kImplicitEvalCost * static_cast<double>(implicit_.stats().rhs_evals);
+}
+
+template <class Explicit>
+typename AutoSwitchWith<Explicit>::Mark AutoSwitchWith<Explicit>::mark() const {
+  return {work(), active().t(), steps_};
+}
+
+template <class Explicit>
+double AutoSwitchWith<Explicit>::cost_rate(const Mark& from) const {
+  const double dt = active().t() - from.t;
+  return dt > 0.0 ? (work() - from.work) / dt : std::numeric_limits<double>::infinity();
+}
+
+template <class Explicit>
+void AutoSwitchWith<Explicit>::after_explicit_step() {
+  ++explicit_steps_;
+  if (!explicit_.stability_limited() || explicit_steps_ < retry_after_) {
+    measure_from_ = mark();
+    return;
+  }
+  if (steps_ - measure_from_.steps < kMeasureSteps) return;
+  explicit_rate_ = cost_rate(measure_from_);
+  trial_ = true;
+  trial_from_ = mark();
+  switch_pending_ = true;
+}
+
+template <class Explicit>
+void AutoSwitchWith<Explicit>::after_implicit_step() {
+  if (trial_) {
+    const long done = steps_ - trial_from_.steps;
+    if (done == kTrialWarmupSteps) trial_from_ = {work(), active().t(), trial_from_.steps};
+    if (done < kTrialSteps) return;
+    trial_ = false;
+    if (cost_rate(trial_from_) > explicit_rate_) {
+      switch_pending_ = true;
+      retry_after_ = retry_after_ == 0 ? kRetrySteps : 2 * retry_after_;
+      explicit_steps_ = 0;
+      return;
+    }
+    retry_after_ = 0;
+  }
+  non_stiff_steps_ = implicit_.stiffness_ratio() <= kNonStiffBound ? non_stiff_steps_ + 1 : 0;
+  switch_pending_ = non_stiff_steps_ >= kNonStiffSteps;
+}
+
+template <class Explicit>
 StepStatus AutoSwitchWith<Explicit>::step(double t_limit) {
   if (switch_pending_) switch_method();
   const StepStatus status = active().step(t_limit);
   if (status != StepStatus::ok) return status;
-  if (!stiff_) {
-    switch_pending_ = explicit_.stiffness_detected();
-  } else {
-    non_stiff_steps_ = implicit_.stiffness_ratio() <= kNonStiffBound ? non_stiff_steps_ + 1 : 0;
-    switch_pending_ = non_stiff_steps_ >= kNonStiffSteps;
-  }
+  ++steps_;
+  if (stiff_)
+    after_implicit_step();
+  else
+    after_explicit_step();
   return status;
 }
 
@@ -73,7 +124,7 @@ template class AutoSwitchWith<Dopri5>;
 template class AutoSwitchWith<Dop853>;
 
 std::unique_ptr<AutoSwitch> make_auto_switch(const StepperOptions& options) {
-  if (options.rtol > 1e-7) return std::make_unique<AutoSwitchWith<Dopri5>>(options);
+  if (options.rtol > 3e-6) return std::make_unique<AutoSwitchWith<Dopri5>>(options);
   return std::make_unique<AutoSwitchWith<Dop853>>(options);
 }
 

@@ -13,16 +13,30 @@
 namespace vibro::integrators {
 
 // Automatic stiffness switching: an explicit method while the problem is non-stiff, RADAU5 while
-// it is stiff. When the explicit method's stiffness detection fires, the next step is taken by
-// RADAU5 from the same point with the explicit method's step size; when RADAU5's h·‖J‖∞ stays
-// below kNonStiffBound for kNonStiffSteps accepted steps, the explicit method takes over again. A
-// switch happens at the beginning of the next step (or start()), so t_prev(), dense() and name()
-// always refer to the method that took the last step. The current method is kept across start().
+// it is stiff, chosen by cost as LSODA does. When the explicit method's step size is held by
+// stability (ExplicitRk::stability_limited), its cost per unit of time over the next
+// kMeasureSteps steps is noted and RADAU5 takes over from the same point with the explicit
+// method's step size, on trial: after kTrialSteps steps (the first kTrialWarmupSteps let its step
+// size grow) RADAU5's cost per unit of time is compared, and the cheaper method goes on. A trial
+// that RADAU5 loses is retried only after kRetrySteps explicit steps, twice as many after each
+// loss. When RADAU5's h·‖J‖∞ stays below kNonStiffBound for kNonStiffSteps accepted steps, the
+// explicit method takes over again. Cost is counted in right-hand-side evaluations, RADAU5's
+// weighted by kImplicitEvalCost for its linear algebra, so the choice is the same on any machine.
+// A switch happens at the beginning of the next step (or start()), so t_prev(), dense() and
+// name() always refer to the method that took the last step. The current method is kept across
+// start().
 class AutoSwitch : public Stepper {
  public:
   // h·‖J‖∞ <= 1 leaves the explicit methods (stability bounds h·ρ ≈ 3.3 and 6.1) room to grow.
   static constexpr double kNonStiffBound = 1.0;
   static constexpr int kNonStiffSteps = 15;
+  static constexpr int kMeasureSteps = 10;
+  static constexpr int kTrialWarmupSteps = 10;
+  static constexpr int kTrialSteps = 20;
+  static constexpr long kRetrySteps = 200;
+  // A RADAU5 step costs about 2.5 times a DOP853 step per right-hand side it evaluates (its
+  // Newton iterations' linear solves; bench/overhead_bench.cpp: 232 against 94 ns per evaluation).
+  static constexpr double kImplicitEvalCost = 2.5;
 
   // True while RADAU5 is (or is about to be) the method.
   virtual bool stiff() const = 0;
@@ -47,9 +61,21 @@ class AutoSwitchWith final : public AutoSwitch {
   bool stiff() const override { return stiff_ != switch_pending_; }
 
  private:
+  // Work done and time reached: where a measurement of cost per unit of time begins.
+  struct Mark {
+    double work = 0.0;
+    double t = 0.0;
+    long steps = 0;
+  };
+
   const Stepper& active() const;
   Stepper& active();
   void switch_method();
+  double work() const;
+  Mark mark() const;
+  double cost_rate(const Mark& from) const;  // work per unit of time since `from`
+  void after_explicit_step();
+  void after_implicit_step();
 
   Explicit explicit_;
   Radau5 implicit_;
@@ -58,12 +84,21 @@ class AutoSwitchWith final : public AutoSwitch {
   bool switch_pending_ = false;  // the other method takes the next step
   int non_stiff_steps_ = 0;      // consecutive RADAU5 steps with h·‖J‖∞ <= kNonStiffBound
   long switches_ = 0;
+  long steps_ = 0;               // accepted steps of either method
+  Mark measure_from_;            // where the explicit method's measured stretch began
+  double explicit_rate_ = 0.0;   // its cost per unit of time there
+  bool trial_ = false;           // RADAU5 is on trial
+  Mark trial_from_;
+  long retry_after_ = 0;         // explicit steps before the next trial
+  long explicit_steps_ = 0;      // since the last lost trial
   mutable StepperStats stats_;
 };
 
-// The `auto` stepper for these tolerances. Above rtol 1e-7 a DOPRI5 step (6 stages) buys as much
-// as a DOP853 step (12, and 3 more for its dense output), and runs with many events are bound by
-// restarts rather than accuracy: DOPRI5 is then the cheaper explicit method (Hairer's own advice).
+// The `auto` stepper for these tolerances. At rtol 1e-5 and looser a DOPRI5 step (6 stages)
+// buys as much as a DOP853 step (12, and 3 more for its dense output), and runs with many events
+// are bound by restarts rather than accuracy: DOPRI5 is then the cheaper explicit method (Hairer's
+// own advice). From rtol 1e-6 down DOP853 is (on the presets, within 1.15× of DOPRI5 where
+// DOPRI5 wins, against up to 1.4× the other way; docs/PERFORMANCE.md).
 std::unique_ptr<AutoSwitch> make_auto_switch(const StepperOptions& options);
 
 }  // namespace vibro::integrators
