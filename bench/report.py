@@ -190,6 +190,29 @@ def trust_table(m):
               f"(CPU time of the benchmark thread).")
 
 
+def method_table(m):
+    """auto against the fastest single method, per preset and tolerance (wall time)."""
+    rows = {}
+    for name, b in m.items():
+        parts = name.split("/")
+        if len(parts) != 4 or parts[0] != "Method" or "skipped" in b:
+            continue
+        rows.setdefault((parts[1], parts[3]), {})[parts[2]] = b["real_ms"]
+    print("| preset | rtol | dopri5 | dop853 | radau5 | auto (ms) | auto / fastest | within 1.2× |")
+    print("|---|---|---:|---:|---:|---:|---:|---|")
+    worst = 0.0
+    for (preset, rtol), t in rows.items():
+        single = [t[k] for k in ("dopri5", "dop853", "radau5") if k in t]
+        if not single or "auto" not in t:
+            continue
+        r = t["auto"] / min(single)
+        worst = max(worst, r)
+        cells = " | ".join(fmt_ms(t[k]) if k in t else "—" for k in ("dopri5", "dop853", "radau5"))
+        print(f"| {preset} | {rtol.split(':')[1]} | {cells} | {fmt_ms(t['auto'])} | {r:.2f} | "
+              f"{'yes' if r <= 1.2 else '**no**'} |")
+    print(f"\nLargest auto / fastest: {worst:.2f}.")
+
+
 def main():
     results = sys.argv[1] if len(sys.argv) > 1 else "build-bench/results"
     print("### Engine (paper scene, 1200×800; 3-D panel 1024×1024)\n")
@@ -199,6 +222,10 @@ def main():
     print("\n### Work-precision, integrators behind vibro's driver (same events)")
     work_precision_tables(medians(os.path.join(results, "work_precision_bench.json")),
                           "WorkPrecision/", "Work-precision")
+    mb = medians(os.path.join(results, "method_bench.json"))
+    if mb:
+        print("\n### auto against each method, every preset (median wall time)\n")
+        method_table(mb)
     tr = medians(os.path.join(results, "trust_bench.json"))
     if tr:
         print("\n### The trust check: each preset with and without it\n")

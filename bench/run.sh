@@ -14,11 +14,12 @@ bash scripts/install_packages.sh bench libbenchmark-dev libboost-dev libsundials
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DVIBRO_BUILD_BENCH=ON -DVIBRO_BUILD_TESTS=OFF \
   > "$build.log" 2>&1 || { cat "$build.log"; exit 1; }
 cmake --build "$build" -j2 --target engine_bench overhead_bench work_precision_bench \
-  event_peer_bench trust_bench >> "$build.log" 2>&1 || { tail -50 "$build.log"; exit 1; }
+  event_peer_bench trust_bench method_bench png_bench >> "$build.log" 2>&1 || { tail -50 "$build.log"; exit 1; }
 
 mkdir -p "$build/results"
 # One core, as the targets are stated; llvmpipe (3-D panel) then gets that core alone too.
-for b in engine_bench overhead_bench work_precision_bench event_peer_bench trust_bench; do
+for b in engine_bench overhead_bench work_precision_bench event_peer_bench trust_bench method_bench \
+         png_bench; do
   echo "bench: running $b" >&2
   LP_NUM_THREADS=1 taskset -c "$core" "$build/bench/$b" \
     --benchmark_repetitions="$reps" --benchmark_report_aggregates_only=true \
