@@ -54,6 +54,31 @@ def engine_table(m):
               f"{b.get('steps', 0):.0f} | {target} | {met} |")
 
 
+def matplotlib_row(engine, path):
+    """vibro's simulate + PNG of the paper figure against matplotlib drawing the same run."""
+    if not os.path.exists(path) or "BM_PaperSimulatePng" not in engine:
+        return
+    with open(path) as f:
+        mpl = json.load(f)
+    ours = engine["BM_PaperSimulatePng"]["cpu_ms"]
+    ratio = mpl["median_ms"] / ours
+    print("\n| paper figure, 1200×800 PNG | CPU (ms) | bytes |")
+    print("|---|---:|---:|")
+    print(f"| vibro: simulate + draw + encode | {fmt_ms(ours)} | "
+          f"{engine['BM_PaperSimulatePng'].get('bytes', 0):.0f} |")
+    print(f"| matplotlib (Agg): draw + encode the same run's {mpl['points']} points | "
+          f"{fmt_ms(mpl['median_ms'])} | {mpl['bytes']} |")
+    print(f"\nvibro is {ratio:.0f}× faster (target ≥ 20×: {'met' if ratio >= 20 else '**not met**'}).")
+
+
+def png_table(m):
+    print("| encoder (paper figure's pixels) | median CPU (ms) | bytes |")
+    print("|---|---:|---:|")
+    for name, b in m.items():
+        if "skipped" not in b:
+            print(f"| {name} | {b['cpu_ms']:.2f} | {b.get('bytes', 0):.0f} |")
+
+
 def overhead_table(m):
     print("| scene | method | run, CPU (ms) | rhs evals | bare rhs (ns) | rhs-only time (ms) "
           "| run / rhs-only | target < 2× |")
@@ -216,7 +241,13 @@ def method_table(m):
 def main():
     results = sys.argv[1] if len(sys.argv) > 1 else "build-bench/results"
     print("### Engine (paper scene, 1200×800; 3-D panel 1024×1024)\n")
-    engine_table(medians(os.path.join(results, "engine_bench.json")))
+    engine = medians(os.path.join(results, "engine_bench.json"))
+    engine_table(engine)
+    matplotlib_row(engine, os.path.join(results, "matplotlib.json"))
+    png = medians(os.path.join(results, "png_bench.json"))
+    if png:
+        print("\n### PNG encoders\n")
+        png_table(png)
     print("\n### Cost per step relative to the right-hand side\n")
     overhead_table(medians(os.path.join(results, "overhead_bench.json")))
     print("\n### Work-precision, integrators behind vibro's driver (same events)")

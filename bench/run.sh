@@ -9,7 +9,8 @@ build="${BUILD_DIR:-build-bench}"
 reps="${REPETITIONS:-5}"
 core="${BENCH_CORE:-1}"
 
-bash scripts/install_packages.sh bench libbenchmark-dev libboost-dev libsundials-dev
+bash scripts/install_packages.sh bench libbenchmark-dev libboost-dev libsundials-dev \
+  python3-matplotlib
 
 cmake -S . -B "$build" -DCMAKE_BUILD_TYPE=Release -DVIBRO_BUILD_BENCH=ON -DVIBRO_BUILD_TESTS=OFF \
   > "$build.log" 2>&1 || { cat "$build.log"; exit 1; }
@@ -26,4 +27,8 @@ for b in engine_bench overhead_bench work_precision_bench event_peer_bench trust
     --benchmark_min_time=0.05 \
     --benchmark_out="$build/results/$b.json" --benchmark_out_format=json > /dev/null
 done
+# The paper figure drawn by matplotlib from vibro's run, on the same core (Debian's Python).
+cmake --build "$build" -j2 --target vibro >> "$build.log" 2>&1 || { tail -50 "$build.log"; exit 1; }
+taskset -c "$core" /usr/bin/python3 bench/peers/figure_matplotlib.py --vibro "$build/vibro" \
+  --out "$build/results/matplotlib.json" > /dev/null
 python3 bench/report.py "$build/results"
