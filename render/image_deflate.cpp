@@ -78,6 +78,29 @@ Token match(int length, bool above) {
 std::size_t match_length(Token t) { return t & 0x1FFu; }
 bool match_above(Token t) { return (t & kAbove) != 0; }
 
+// A block's tokens, with the frequencies of the literal/length symbols and of the two
+// distances counted as they come.
+struct Block {
+  std::vector<Token> tokens;
+  std::array<std::uint32_t, 286> literal_frequency{};
+  std::array<std::uint32_t, 2> distance_uses{};  // to the left, above
+
+  void literal(std::uint8_t byte) {
+    tokens.push_back(byte);
+    ++literal_frequency[byte];
+  }
+  void repeat(int length, bool above) {
+    tokens.push_back(match(length, above));
+    ++literal_frequency[length_symbols()[static_cast<std::size_t>(length)].code];
+    ++distance_uses[above ? 1 : 0];
+  }
+  void clear() {
+    tokens.clear();
+    literal_frequency.fill(0);
+    distance_uses.fill(0);
+  }
+};
+
 // Bits least significant first, as DEFLATE packs them, into a buffer sized ahead by the caller
 // (`reserve`). Whole bytes go out eight at a time without a branch; `put` takes up to 56 bits
 // between two `flush`es.
@@ -180,19 +203,14 @@ std::vector<Symbol> run_length_coded(const std::vector<std::uint8_t>& lengths) {
 }
 
 // Writes the tokens as one block with dynamic Huffman codes (RFC 1951, 3.2.7).
-void write_block(BitWriter& out, const std::vector<Token>& tokens,
-                 const std::array<Symbol, 2>& distances, bool last) {
+void write_block(BitWriter& out, const Block& block, const std::array<Symbol, 2>& distances,
+                 bool last) {
   const auto& length_symbol = length_symbols();
-  std::vector<std::uint32_t> literal_frequency(286, 0);
+  const std::vector<Token>& tokens = block.tokens;
+  std::vector<std::uint32_t> literal_frequency(block.literal_frequency.begin(),
+                                               block.literal_frequency.end());
   std::vector<std::uint32_t> distance_frequency(30, 0);
-  for (Token t : tokens) {
-    if (t & kMatch) {
-      ++literal_frequency[length_symbol[match_length(t)].code];
-      ++distance_frequency[distances[match_above(t) ? 1 : 0].code];
-    } else {
-      ++literal_frequency[t];
-    }
-  }
+  for (int i = 0; i < 2; ++i) distance_frequency[distances[i].code] += block.distance_uses[i];
   literal_frequency[kEndOfBlock] = 1;
   const Code literals = code_for(literal_frequency, 15);
   const Code distance = code_for(distance_frequency, 15);
@@ -253,16 +271,15 @@ void write_block(BitWriter& out, const std::vector<Token>& tokens,
 
 // Appends a run of `bytes` repeated bytes as matches of at most 258, leaving no piece shorter
 // than 3 (what is left under 3 bytes goes as literals of `row`, from `at`).
-void push_run(std::vector<Token>& tokens, int bytes, bool above, const std::uint8_t* row,
-              std::size_t at) {
+void push_run(Block& block, int bytes, bool above, const std::uint8_t* row, std::size_t at) {
   while (bytes >= kMinLength) {
     int length = std::min(bytes, kMaxLength);
     if (bytes - length > 0 && bytes - length < kMinLength) length = bytes - kMinLength;
-    tokens.push_back(match(length, above));
+    block.repeat(length, above);
     bytes -= length;
     at += static_cast<std::size_t>(length);
   }
-  for (; bytes > 0; --bytes) tokens.push_back(row[at++]);
+  for (; bytes > 0; --bytes) block.literal(row[at++]);
 }
 
 // The number of pixels from x on whose keys equal those of `other` at the same index, four at a
@@ -298,18 +315,22 @@ std::vector<std::uint8_t> zlib_image_rows(const ImageRows& image) {
 
   std::vector<std::uint8_t> out = {0x78, 0x01};  // zlib header: DEFLATE, 32 KiB window
   BitWriter bits(out);
-  std::vector<Token> tokens;
-  tokens.reserve(kBlockTokens + row_bytes + 1);
+  Block block;
+  block.tokens.reserve(kBlockTokens + row_bytes + 1);
   std::vector<std::uint8_t> row(row_bytes);
   std::uint32_t adler = 1;
   const std::uint8_t filter = 0;
   for (int y = 0; y < image.height; ++y) {
-    image.row(image.source, y, row.data());
-    adler = libdeflate_adler32(adler, &filter, 1);
-    adler = libdeflate_adler32(adler, row.data(), row_bytes);
-    tokens.push_back(filter);
     const std::uint32_t* keys = image.keys + static_cast<std::size_t>(y) * image.key_stride;
     const std::uint32_t* above = y > 0 && can_match_above ? keys - image.key_stride : nullptr;
+    // A row the same as the one above is one match, and `row` holds its bytes already.
+    const bool repeats_above =
+        y > 0 && equal_run(keys, keys - image.key_stride, 0, image.width, image.key_mask) ==
+                     image.width;
+    if (!repeats_above) image.row(image.source, y, row.data());
+    adler = libdeflate_adler32(adler, &filter, 1);
+    adler = libdeflate_adler32(adler, row.data(), row_bytes);
+    block.literal(filter);
     for (int x = 0; x < image.width;) {
       const int up = above ? equal_run(keys, above, x, image.width, image.key_mask) : 0;
       // A long match above is taken as it is: a longer one to the left would save a few bits.
@@ -318,20 +339,20 @@ std::vector<std::uint8_t> zlib_image_rows(const ImageRows& image) {
                            : 0;
       const std::size_t at = static_cast<std::size_t>(x) * channels;
       if (up == 0 && left == 0) {
-        for (int c = 0; c < channels; ++c) tokens.push_back(row[at + c]);
+        for (int c = 0; c < channels; ++c) block.literal(row[at + c]);
         ++x;
         continue;
       }
       const int run = std::max(up, left);
-      push_run(tokens, run * channels, up >= left, row.data(), at);
+      push_run(block, run * channels, up >= left, row.data(), at);
       x += run;
     }
-    if (tokens.size() >= kBlockTokens) {
-      write_block(bits, tokens, distances, false);
-      tokens.clear();
+    if (block.tokens.size() >= kBlockTokens) {
+      write_block(bits, block, distances, false);
+      block.clear();
     }
   }
-  write_block(bits, tokens, distances, true);
+  write_block(bits, block, distances, true);
   bits.finish();
   for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(adler >> shift));
   return out;

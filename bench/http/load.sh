@@ -17,13 +17,21 @@ trap 'kill "$server" 2> /dev/null; wait "$server" 2> /dev/null; rm -rf "$work"' 
 source bench/http/serve.sh
 start_server
 
+# The server's CPU time so far (user + system), in clock ticks.
+server_ticks() { awk '{print $14 + $15}' "/proc/$server/stat"; }
+
 run() {  # name, then wrk's own arguments
   local name="$1"
   shift
-  local line
+  local line before after requests
   sleep 2  # let the previous run's queued jobs drain
+  before="$(server_ticks)"
   line="$(wrk -t2 -c"$connections" -d"${duration}s" --latency "$@" | grep '^RESULT')"
-  echo "$name ${line#RESULT }"
+  after="$(server_ticks)"
+  requests="$(sed -n 's/.*requests=\([0-9]*\).*/\1/p' <<< "$line")"
+  # CPU per request in the server: its CPU time over the run (wrk runs beside it) / requests.
+  echo "$name ${line#RESULT } server_cpu_ms_per_request=$(awk -v t=$((after - before)) \
+    -v n="$requests" -v hz="$(getconf CLK_TCK)" 'BEGIN { printf "%.2f", 1000 * t / hz / n }')"
 }
 
 echo "vibro serve on $base: $(nproc) cores, $connections connections, ${duration} s per run"
