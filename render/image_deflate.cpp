@@ -301,6 +301,27 @@ int equal_run(const std::uint32_t* keys, const std::uint32_t* other, int x, int 
   return n - x;
 }
 
+// The tokens of one row (after its filter byte): each pixel matched against the one above
+// (`above`, or none) and the one to its left, the longer run taken; a pixel neither repeats is
+// sent as literals.
+void encode_row(Block& block, const std::uint32_t* keys, const std::uint32_t* above, int width,
+                std::uint32_t mask, int channels, const std::uint8_t* row) {
+  for (int x = 0; x < width;) {
+    const int up = above ? equal_run(keys, above, x, width, mask) : 0;
+    // A long match above is taken as it is: a longer one to the left would save a few bits.
+    const int left = x > 0 && up < kLongRun ? equal_run(keys, keys - 1, x, width, mask) : 0;
+    const std::size_t at = static_cast<std::size_t>(x) * channels;
+    if (up == 0 && left == 0) {
+      for (int c = 0; c < channels; ++c) block.literal(row[at + c]);
+      ++x;
+      continue;
+    }
+    const int run = std::max(up, left);
+    push_run(block, run * channels, up >= left, row, at);
+    x += run;
+  }
+}
+
 }  // namespace
 
 std::vector<std::uint8_t> zlib_image_rows(const ImageRows& image) {
@@ -331,21 +352,10 @@ std::vector<std::uint8_t> zlib_image_rows(const ImageRows& image) {
     adler = libdeflate_adler32(adler, &filter, 1);
     adler = libdeflate_adler32(adler, row.data(), row_bytes);
     block.literal(filter);
-    for (int x = 0; x < image.width;) {
-      const int up = above ? equal_run(keys, above, x, image.width, image.key_mask) : 0;
-      // A long match above is taken as it is: a longer one to the left would save a few bits.
-      const int left = x > 0 && up < kLongRun
-                           ? equal_run(keys, keys - 1, x, image.width, image.key_mask)
-                           : 0;
-      const std::size_t at = static_cast<std::size_t>(x) * channels;
-      if (up == 0 && left == 0) {
-        for (int c = 0; c < channels; ++c) block.literal(row[at + c]);
-        ++x;
-        continue;
-      }
-      const int run = std::max(up, left);
-      push_run(block, run * channels, up >= left, row.data(), at);
-      x += run;
+    if (repeats_above && above) {
+      push_run(block, static_cast<int>(row_bytes), true, row.data(), 0);
+    } else {
+      encode_row(block, keys, above, image.width, image.key_mask, channels, row.data());
     }
     if (block.tokens.size() >= kBlockTokens) {
       write_block(bits, block, distances, false);

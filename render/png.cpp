@@ -6,6 +6,10 @@
 #include <cstring>
 #include <string_view>
 
+#if defined(__x86_64__)
+#include <immintrin.h>
+#endif
+
 #include "render/image_deflate.h"
 
 namespace vibro::render {
@@ -19,12 +23,37 @@ struct SurfacePixels {
   const std::uint32_t* row(int y) const { return words + static_cast<std::size_t>(y) * stride; }
 };
 
-// 0x??RRGGBB words to R, G, B bytes: four pixels go out as three 32-bit little-endian words
-// (byte-swapped, each word is R G B ? in memory).
+// 0x??RRGGBB words to R, G, B bytes, four pixels at a time: with SSSE3 one byte shuffle (every
+// x86-64 CPU of the last fifteen years has it; checked at run time), otherwise as three 32-bit
+// little-endian words (byte-swapped, each pixel is R G B ? in memory).
+#if defined(__x86_64__)
+__attribute__((target("ssse3"))) int rgb_quads_ssse3(const std::uint32_t* in, int width,
+                                                     std::uint8_t* out) {
+  const __m128i order = _mm_setr_epi8(2, 1, 0, 6, 5, 4, 10, 9, 8, 14, 13, 12, -1, -1, -1, -1);
+  int x = 0;
+  // Each store writes 16 bytes for 12: the last quad of a row goes the scalar way.
+  for (; x + 5 <= width; x += 4, out += 12) {
+    const __m128i p = _mm_loadu_si128(reinterpret_cast<const __m128i*>(in + x));
+    _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_shuffle_epi8(p, order));
+  }
+  return x;
+}
+bool have_ssse3() {
+  static const bool have = (__builtin_cpu_init(), __builtin_cpu_supports("ssse3"));
+  return have;
+}
+#endif
+
 void rgb_row(const void* source, int y, std::uint8_t* out) {
   const auto& s = *static_cast<const SurfacePixels*>(source);
   const std::uint32_t* in = s.row(y);
   int x = 0;
+#if defined(__x86_64__)
+  if (have_ssse3()) {
+    x = rgb_quads_ssse3(in, s.width, out);
+    out += 3 * static_cast<std::size_t>(x);
+  }
+#endif
   if constexpr (std::endian::native == std::endian::little) {
     for (; x + 4 <= s.width; x += 4, out += 12) {
       const std::uint32_t p0 = __builtin_bswap32(in[x]) >> 8, p1 = __builtin_bswap32(in[x + 1]) >> 8,
