@@ -3,12 +3,9 @@
 namespace vibro::render {
 namespace {
 
-// Offset from the anchor to the start of the baseline.
-Point origin_offset(cairo_t* cr, const std::string& text, TextAlign align) {
-  cairo_text_extents_t te;
-  cairo_text_extents(cr, text.c_str(), &te);
-  cairo_font_extents_t fe;
-  cairo_font_extents(cr, &fe);
+// Offset from the anchor to the start of the baseline, for text of these extents.
+Point origin_offset(const cairo_text_extents_t& te, const cairo_font_extents_t& fe,
+                    TextAlign align) {
   const double dx = align.h == HAlign::left     ? 0.0
                     : align.h == HAlign::center ? -0.5 * te.x_advance
                                                 : -te.x_advance;
@@ -56,14 +53,18 @@ Rect text_box(cairo_t* cr, const std::string& text, Point at, TextAlign align) {
   cairo_text_extents(cr, text.c_str(), &te);
   cairo_font_extents_t fe;
   cairo_font_extents(cr, &fe);
-  const Point o = origin_offset(cr, text, align);
+  const Point o = origin_offset(te, fe, align);
   const double baseline = at.y + o.y;
   return {at.x + o.x, baseline - fe.ascent, te.x_advance, fe.ascent + fe.descent};
 }
 
 void draw_text(cairo_t* cr, const std::string& text, Point at, TextAlign align, Colour colour,
                double angle) {
-  const Point o = origin_offset(cr, text, align);
+  cairo_text_extents_t te;
+  cairo_text_extents(cr, text.c_str(), &te);
+  cairo_font_extents_t fe;
+  cairo_font_extents(cr, &fe);
+  const Point o = origin_offset(te, fe, align);
   if (auto* sink = sink_of(cr)) {
     double x = at.x, y = at.y, unit = 1.0, zero = 0.0;
     cairo_user_to_device(cr, &x, &y);
