@@ -41,7 +41,7 @@ class ExplicitRk final : public Stepper {
     const double guess =
         initial_step(sys, t0, y_, f_, Scheme::kOrder, options_.h_max, tol_, ytry_, ftry_);
     ++stats_.rhs_evals;
-    h_ = first_step(h_, guess, 100.0);
+    h_ = first_step(h_, guess);
   }
 
   // Continues at (t0, y0) with the first step h0, without HINIT: the hand-over from another

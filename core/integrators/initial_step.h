@@ -16,13 +16,9 @@ double initial_step(const OdeSystem& sys, double t0, const Vec& y0, const Vec& f
                     double h_max, const Tolerance& tol, Vec& y1, Vec& f1);
 
 // The first step after start(): the previous segment's proposal (0: none) is a good hint after an
-// event, but the new right-hand side may be much faster, so `reach` times HINIT's guess bounds
-// it. HINIT alone is far too cautious after an impact: at a stop at φ = 0 the angle's weight is
-// its atol, and HINIT's guess comes out a thousand times below the step that succeeds; the
-// explicit methods trust the previous step up to 100 times the guess (a step too long is merely
-// rejected), which saves 15–40 % of DOP853's right-hand sides on the presets (docs/PERFORMANCE.md).
-inline double first_step(double previous, double guess, double reach) {
-  return previous > 0.0 ? std::min(previous, reach * guess) : guess;
+// event, but the new right-hand side may be much faster, so HINIT's guess bounds it.
+inline double first_step(double previous, double guess) {
+  return previous > 0.0 ? std::min(previous, guess) : guess;
 }
 
 }  // namespace vibro::integrators

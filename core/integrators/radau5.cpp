@@ -121,9 +121,7 @@ void Radau5::start(const OdeSystem& sys, double t0, const Vec& y0) {
   begin(sys, t0, y0);
   const double guess = initial_step(sys, t0, y_, f_, 5, options_.h_max, tol_, tmp_, ftmp_);
   ++stats_.rhs_evals;
-  // Radau IIA's events are found on its collocation polynomial, three orders below its steps:
-  // after an event it starts from HINIT's guess, on steps short enough for that polynomial.
-  h_ = first_step(h_, guess, 1.0);
+  h_ = first_step(h_, guess);
 }
 
 void Radau5::resume(const OdeSystem& sys, double t0, const Vec& y0, double h0) {
