@@ -13,6 +13,9 @@ struct SimOptions {
   Method method = Method::automatic;
   double rtol = 1e-9;
   double atol = 1e-12;
+  // Which explicit method `auto` runs (core/stepper.h): the trust check's shadow of an `auto`
+  // run sets the other one.
+  AutoExplicit auto_explicit = AutoExplicit::by_tolerance;
   // Check the run against a shadow solution at tighter tolerances (core/trust.h); off,
   // the trust fields come from the run alone and cannot see event-time errors.
   bool check = true;

@@ -15,10 +15,19 @@ enum class Method { dopri5, dop853, radau5, automatic };
 
 std::string_view method_name(Method m);  // "dopri5", "dop853", "radau5", "auto"
 
+// The explicit method `auto` runs while the problem is not stiff: by default the cheaper one for
+// the tolerance (auto_explicit_for); the trust check asks for the other one, so that a run and
+// its shadow do not share a method's bias.
+enum class AutoExplicit { by_tolerance, dopri5, dop853 };
+
+// DOPRI5 at rtol 1e-5 and looser, DOP853 from 1e-6 down (core/integrators/auto_switch.h says why).
+AutoExplicit auto_explicit_for(double rtol);
+
 struct StepperOptions {
   double rtol = 1e-9;  // relative tolerance per component
   double atol = 1e-12; // absolute tolerance per component
   double h_max = std::numeric_limits<double>::infinity();
+  AutoExplicit auto_explicit = AutoExplicit::by_tolerance;
 };
 
 struct StepperStats {

@@ -94,7 +94,7 @@ class AutoSwitchWith final : public AutoSwitch {
   mutable StepperStats stats_;
 };
 
-// The `auto` stepper for these tolerances. At rtol 1e-5 and looser a DOPRI5 step (6 stages)
+// The `auto` stepper for these options (StepperOptions::auto_explicit). At rtol 1e-5 and looser a DOPRI5 step (6 stages)
 // buys as much as a DOP853 step (12, and 3 more for its dense output), and runs with many events
 // are bound by restarts rather than accuracy: DOPRI5 is then the cheaper explicit method (Hairer's
 // own advice). From rtol 1e-6 down DOP853 is (on the presets, within 1.15× of DOPRI5 where

@@ -22,6 +22,10 @@ std::string_view method_name(Method m) {
   return "unknown";
 }
 
+AutoExplicit auto_explicit_for(double rtol) {
+  return rtol > 3e-6 ? AutoExplicit::dopri5 : AutoExplicit::dop853;
+}
+
 std::unique_ptr<Stepper> make_stepper(Method method, const StepperOptions& options) {
   switch (method) {
     case Method::dopri5:
