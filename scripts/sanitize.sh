@@ -13,6 +13,9 @@ export ASAN_OPTIONS="detect_leaks=1"
 # only those are suppressed (tests/lsan.supp), every other leak fails its test.
 export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"
 export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+# The differential property tests check a quarter of their scenes here (all of them in the
+# normal suite): the same code paths, at twenty times the cost per scene under the sanitizers.
+export VIBRO_DIFF_FRACTION=0.25
 # Left out: the headless-browser test drives Chromium and node, not our instrumented code; the
 # front door's (nginx before replicas, 85 s of attacks and soak) and the MPI test (Open MPI's own
 # code, leak checks off) would mostly time other programs. The sweep code they drive is in
