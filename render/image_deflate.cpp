@@ -79,24 +79,35 @@ std::size_t match_length(Token t) { return t & 0x1FFu; }
 bool match_above(Token t) { return (t & kAbove) != 0; }
 
 // A block's tokens, with the frequencies of the literal/length symbols and of the two
-// distances counted as they come.
+// distances counted as they come. Literal bytes are counted in four tables by their place in a
+// pixel: a grey pixel's three equal bytes would otherwise wait on one counter each in turn.
 struct Block {
+  static constexpr int kLanes = 4;
   std::vector<Token> tokens;
-  std::array<std::uint32_t, 286> literal_frequency{};
-  std::array<std::uint32_t, 2> distance_uses{};  // to the left, above
+  std::array<std::array<std::uint32_t, 256>, kLanes> byte_frequency{};
+  std::array<std::uint32_t, 286> length_frequency{};  // by symbol (none below 257)
+  std::array<std::uint32_t, 2> distance_uses{};       // to the left, above
 
-  void literal(std::uint8_t byte) {
+  void literal(std::uint8_t byte, int lane = 0) {
     tokens.push_back(byte);
-    ++literal_frequency[byte];
+    ++byte_frequency[static_cast<std::size_t>(lane)][byte];
   }
   void repeat(int length, bool above) {
     tokens.push_back(match(length, above));
-    ++literal_frequency[length_symbols()[static_cast<std::size_t>(length)].code];
+    ++length_frequency[length_symbols()[static_cast<std::size_t>(length)].code];
     ++distance_uses[above ? 1 : 0];
+  }
+  // Of the literal/length alphabet.
+  std::vector<std::uint32_t> literal_frequency() const {
+    std::vector<std::uint32_t> f(length_frequency.begin(), length_frequency.end());
+    for (const auto& lane : byte_frequency)
+      for (std::size_t b = 0; b < lane.size(); ++b) f[b] += lane[b];
+    return f;
   }
   void clear() {
     tokens.clear();
-    literal_frequency.fill(0);
+    for (auto& lane : byte_frequency) lane.fill(0);
+    length_frequency.fill(0);
     distance_uses.fill(0);
   }
 };
@@ -207,8 +218,7 @@ void write_block(BitWriter& out, const Block& block, const std::array<Symbol, 2>
                  bool last) {
   const auto& length_symbol = length_symbols();
   const std::vector<Token>& tokens = block.tokens;
-  std::vector<std::uint32_t> literal_frequency(block.literal_frequency.begin(),
-                                               block.literal_frequency.end());
+  std::vector<std::uint32_t> literal_frequency = block.literal_frequency();
   std::vector<std::uint32_t> distance_frequency(30, 0);
   for (int i = 0; i < 2; ++i) distance_frequency[distances[i].code] += block.distance_uses[i];
   literal_frequency[kEndOfBlock] = 1;
@@ -307,15 +317,20 @@ int equal_run(const std::uint32_t* keys, const std::uint32_t* other, int x, int 
 void encode_row(Block& block, const std::uint32_t* keys, const std::uint32_t* above, int width,
                 std::uint32_t mask, int channels, const std::uint8_t* row) {
   for (int x = 0; x < width;) {
-    const int up = above ? equal_run(keys, above, x, width, mask) : 0;
-    // A long match above is taken as it is: a longer one to the left would save a few bits.
-    const int left = x > 0 && up < kLongRun ? equal_run(keys, keys - 1, x, width, mask) : 0;
-    const std::size_t at = static_cast<std::size_t>(x) * channels;
-    if (up == 0 && left == 0) {
-      for (int c = 0; c < channels; ++c) block.literal(row[at + c]);
+    // Most pixels that repeat neither neighbour are a curve's or a glyph's edge: decided here
+    // without the run scans.
+    const bool same_up = above && ((keys[x] ^ above[x]) & mask) == 0;
+    const bool same_left = x > 0 && ((keys[x] ^ keys[x - 1]) & mask) == 0;
+    if (!same_up && !same_left) {
+      const std::size_t at = static_cast<std::size_t>(x) * channels;
+      for (int c = 0; c < channels; ++c) block.literal(row[at + c], c);
       ++x;
       continue;
     }
+    const int up = same_up ? equal_run(keys, above, x, width, mask) : 0;
+    // A long match above is taken as it is: a longer one to the left would save a few bits.
+    const int left = same_left && up < kLongRun ? equal_run(keys, keys - 1, x, width, mask) : 0;
+    const std::size_t at = static_cast<std::size_t>(x) * channels;
     const int run = std::max(up, left);
     push_run(block, run * channels, up >= left, row, at);
     x += run;
@@ -351,7 +366,7 @@ std::vector<std::uint8_t> zlib_image_rows(const ImageRows& image) {
     if (!repeats_above) image.row(image.source, y, row.data());
     adler = libdeflate_adler32(adler, &filter, 1);
     adler = libdeflate_adler32(adler, row.data(), row_bytes);
-    block.literal(filter);
+    block.literal(filter, 3);
     if (repeats_above && above) {
       push_run(block, static_cast<int>(row_bytes), true, row.data(), 0);
     } else {
