@@ -172,7 +172,7 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
     const int samples = std::max(400, static_cast<int>(area.w));
     for (const auto& curve :
          first_integral_curves(in.model, *spec.first_integral_through, x.range, samples)) {
-      avoid.lines.push_back(to_thinned_pixels(tr, curve));
+      avoid.lines.push_back(to_thinned_pixels(tr, curve, thin_tolerance(cr)));
       stroke_polyline(cr, avoid.lines.back());
     }
     cairo_set_dash(cr, nullptr, 0, 0.0);
@@ -194,7 +194,7 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
 
   cairo_set_line_width(cr, style.curve_width());
   for (VisibleBranch& b : branches) {
-    b.pixels = to_thinned_pixels(tr, b.data);
+    b.pixels = to_thinned_pixels(tr, b.data, thin_tolerance(cr));
     set_colour(cr, branch_colour(b.index));
     stroke_polyline(cr, b.pixels);
     avoid.lines.push_back(b.pixels);

@@ -27,6 +27,11 @@ std::vector<Point> to_thinned_pixels(const Transform& tr, std::span<const Point>
   return thin_polyline(pixels, tolerance_px);
 }
 
+double thin_tolerance(cairo_t* cr) {
+  const bool raster = cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE;
+  return raster ? 2.0 * kThinTolerancePx : kThinTolerancePx;
+}
+
 void stroke_polyline(cairo_t* cr, std::span<const Point> pixels) {
   if (pixels.size() < 2) return;
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);

@@ -108,7 +108,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   draw_limiter_lines(cr, tr_phi, limiters, Orientation::horizontal, style);
   cairo_set_line_width(cr, style.curve_width());
   for (const PelletSeries& s : series) {
-    avoid.lines.push_back(to_thinned_pixels(tr_phi, s.phi));
+    avoid.lines.push_back(to_thinned_pixels(tr_phi, s.phi, thin_tolerance(cr)));
     set_colour(cr, series_colour(s.pellet));
     stroke_polyline(cr, avoid.lines.back());
     legend.push_back({"pellet " + std::to_string(s.pellet + 1), series_colour(s.pellet)});
@@ -134,7 +134,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
     cairo_set_line_width(cr, style.curve_width());
     for (const PelletSeries& s : series) {
       set_colour(cr, series_colour(s.pellet));
-      stroke_polyline(cr, to_thinned_pixels(tr_dphi, s.dphi));
+      stroke_polyline(cr, to_thinned_pixels(tr_dphi, s.dphi, thin_tolerance(cr)));
     }
     cairo_restore(cr);
     draw_frame(cr, tr_dphi, x, y_dphi, style);
