@@ -30,11 +30,14 @@ wait "$load"
 perf script -i "$work/perf.data" -F comm,ip,sym 2> /dev/null | /usr/bin/python3 -c '
 import re, sys
 stages = [  # (stage, a pattern of a frame that marks it), most specific first
-    ("PNG encoding", r"encode_png_argb32"),
-    ("text (cairo glyphs)", r"cairo_show_text|cairo_text_extents|cairo_scaled_font|text_box|draw_text"),
+    # Frames of the encoder and of pixman too: DWARF unwinding stops inside some of them.
+    ("PNG encoding", r"encode_png_argb32|zlib_image_rows|write_block|huffman_lengths|"
+                     r"canonical_codes|rgb_row|rgb_quads|libdeflate_"),
+    ("text (cairo glyphs)", r"cairo_show_text|cairo_text_extents|cairo_scaled_font|text_box|"
+                            r"draw_text|pixman_composite_glyphs"),
     ("thinning", r"to_thinned_pixels|thin_polyline"),
     ("curves (cairo stroke)", r"stroke_polyline"),
-    ("other drawing (cairo)", r"draw_figure|render_png|cairo_"),
+    ("other drawing (cairo)", r"draw_figure|render_png|cairo_|pixman_"),
     ("simulation", r"vibro::simulate|Simulation::run"),
     ("scene parsing (JSON)", r"scene_from|nlohmann|parse"),
     ("response writing (HTTP)", r"httplib|write_response|send|writev"),
