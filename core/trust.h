@@ -15,8 +15,10 @@ namespace vibro {
 
 // The shadow's options: the same scene, limits and deadline, nothing recorded, not checked
 // itself; DOPRI5 is checked by DOP853 and Radau IIA by `auto`, at tolerances divided by a hundred;
-// DOP853 by DOPRI5 above rtol 1e-8 and by itself below, and `auto` by itself, at tolerances
-// divided by ten (down to the smallest the integrators accept).
+// DOP853 by DOPRI5 above rtol 1e-8 and by itself below, at tolerances divided by ten; `auto` as
+// its explicit method is: on DOPRI5 by `auto` on DOP853 at a hundredth, on DOP853 by `auto` on
+// DOPRI5 at a tenth above rtol 1e-8 and by itself below (down to the smallest tolerances the
+// integrators accept).
 SimOptions check_options(const SimOptions& run);
 
 // A run's events instant by instant, as runs are compared: the collisions of one instant as one
