@@ -14,33 +14,25 @@
 #include "render/figure.h"
 #include "render/png.h"
 #include "render/run_plan.h"
+#include "tests/render/png_decode.h"
 
 namespace vibro::bench {
 namespace {
 
-struct Reader {
-  const std::vector<std::uint8_t>* bytes;
-  std::size_t offset = 0;
-};
-
-cairo_status_t read_bytes(void* closure, unsigned char* data, unsigned int length) {
-  auto* r = static_cast<Reader*>(closure);
-  if (r->offset + length > r->bytes->size()) return CAIRO_STATUS_READ_ERROR;
-  std::memcpy(data, r->bytes->data() + r->offset, length);
-  r->offset += length;
-  return CAIRO_STATUS_SUCCESS;
-}
-
-// The paper figure as an RGB24 surface, drawn and decoded once.
+// The paper figure as an RGB24 surface over decoded pixels, drawn and decoded once (by the
+// tests' decoder, cairo's PNG reader).
 cairo_surface_t* paper_surface() {
-  static cairo_surface_t* surface = [] {
+  static testing::Decoded pixels = [] {
     const Scene scene = preset_scene("paper");
     const RunPlan plan = plan_run(scene.figure, scene.sim, scene.model.size());
-    const RenderResult png = render_figure(scene.figure, scene.model,
-                                           simulate(scene.model, plan.options), ImageFormat::png);
-    Reader reader{&png.bytes};
-    return cairo_image_surface_create_from_png_stream(read_bytes, &reader);
+    return testing::decode_png(render_figure(scene.figure, scene.model,
+                                             simulate(scene.model, plan.options),
+                                             ImageFormat::png)
+                                   .bytes);
   }();
+  static cairo_surface_t* surface = cairo_image_surface_create_for_data(
+      reinterpret_cast<unsigned char*>(pixels.argb.data()), CAIRO_FORMAT_RGB24, pixels.width,
+      pixels.height, 4 * pixels.width);
   return surface;
 }
 
