@@ -20,8 +20,9 @@ std::string_view method_name(Method m);  // "dopri5", "dop853", "radau5", "auto"
 // its shadow do not share a method's bias.
 enum class AutoExplicit { by_tolerance, dopri5, dop853 };
 
-// DOPRI5 at rtol 1e-5 and looser, DOP853 from 1e-6 down (core/integrators/auto_switch.h says why).
-AutoExplicit auto_explicit_for(double rtol);
+// The method `choice` names; by tolerance, DOPRI5 at rtol 1e-5 and looser and DOP853 from 1e-6
+// down (core/integrators/auto_switch.h says why).
+AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice = AutoExplicit::by_tolerance);
 
 struct StepperOptions {
   double rtol = 1e-9;  // relative tolerance per component

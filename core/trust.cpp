@@ -206,10 +206,7 @@ SimOptions check_options(const SimOptions& run) {
   if (run.method == Method::dop853 && run.rtol > 1e-8) o.method = Method::dopri5;
   if (run.method == Method::radau5) o.method = Method::automatic;
   if (run.method == Method::automatic) {
-    const AutoExplicit own = run.auto_explicit == AutoExplicit::by_tolerance
-                                 ? auto_explicit_for(run.rtol)
-                                 : run.auto_explicit;
-    if (own == AutoExplicit::dopri5) {
+    if (auto_explicit_for(run.rtol, run.auto_explicit) == AutoExplicit::dopri5) {
       tighter = 100.0;
       o.auto_explicit = AutoExplicit::dop853;
     } else if (run.rtol > 1e-8) {

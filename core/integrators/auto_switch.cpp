@@ -124,10 +124,8 @@ template class AutoSwitchWith<Dopri5>;
 template class AutoSwitchWith<Dop853>;
 
 std::unique_ptr<AutoSwitch> make_auto_switch(const StepperOptions& options) {
-  const AutoExplicit which = options.auto_explicit == AutoExplicit::by_tolerance
-                                 ? auto_explicit_for(options.rtol)
-                                 : options.auto_explicit;
-  if (which == AutoExplicit::dopri5) return std::make_unique<AutoSwitchWith<Dopri5>>(options);
+  if (auto_explicit_for(options.rtol, options.auto_explicit) == AutoExplicit::dopri5)
+    return std::make_unique<AutoSwitchWith<Dopri5>>(options);
   return std::make_unique<AutoSwitchWith<Dop853>>(options);
 }
 

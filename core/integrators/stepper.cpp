@@ -22,7 +22,8 @@ std::string_view method_name(Method m) {
   return "unknown";
 }
 
-AutoExplicit auto_explicit_for(double rtol) {
+AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice) {
+  if (choice != AutoExplicit::by_tolerance) return choice;
   return rtol > 3e-6 ? AutoExplicit::dopri5 : AutoExplicit::dop853;
 }
 
