@@ -2,8 +2,6 @@
 
 #include <libdeflate.h>
 
-#include <bit>
-#include <cstring>
 #include <string_view>
 
 #if defined(__x86_64__)
@@ -23,9 +21,8 @@ struct SurfacePixels {
   const std::uint32_t* row(int y) const { return words + static_cast<std::size_t>(y) * stride; }
 };
 
-// 0x??RRGGBB words to R, G, B bytes, four pixels at a time: with SSSE3 one byte shuffle (every
-// x86-64 CPU of the last fifteen years has it; checked at run time), otherwise as three 32-bit
-// little-endian words (byte-swapped, each pixel is R G B ? in memory).
+// 0x??RRGGBB words to R, G, B bytes: four pixels per SSSE3 byte shuffle where the CPU has it
+// (every x86-64 CPU of the last fifteen years; checked at run time), one at a time otherwise.
 #if defined(__x86_64__)
 __attribute__((target("ssse3"))) int rgb_quads_ssse3(const std::uint32_t* in, int width,
                                                      std::uint8_t* out) {
@@ -54,17 +51,6 @@ void rgb_row(const void* source, int y, std::uint8_t* out) {
     out += 3 * static_cast<std::size_t>(x);
   }
 #endif
-  if constexpr (std::endian::native == std::endian::little) {
-    for (; x + 4 <= s.width; x += 4, out += 12) {
-      const std::uint32_t p0 = __builtin_bswap32(in[x]) >> 8, p1 = __builtin_bswap32(in[x + 1]) >> 8,
-                          p2 = __builtin_bswap32(in[x + 2]) >> 8, p3 = __builtin_bswap32(in[x + 3]) >> 8;
-      const std::uint32_t w0 = p0 | (p1 << 24), w1 = (p1 >> 8) | (p2 << 16),
-                          w2 = (p2 >> 16) | (p3 << 8);
-      std::memcpy(out, &w0, 4);
-      std::memcpy(out + 4, &w1, 4);
-      std::memcpy(out + 8, &w2, 4);
-    }
-  }
   for (; x < s.width; ++x, out += 3) {
     const std::uint32_t word = in[x];
     out[0] = static_cast<std::uint8_t>(word >> 16);
