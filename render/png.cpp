@@ -28,8 +28,9 @@ __attribute__((target("ssse3"))) int rgb_quads_ssse3(const std::uint32_t* in, in
                                                      std::uint8_t* out) {
   const __m128i order = _mm_setr_epi8(2, 1, 0, 6, 5, 4, 10, 9, 8, 14, 13, 12, -1, -1, -1, -1);
   int x = 0;
-  // Each store writes 16 bytes for 12: the last quad of a row goes the scalar way.
-  for (; x + 5 <= width; x += 4, out += 12) {
+  // Each store writes 16 bytes for 12: the 4 bytes past a quad must still lie in the row
+  // (3·x + 16 <= 3·width), the rest of the row goes the scalar way.
+  for (; 3 * x + 16 <= 3 * width; x += 4, out += 12) {
     const __m128i p = _mm_loadu_si128(reinterpret_cast<const __m128i*>(in + x));
     _mm_storeu_si128(reinterpret_cast<__m128i*>(out), _mm_shuffle_epi8(p, order));
   }
