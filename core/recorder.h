@@ -20,6 +20,8 @@ class Recorder {
 
   // A state of the whole system at time t, kept for the recorded pellets.
   void sample(double t, const Vec& y);
+  // Whether samples after t are kept: some pellet is recorded, and t is before record_until.
+  bool wants_samples(double t) const { return !tracks_.empty() && t < record_until_; }
   // Watches the paper law's normal force of the sliding bodies (at step ends and events: a cos
   // per body is not worth paying at every sample).
   void check_normal_force(double t, const Vec& y, const std::vector<Body>& bodies);

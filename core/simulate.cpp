@@ -6,6 +6,7 @@
 #include <limits>
 #include <memory>
 #include <optional>
+#include <span>
 #include <sstream>
 #include <utility>
 
@@ -226,17 +227,26 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
       return false;
     }
     const double a = stepper_->t_prev(), b = stepper_->t();
-    for (int k = 0; k < m; ++k) {
+    times[m] = b;
+    states[m] = stepper_->y();
+    // Samples inside the step, for the curves and for watches near their roots; a step that
+    // draws nothing and where every watch stays far from zero is searched at its end alone.
+    const int first = recorder_.wants_samples(a) ||
+                              !finder_.calm(interval.watches(), model_, interval.bodies(), a, b,
+                                            states[m])
+                          ? 0
+                          : m;
+    for (int k = first; k < m; ++k) {
       times[k] = a + (b - a) * (k + 1) / (m + 1);
       stepper_->dense(times[k], states[k]);
     }
-    times[m] = b;
-    states[m] = stepper_->y();
-    found = finder_.find(interval.watches(), model_, interval.bodies(), a, times, states,
-                         tol_.simultaneous(b),
+    const auto sampled_times = std::span<const double>(times).subspan(first);
+    const auto sampled_states = std::span<const Vec>(states).subspan(first);
+    found = finder_.find(interval.watches(), model_, interval.bodies(), a, sampled_times,
+                         sampled_states, tol_.simultaneous(b),
                          [&](double tt, Vec& out) { stepper_->dense(tt, out); });
     const double t_stop = found.empty() ? b : found.front().t;
-    for (int k = 0; k <= m && times[k] < t_stop; ++k) recorder_.sample(times[k], states[k]);
+    for (int k = first; k <= m && times[k] < t_stop; ++k) recorder_.sample(times[k], states[k]);
     if (found.empty()) {
       t = b;
       y_ = stepper_->y();

@@ -98,6 +98,13 @@ double Closing::time_to_zero() const {
   return rate < 0.0 ? value / -rate : std::numeric_limits<double>::infinity();
 }
 
+bool Closing::meets_within(double span) const {
+  if (!(value >= 0.0) || (value == 0.0 && !(rate > 0.0))) return true;
+  // Concave, the quadratic falls below zero past its one positive root and stays there.
+  if (curvature < 0.0) return value + span * (rate + 0.5 * curvature * span) < 0.0;
+  return rate < 0.0 && value + rate * span < 0.0;
+}
+
 namespace {
 
 // The acceleration of the body pellet i belongs to: sliding, under the friction law; held, 0.
@@ -282,6 +289,44 @@ bool CrossingFinder::scan_between(const Watch& w, const Model& model,
   hi = t_b;
   g_lo = g;
   g_hi = g_b;
+  return true;
+}
+
+namespace {
+
+// How many times farther from its root than it moves in a step a watch must stay at both ends of
+// the step for the step's inside to go unsampled: the distance it keeps at both ends is larger
+// than its change over the step and than a step's length at its rate at either end. A root
+// inside then needs the watch to fall faster than it does at either end, on a step the error
+// control found smooth, and the rate-based predictions of `find` still look for it. Judged by
+// trust_scan (seeds 1-8, 160,000 runs against references that sample every step): with kCalm
+// 0.5, 1 and 2 the runs vouching for a wrong event (2), the estimates ten times short (22-24)
+// and the runs above what their tolerance asks (6,015-6,023) are those of sampling every step
+// (2, 24, 6,017); with 0 (no samples while both ends are positive) 30 estimates fall short.
+// 1 keeps twice the margin of the smallest clean value and saves 10-22 % of a run's time.
+constexpr double kCalm = 1.0;
+
+}  // namespace
+
+bool CrossingFinder::calm(const std::vector<Watch>& watches, const Model& model,
+                          const std::vector<Body>& bodies, double t_prev, double t,
+                          const Vec& y) const {
+  const double h = t - t_prev;
+  for (std::size_t w = 0; w < watches.size(); ++w) {
+    const Watch& watch = watches[w];
+    if (!armed_[w]) return false;
+    if (depends_on_time_alone(watch)) continue;  // scan_between bounds it over any span
+    if (follows_motion(watch.kind)) {
+      const Closing& a = closing_[w];
+      const Closing b = closing(watch, model, *law_, bodies, t, y);
+      const double moves = std::max({std::abs(b.value - a.value), h * std::abs(a.rate),
+                                     h * std::abs(b.rate)});
+      if (!(std::min(a.value, b.value) > kCalm * moves)) return false;
+    } else {
+      const double g = evaluate(watch, model, bodies, t, y);
+      if (!(std::min(last_[w], g) > kCalm * std::abs(g - last_[w]))) return false;
+    }
+  }
   return true;
 }
 

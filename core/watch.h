@@ -4,6 +4,7 @@
 #pragma once
 
 #include <optional>
+#include <span>
 #include <vector>
 
 #include "core/dynamics.h"
@@ -59,6 +60,9 @@ struct Closing {
   // The time from here to where the quadratic these give meets zero, if it closes on it:
   // curving toward zero, a gap that is still opening is pressed shut again.
   double time_to_zero() const;
+  // Whether that time is shorter than span (> 0): the same answer from the quadratic's value at
+  // span, with no square root (asked at every sample of every step).
+  bool meets_within(double span) const;
 };
 // The curvature costs the bodies' accelerations: asked for where it matters (an interval's start,
 // a march); between samples, the rates' difference stands in for it.
@@ -108,9 +112,11 @@ struct Crossing {
 };
 
 
-// Finds the first crossing of every watch over samples of each step's dense output (never only
-// at step ends), refines the earliest ones with Brent's method to round-off, and returns those
-// within `simultaneous` of the earliest, sorted by time.
+// Finds the first crossing of every watch over samples of each step's dense output (on a calm
+// step, where every watch stays far from zero, the end's sample alone, with the rates of the
+// watches of the motion predicting a root inside from both ends), refines the earliest ones with
+// Brent's method to round-off, and returns those within `simultaneous` of the earliest, sorted by
+// time.
 class CrossingFinder {
  public:
   // At the start of a segment: a watch arms once it is positive, so a segment that starts on
@@ -122,12 +128,19 @@ class CrossingFinder {
   // The earliest near miss of the run so far, if any.
   const std::optional<Graze>& first_graze() const { return first_graze_; }
 
+  // Whether the step (t_prev, t], which ends in the state y, needs no samples inside: judged
+  // from both ends, every watch stays farther from its root than it moves in the step (by its
+  // change and its rates). Then the step's end alone is searched, and the dense output is built
+  // only if that search needs it (a watch turning, a closing prediction that falls inside).
+  bool calm(const std::vector<Watch>& watches, const Model& model,
+            const std::vector<Body>& bodies, double t_prev, double t, const Vec& y) const;
+
   // The step (t_prev, times.back()] with the states at the sample times (increasing, the last
   // one the step's end); `dense(t, y)` evaluates the step's dense output.
   template <class Dense>
   std::vector<Crossing> find(const std::vector<Watch>& watches, const Model& model,
                              const std::vector<Body>& bodies, double t_prev,
-                             const std::vector<double>& times, const std::vector<Vec>& states,
+                             std::span<const double> times, std::span<const Vec> states,
                              double simultaneous, Dense&& dense);
 
  private:

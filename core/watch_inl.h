@@ -118,8 +118,8 @@ bool CrossingFinder::minimum_between(const Watch& w, int index, const Model& mod
 template <class Dense>
 std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, const Model& model,
                                            const std::vector<Body>& bodies, double t_prev,
-                                           const std::vector<double>& times,
-                                           const std::vector<Vec>& states, double simultaneous,
+                                           std::span<const double> times,
+                                           std::span<const Vec> states, double simultaneous,
                                            Dense&& dense) {
   struct Bracket {
     int watch;
@@ -145,7 +145,7 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
       } else if (armed_[w] && g <= 0.0) {
         brackets.push_back({static_cast<int>(w), t_before, times[k], last_[w], g});
         break;
-      } else if (follows && armed_[w] && t_before + closing_[w].time_to_zero() < times[k]) {
+      } else if (follows && armed_[w] && closing_[w].meets_within(times[k] - t_before)) {
         // Closing fast enough to meet before this sample, yet apart at it: the two may have
         // met and parted between (a pellet knocked onto another 7e-9 rad ahead at 0.8 rad/s,
         // pressed back at 1e4 rad/s², apart again at the step's samples 1e-4 s later; two
