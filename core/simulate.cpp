@@ -231,11 +231,9 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     states[m] = stepper_->y();
     // Samples inside the step, for the curves and for watches near their roots; a step that
     // draws nothing and where every watch stays far from zero is searched at its end alone.
-    const int first = recorder_.wants_samples(a) ||
-                              !finder_.calm(interval.watches(), model_, interval.bodies(), a, b,
-                                            states[m])
-                          ? 0
-                          : m;
+    const bool calm =
+        finder_.calm(interval.watches(), model_, interval.bodies(), a, b, states[m]);
+    const int first = calm && !recorder_.wants_samples(a) ? m : 0;
     for (int k = first; k < m; ++k) {
       times[k] = a + (b - a) * (k + 1) / (m + 1);
       stepper_->dense(times[k], states[k]);

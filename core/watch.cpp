@@ -310,24 +310,28 @@ constexpr double kCalm = 1.0;
 
 bool CrossingFinder::calm(const std::vector<Watch>& watches, const Model& model,
                           const std::vector<Body>& bodies, double t_prev, double t,
-                          const Vec& y) const {
+                          const Vec& y) {
   const double h = t - t_prev;
+  calm_end_ = t;
+  bool all = true;
   for (std::size_t w = 0; w < watches.size(); ++w) {
     const Watch& watch = watches[w];
-    if (!armed_[w]) return false;
-    if (depends_on_time_alone(watch)) continue;  // scan_between bounds it over any span
+    end_value_[w] = evaluate(watch, model, bodies, t, y);
+    bool quiet = armed_[w];
     if (follows_motion(watch.kind)) {
       const Closing& a = closing_[w];
-      const Closing b = closing(watch, model, *law_, bodies, t, y);
+      const Closing& b = end_closing_[w] = closing(watch, model, *law_, bodies, t, y);
       const double moves = std::max({std::abs(b.value - a.value), h * std::abs(a.rate),
                                      h * std::abs(b.rate)});
-      if (!(std::min(a.value, b.value) > kCalm * moves)) return false;
-    } else {
-      const double g = evaluate(watch, model, bodies, t, y);
-      if (!(std::min(last_[w], g) > kCalm * std::abs(g - last_[w]))) return false;
+      quiet = quiet && std::min(a.value, b.value) > kCalm * moves;
+    } else if (!depends_on_time_alone(watch)) {  // scan_between bounds those over any span
+      const double g = end_value_[w];
+      quiet = quiet && std::min(last_[w], g) > kCalm * std::abs(g - last_[w]);
     }
+    calm_[w] = quiet;
+    all = all && quiet;
   }
-  return true;
+  return all;
 }
 
 std::optional<Graze> CrossingFinder::near_miss(const Watch& w, double tm, double gm, double c,
@@ -358,6 +362,10 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
   last_.resize(watches.size());
   closing_.resize(watches.size());
   armed_.assign(watches.size(), false);
+  calm_.assign(watches.size(), false);
+  end_value_.resize(watches.size());
+  end_closing_.resize(watches.size());
+  calm_end_ = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t w = 0; w < watches.size(); ++w) {
     last_[w] = evaluate(watches[w], model, bodies, t0, y0);
     if (follows_motion(watches[w].kind))

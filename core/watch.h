@@ -131,9 +131,11 @@ class CrossingFinder {
   // Whether the step (t_prev, t], which ends in the state y, needs no samples inside: judged
   // from both ends, every watch stays farther from its root than it moves in the step (by its
   // change and its rates). Then the step's end alone is searched, and the dense output is built
-  // only if that search needs it (a watch turning, a closing prediction that falls inside).
+  // only if that search needs it (a watch turning, a closing prediction that falls inside). On
+  // a step that is not calm, the next `find` still skips the samples inside for each watch that
+  // is, and reuses the values at the end computed here.
   bool calm(const std::vector<Watch>& watches, const Model& model,
-            const std::vector<Body>& bodies, double t_prev, double t, const Vec& y) const;
+            const std::vector<Body>& bodies, double t_prev, double t, const Vec& y);
 
   // The step (t_prev, times.back()] with the states at the sample times (increasing, the last
   // one the step's end); `dense(t, y)` evaluates the step's dense output.
@@ -173,6 +175,12 @@ class CrossingFinder {
 
   std::vector<double> last_;
   std::vector<Closing> closing_;  // of a watch of the motion, at the last sample
+  // What calm() found for the step ending at calm_end_: per watch, calm over it, and its value
+  // (and closing, for a watch of the motion) at the end.
+  double calm_end_ = 0.0;
+  std::vector<char> calm_;
+  std::vector<double> end_value_;
+  std::vector<Closing> end_closing_;
   std::vector<bool> armed_;
   std::vector<double> largest_;  // of a watch of the motion this interval (a speed's scale)
   double t_start_ = 0.0, rtol_ = 0.0, atol_ = 0.0;

@@ -129,12 +129,17 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
   std::vector<Graze> grazes;
   scratch_.resize(states.front().size());
   scratch_left_.resize(states.front().size());
+  // The values calm() found at this step's end, and which watches it found calm over the step.
+  const std::size_t end = times.size() - 1;
+  const bool judged = times[end] == calm_end_;
   for (std::size_t w = 0; w < watches.size(); ++w) {
     const bool of_time = depends_on_time_alone(watches[w]);
     const bool follows = follows_motion(watches[w].kind);
-    for (std::size_t k = 0; k < times.size(); ++k) {
-      const double t_before = k == 0 ? t_prev : times[k - 1];
-      const double g = evaluate(watches[w], model, bodies, times[k], states[k]);
+    for (std::size_t k = judged && calm_[w] ? end : 0; k < times.size(); ++k) {
+      const double t_before = k == 0 || (judged && calm_[w]) ? t_prev : times[k - 1];
+      const bool at_end = judged && k == end;
+      const double g =
+          at_end ? end_value_[w] : evaluate(watches[w], model, bodies, times[k], states[k]);
       if (armed_[w] && of_time) {
         Bracket first{static_cast<int>(w), 0.0, 0.0, 0.0, 0.0};
         if (scan_between(watches[w], model, bodies, states[k], t_before, last_[w], times[k], g,
@@ -159,7 +164,7 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
       }
       Closing now;
       if (follows) {
-        now = closing(watches[w], model, *law_, bodies, times[k], states[k]);
+        now = at_end ? end_closing_[w] : closing(watches[w], model, *law_, bodies, times[k], states[k]);
         if (watches[w].kind != WatchKind::reversal)
           now.curvature = (now.rate - closing_[w].rate) / (times[k] - t_before);
         largest_[w] = std::max(largest_[w], now.value);
