@@ -1,5 +1,6 @@
 #include "core/recorder.h"
 
+#include <algorithm>
 #include <cmath>
 #include <limits>
 #include <sstream>
@@ -27,6 +28,30 @@ Recorder::Recorder(const Model& model, const std::vector<bool>& record, double r
     }
   }
   pending_.resize(tracks_.size());
+  lowest_.assign(2 * tracks_.size(), std::numeric_limits<double>::infinity());
+  highest_.assign(2 * tracks_.size(), -std::numeric_limits<double>::infinity());
+}
+
+int Recorder::pieces(const Vec& start, const Vec& inside, double theta, const Vec& end,
+                     int fewest) {
+  constexpr double kChord = 1e-4;
+  constexpr int kMost = 64;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < tracks_.size(); ++k) {
+    const int pellet = tracks_[k].pellet;
+    for (int c = 0; c < 2; ++c) {
+      const int j = c == 0 ? phi_index(pellet) : dphi_index(pellet);
+      double& lo = lowest_[2 * k + c];
+      double& hi = highest_[2 * k + c];
+      for (double v : {start[j], inside[j], end[j]})
+        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      const double chord = start[j] + theta * (end[j] - start[j]);
+      const double off = std::abs(inside[j] - chord) / (4.0 * theta * (1.0 - theta));
+      if (hi > lo && std::isfinite(off)) worst = std::max(worst, off / (hi - lo));
+    }
+  }
+  const double needed = std::ceil(std::sqrt(worst / kChord));
+  return static_cast<int>(std::clamp(needed, static_cast<double>(fewest), static_cast<double>(kMost)));
 }
 
 void Recorder::sample(double t, const Vec& y) {

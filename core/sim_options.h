@@ -28,7 +28,9 @@ struct SimOptions {
   // Branches are kept only for the pellets flagged here (index = pellet), up to record_until.
   std::vector<bool> record;
   double record_until = std::numeric_limits<double>::infinity();
-  int samples_per_step = 4;  // dense-output points kept inside each step, for smooth curves
+  // Dense-output points inside each step where the event search looks at the watches near their
+  // roots; a recorded curve keeps at least one more per step, and as many as its turning asks.
+  int samples_per_step = 4;
   // The branches' samples kept in all, 0: no bound. Past it the recorder halves its density (every
   // other sample dropped, each branch's ends kept) and keeps one in twice as many from then on:
   // a long run is drawn whole, more coarsely, instead of stopping.

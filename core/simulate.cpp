@@ -69,6 +69,7 @@ class Simulation {
   // Integrates the open interval until its first event (true) or t_end or a stop (false).
   bool integrate_to_event(double& t, std::vector<Crossing>& found);
   void polish(const Crossing& c, double a, double b, double& t);
+  void record_inside(double a, double b, double t_event, bool searched_inside);
   bool over_budget(double t);
   void fail(double t, Termination why, const std::string& message);
 
@@ -211,6 +212,31 @@ void Simulation::polish(const Crossing& c, double a, double b, double& t) {
   t += dt;
 }
 
+// The recorded curves of the step (a, b] before the event at t_event, if any (its own state is
+// sampled once its instant is placed), in as many pieces as keep each chord close to its arc:
+// the event search's samples (times_, states_, computed here if the search skipped them), or
+// more. y_ is the state at a.
+void Simulation::record_inside(double a, double b, double t_event, bool searched_inside) {
+  const int m = static_cast<int>(times_.size()) - 1;
+  if (!searched_inside)
+    for (int k = 0; k < m; ++k) stepper_->dense(times_[k], states_[k]);
+  const int near_middle = (m - 1) / 2;
+  const double theta = (times_[near_middle] - a) / (b - a);
+  const int n = recorder_.pieces(y_, states_[near_middle], theta, states_[m], m + 1);
+  if (n == m + 1) {
+    for (int k = 0; k <= m && times_[k] < t_event; ++k) recorder_.sample(times_[k], states_[k]);
+    return;
+  }
+  Vec& y = scratch_;
+  y.resize(y_.size());
+  for (int k = 1; k <= n; ++k) {
+    const double t = k == n ? b : a + (b - a) * k / n;
+    if (!(t < t_event)) break;
+    if (k < n) stepper_->dense(t, y);
+    recorder_.sample(t, k < n ? y : states_[m]);
+  }
+}
+
 bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
   const int m = static_cast<int>(times_.size()) - 1;
   std::vector<double>& times = times_;
@@ -229,22 +255,22 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     const double a = stepper_->t_prev(), b = stepper_->t();
     times[m] = b;
     states[m] = stepper_->y();
-    // Samples inside the step, for the curves and for watches near their roots; a step that
-    // draws nothing and where every watch stays far from zero is searched at its end alone.
+    // Samples inside the step for the watches near their roots; a step where every watch stays
+    // far from zero is searched at its end alone.
     const bool calm =
         finder_.calm(interval.watches(), model_, interval.bodies(), a, b, states[m]);
-    const int first = calm && !recorder_.wants_samples(a) ? m : 0;
-    for (int k = first; k < m; ++k) {
-      times[k] = a + (b - a) * (k + 1) / (m + 1);
-      stepper_->dense(times[k], states[k]);
-    }
+    const int first = calm ? m : 0;
+    for (int k = 0; k < m; ++k) times[k] = a + (b - a) * (k + 1) / (m + 1);
+    for (int k = first; k < m; ++k) stepper_->dense(times[k], states[k]);
     const auto sampled_times = std::span<const double>(times).subspan(first);
     const auto sampled_states = std::span<const Vec>(states).subspan(first);
     found = finder_.find(interval.watches(), model_, interval.bodies(), a, sampled_times,
                          sampled_states, tol_.simultaneous(b),
                          [&](double tt, Vec& out) { stepper_->dense(tt, out); });
     const double t_stop = found.empty() ? b : found.front().t;
-    for (int k = first; k <= m && times[k] < t_stop; ++k) recorder_.sample(times[k], states[k]);
+    if (recorder_.wants_samples(a))
+      record_inside(a, b, found.empty() ? std::numeric_limits<double>::infinity() : t_stop,
+                    first == 0);
     if (found.empty()) {
       t = b;
       y_ = stepper_->y();
