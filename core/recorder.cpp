@@ -56,6 +56,12 @@ int Recorder::pieces(const Vec& start, const Vec& inside, double theta, const Ve
 
 void Recorder::sample(double t, const Vec& y) {
   if (t > record_until_) return;
+  // The same state twice (a run that ends where its last step did) is one sample; at an
+  // instant the states before and after differ, and every pellet keeps both, so that the
+  // pellets' samples stay at the same times.
+  if (t == last_t_ && y == last_y_) return;
+  last_t_ = t;
+  last_y_ = y;
   const bool on_stride = ++calls_ % stride_ == 0;
   for (std::size_t k = 0; k < tracks_.size(); ++k) {
     PelletTrack& track = tracks_[k];

@@ -2,6 +2,7 @@
 // trajectories, and the intervals where the paper law's normal force is negative.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <vector>
 
@@ -53,6 +54,8 @@ class Recorder {
   long calls_ = 0;     // sample() calls
   long stride_ = 1;    // one sample kept in stride_ (a branch's first and last always)
   std::vector<std::optional<Sample>> pending_;  // per track: the last sample skipped
+  double last_t_ = -std::numeric_limits<double>::infinity();  // the last sample() call's
+  Vec last_y_;
   std::vector<double> lowest_, highest_;  // per track: φ and φ̇ (2k, 2k + 1), the extents so far
 
   std::vector<double> negative_since_;  // per pellet: start of a negative-normal interval, or NaN

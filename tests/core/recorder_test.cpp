@@ -49,6 +49,30 @@ TEST(Recorder, ASampleBudgetThinsTheBranchesAndKeepsTheirEnds) {
   for (std::size_t k = 0; k < full.events.size(); ++k) EXPECT_EQ(full.events[k].t, thin.events[k].t);
 }
 
+TEST(Recorder, EachBranchAdvancesInTime) {
+  // Each pellet's branch moves on in time; only at an instant does it hold two samples at one
+  // time (the states before and after, kept for every pellet so that the pellets' samples share
+  // their times). A run that ended where its last step did sampled its end twice.
+  for (const char* name : {"paper", "impact-oscillator", "grazing"}) {
+    const Scene scene = testing::preset(name);
+    SimOptions o = scene.sim;
+    o.check = false;
+    o.record.assign(scene.model.size(), true);
+    const RunResult r = simulate(scene.model, o);
+    for (const PelletTrack& track : r.tracks)
+      for (const Branch& b : track.branches)
+        for (std::size_t k = 1; k < b.samples.size(); ++k) {
+          const double t = b.samples[k].t;
+          ASSERT_GE(t, b.samples[k - 1].t) << name << ", pellet " << track.pellet + 1;
+          if (t == b.samples[k - 1].t)
+            EXPECT_TRUE(std::any_of(r.events.begin(), r.events.end(),
+                                    [&](const Event& e) { return e.t == t; }))
+                << name << ", pellet " << track.pellet + 1 << ", branch " << b.index
+                << ": two samples at t = " << t << ", not an instant";
+        }
+  }
+}
+
 TEST(Recorder, ChordsBetweenSamplesStayOnTheCurve) {
   // The chatter preset: one unforced pellet under the paper law, long DOP853 steps between its
   // impacts. On each branch the exact first integral gives the curve the samples lie on; every
