@@ -211,13 +211,8 @@ bool raster_polyline(cairo_t* cr, std::span<const Point> pixels) {
   const std::optional<Canvas> canvas = canvas_of(cr);
   if (!canvas) return false;
   cairo_surface_t* surface = cairo_get_group_target(cr);
-  const int width = cairo_image_surface_get_width(surface);
-  const int height = cairo_image_surface_get_height(surface);
-  // The coverage is kept per thread; past this size cairo strokes instead of holding it.
-  constexpr long kMostCells = 4'000'000;
-  if (static_cast<long>(width) * height > kMostCells) return false;
   thread_local Coverage cov;
-  cov.fit(width, height);
+  cov.fit(cairo_image_surface_get_width(surface), cairo_image_surface_get_height(surface));
   for (std::size_t i = 1; i < pixels.size(); ++i)
     cover_segment(cov, *canvas, pixels[i - 1], pixels[i]);
   const auto [first, last] = blend(cov, *canvas);

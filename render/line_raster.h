@@ -16,9 +16,8 @@ namespace vibro::render {
 
 // Draws the pixel polyline with cr's solid source, line width and OVER, clipped to its clip
 // rectangle, as cairo would stroke it with round joins and caps. Returns false, drawing
-// nothing, where it does not apply (a vector surface, an image above 4 million pixels, a dash,
-// a transform, a pattern): the caller strokes with cairo. Every clip in render/ is a rectangle
-// (clip_to); the raster takes the clip to be its extents.
+// nothing, where it does not apply (a vector surface, a dash, a transform, a group or
+// pattern, a clip that is not one rectangle): the caller strokes with cairo.
 bool raster_polyline(cairo_t* cr, std::span<const Point> pixels);
 
 }  // namespace vibro::render
