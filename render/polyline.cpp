@@ -3,7 +3,6 @@
 #include <algorithm>
 #include <cmath>
 
-#include "render/line_raster.h"
 #include "render/thin.h"
 
 namespace vibro::render {
@@ -35,7 +34,6 @@ double thin_tolerance(cairo_t* cr) {
 
 void stroke_polyline(cairo_t* cr, std::span<const Point> pixels) {
   if (pixels.size() < 2) return;
-  if (raster_polyline(cr, pixels)) return;
   cairo_set_line_join(cr, CAIRO_LINE_JOIN_ROUND);
   cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
   // On image surfaces cairo's fast antialiasing (fewer coverage samples) strokes in half the

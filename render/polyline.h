@@ -16,8 +16,8 @@ namespace vibro::render {
 inline constexpr double kThinTolerancePx = 0.25;
 
 // The thinning tolerance for what `cr` draws on: kThinTolerancePx on vector surfaces, where a
-// reader zooms in; twice that on an image, where the curves of a figure looked the same
-// magnified eight times either way (render/line_raster.h draws them).
+// reader zooms in; twice that on an image, whose fast antialiasing places an edge to a quarter
+// pixel anyway (render/polyline.cpp strokes with it).
 double thin_tolerance(cairo_t* cr);
 
 // Data points to pixels, thinned. Coordinates are clamped far outside the plot area so that
@@ -25,9 +25,8 @@ double thin_tolerance(cairo_t* cr);
 std::vector<Point> to_thinned_pixels(const Transform& tr, std::span<const Point> data,
                                      double tolerance_px = kThinTolerancePx);
 
-// Strokes the pixel polyline with the current source, width and dash: on an image, with
-// raster_polyline where it applies; otherwise with cairo, a few hundred vertices per stroke,
-// round joins and caps hiding the seams between chunks.
+// Strokes the pixel polyline with the current source, width and dash, a few hundred vertices
+// per stroke; round joins and caps hide the seams between chunks.
 void stroke_polyline(cairo_t* cr, std::span<const Point> pixels);
 
 // Total length in pixels.
