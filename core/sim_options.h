@@ -31,6 +31,9 @@ struct SimOptions {
   // Dense-output points inside each step where the event search looks at the watches near their
   // roots; a recorded curve keeps at least one more per step, and as many as its turning asks.
   int samples_per_step = 4;
+  // Search every step at those points, also where every watch stays far from zero (a calm step,
+  // core/watch.h): for reference runs that must not share that cut with the runs they judge.
+  bool sample_every_step = false;
   // The branches' samples kept in all, 0: no bound. Past it the recorder halves its density (every
   // other sample dropped, each branch's ends kept) and keeps one in twice as many from then on:
   // a long run is drawn whole, more coarsely, instead of stopping.

@@ -257,8 +257,8 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     states[m] = stepper_->y();
     // Samples inside the step for the watches near their roots; a step where every watch stays
     // far from zero is searched at its end alone.
-    const bool calm =
-        finder_.calm(interval.watches(), model_, interval.bodies(), a, b, states[m]);
+    const bool calm = !opt_.sample_every_step &&
+                      finder_.calm(interval.watches(), model_, interval.bodies(), a, b, states[m]);
     const int first = calm ? m : 0;
     for (int k = 0; k < m; ++k) times[k] = a + (b - a) * (k + 1) / (m + 1);
     for (int k = first; k < m; ++k) stepper_->dense(times[k], states[k]);

@@ -34,6 +34,26 @@ TEST_P(EveryPreset, FinishesWithoutNaN) {
   }
 }
 
+TEST_P(EveryPreset, CalmStepsFindTheSameEvents) {
+  // Searching a calm step at its end alone (core/watch.h) finds the events that searching
+  // inside every step finds, at the same times to well below the tolerance.
+  for (const PresetText& p : presets()) {
+    const Scene scene = testing::preset(std::string(p.name));
+    SimOptions o = scene.sim;
+    o.method = GetParam();
+    o.check = false;
+    const RunResult cut = simulate(scene.model, o);
+    o.sample_every_step = true;
+    const RunResult every = simulate(scene.model, o);
+    ASSERT_EQ(cut.events.size(), every.events.size()) << p.name;
+    for (std::size_t k = 0; k < cut.events.size(); ++k) {
+      EXPECT_EQ(cut.events[k].kind, every.events[k].kind) << p.name << ", event " << k;
+      EXPECT_NEAR(cut.events[k].t, every.events[k].t, 1e-3 * o.rtol * (1.0 + every.events[k].t))
+          << p.name << ", event " << k;
+    }
+  }
+}
+
 INSTANTIATE_TEST_SUITE_P(Methods, EveryPreset,
                          ::testing::Values(Method::dopri5, Method::dop853, Method::radau5,
                                            Method::automatic),

@@ -72,8 +72,8 @@ std::vector<Row> check_scene(const RandomScene& scene, long index) {
   if (validate_model(scene.model)) return rows;
   SimOptions ref_options = run_options(scene, Method::dop853, 1e-13);
   ref_options.atol = 1e-15;
-  // Recorded, the references search every step's inside at its samples, whatever a run skips.
-  ref_options.record.assign(scene.model.size(), true);
+  // The references search every step's inside at its samples, whatever a run skips.
+  ref_options.sample_every_step = true;
   const RunResult ref = simulate(scene.model, ref_options);
   ref_options.method = Method::dopri5;
   const RunResult confirm = simulate(scene.model, ref_options);
