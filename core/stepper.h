@@ -20,7 +20,7 @@ std::string_view method_name(Method m);  // "dopri5", "dop853", "radau5", "auto"
 // its shadow do not share a method's bias.
 enum class AutoExplicit { by_tolerance, dopri5, dop853 };
 
-// The method `choice` names; by tolerance, DOPRI5 at rtol 1e-5 and looser and DOP853 from 1e-6
+// The method `choice` names; by tolerance, DOPRI5 at rtol 1e-6 and looser and DOP853 from 5e-7
 // down (core/integrators/auto_switch.h says why).
 AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice = AutoExplicit::by_tolerance);
 

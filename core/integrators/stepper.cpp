@@ -24,7 +24,7 @@ std::string_view method_name(Method m) {
 
 AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice) {
   if (choice != AutoExplicit::by_tolerance) return choice;
-  return rtol > 3e-6 ? AutoExplicit::dopri5 : AutoExplicit::dop853;
+  return rtol > 5e-7 ? AutoExplicit::dopri5 : AutoExplicit::dop853;
 }
 
 std::unique_ptr<Stepper> make_stepper(Method method, const StepperOptions& options) {

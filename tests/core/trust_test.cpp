@@ -158,19 +158,19 @@ TEST(Trust, EachRunIsCheckedByAnotherMethod) {
   EXPECT_EQ(shadow_of(Method::dopri5, 1e-6).method, Method::dop853);
   EXPECT_EQ(shadow_of(Method::dop853, 1e-6).method, Method::dopri5);
   EXPECT_EQ(shadow_of(Method::radau5, 1e-6).method, Method::automatic);
-  // `auto` on DOP853 (rtol 1e-6 down) is checked by `auto` on DOPRI5 above rtol 1e-8, and on
-  // DOPRI5 (rtol 1e-5 up) by `auto` on DOP853 at a hundredth of the tolerance.
-  SimOptions s = shadow_of(Method::automatic, 1e-6);
+  // `auto` on DOP853 (rtol 1e-7 down) is checked by `auto` on DOPRI5 above rtol 1e-8, and on
+  // DOPRI5 (rtol 1e-6 up) by `auto` on DOP853 at a hundredth of the tolerance.
+  SimOptions s = shadow_of(Method::automatic, 1e-7);
   EXPECT_EQ(s.method, Method::automatic);
-  EXPECT_EQ(auto_explicit_for(1e-6), AutoExplicit::dop853);
+  EXPECT_EQ(auto_explicit_for(1e-7), AutoExplicit::dop853);
   EXPECT_EQ(s.auto_explicit, AutoExplicit::dopri5);
-  EXPECT_DOUBLE_EQ(s.rtol, 1e-7);
-  s = shadow_of(Method::automatic, 1e-5);
-  EXPECT_EQ(auto_explicit_for(1e-5), AutoExplicit::dopri5);
+  EXPECT_DOUBLE_EQ(s.rtol, 1e-8);
+  s = shadow_of(Method::automatic, 1e-6);
+  EXPECT_EQ(auto_explicit_for(1e-6), AutoExplicit::dopri5);
   EXPECT_EQ(s.auto_explicit, AutoExplicit::dop853);
-  EXPECT_DOUBLE_EQ(s.rtol, 1e-7);
-  // A DOPRI5-checked `auto` at rtol 1e-6 runs that method: the shadow's stepper is DOPRI5.
-  EXPECT_EQ(make_stepper(Method::automatic, StepperOptions{1e-7, 1e-9, 1.0, AutoExplicit::dopri5})
+  EXPECT_DOUBLE_EQ(s.rtol, 1e-8);
+  // A DOPRI5-checked `auto` at rtol 1e-7 runs that method: the shadow's stepper is DOPRI5.
+  EXPECT_EQ(make_stepper(Method::automatic, StepperOptions{1e-8, 1e-10, 1.0, AutoExplicit::dopri5})
                 ->name(),
             "dopri5");
   EXPECT_EQ(shadow_of(Method::automatic, 1e-9).auto_explicit, AutoExplicit::by_tolerance);
