@@ -3,6 +3,7 @@
 // the first time g falls to zero or below after having been positive.
 #pragma once
 
+#include <limits>
 #include <optional>
 #include <span>
 #include <vector>
@@ -112,11 +113,10 @@ struct Crossing {
 };
 
 
-// Finds the first crossing of every watch over samples of each step's dense output (on a calm
-// step, where every watch stays far from zero, the end's sample alone, with the rates of the
-// watches of the motion predicting a root inside from both ends), refines the earliest ones with
-// Brent's method to round-off, and returns those within `simultaneous` of the earliest, sorted by
-// time.
+// Finds the first crossing of every watch over samples of each step's dense output (a watch that
+// stays far from zero over the step at the step's end alone, the rates of the watches of the
+// motion predicting a root inside from both ends), refines the earliest ones with Brent's method
+// to round-off, and returns those within `simultaneous` of the earliest, sorted by time.
 class CrossingFinder {
  public:
   // At the start of a segment: a watch arms once it is positive, so a segment that starts on
@@ -177,7 +177,7 @@ class CrossingFinder {
   std::vector<Closing> closing_;  // of a watch of the motion, at the last sample
   // What calm() found for the step ending at calm_end_: per watch, calm over it, and its value
   // (and closing, for a watch of the motion) at the end.
-  double calm_end_ = 0.0;
+  double calm_end_ = std::numeric_limits<double>::quiet_NaN();
   std::vector<char> calm_;
   std::vector<double> end_value_;
   std::vector<Closing> end_closing_;
