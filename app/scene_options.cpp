@@ -57,7 +57,7 @@ void add_scene_options(CLI::App& command, SceneSource& source) {
       ->type_name("MS");
   command.add_flag_callback(
       "--no-check", [&source] { source.overrides["solver"]["check"] = false; },
-      "skip the shadow run at a tenth of the tolerance (no error estimate; about 2x faster)");
+      "skip the shadow run at a tighter tolerance (no error estimate; about 2x faster)");
   command.add_flag_callback(
       "--trajectories", [&source] { source.overrides["trajectories"] = true; },
       "record every pellet's trajectory");

@@ -1,8 +1,8 @@
 // Whether a run can vouch for its events (API.md, "Trust fields"). The run is checked against a
-// shadow solution of the same scene at a tenth of its tolerances (a hundredth with another
-// method), compared event by event: where both list the same events, their differences estimate
-// the run's error (the shadow's own error is ten or more times smaller); where they list different events, the sequence depends on
-// differences below the tolerance, and the run is not trusted from there on.
+// shadow solution of the same scene at a thirtieth or a hundredth of its tolerances, compared
+// event by event: where both list the same events, their differences estimate the run's error
+// (the shadow's own error is several times smaller); where they list different events, the
+// sequence depends on differences below the tolerance, and the run is not trusted from there on.
 #pragma once
 
 #include <vector>
@@ -15,10 +15,10 @@ namespace vibro {
 
 // The shadow's options: the same scene, limits and deadline, nothing recorded, not checked
 // itself; DOPRI5 is checked by DOP853 and Radau IIA by `auto`, at tolerances divided by a hundred;
-// DOP853 by DOPRI5 above rtol 1e-8 and by itself below, at tolerances divided by ten; `auto` as
-// its explicit method is: on DOPRI5 by `auto` on DOP853 at a hundredth, on DOP853 by `auto` on
-// DOPRI5 at a tenth above rtol 1e-8 and by itself below (down to the smallest tolerances the
-// integrators accept).
+// DOP853 by DOPRI5 above rtol 1e-8 and by itself below, at tolerances divided by thirty; `auto`
+// as its explicit method is: on DOPRI5 by `auto` on DOP853 at a hundredth, on DOP853 by `auto`
+// on DOPRI5 above rtol 1e-8 and by itself below, at a thirtieth (down to the smallest
+// tolerances the integrators accept).
 SimOptions check_options(const SimOptions& run);
 
 // A run's events instant by instant, as runs are compared: the collisions of one instant as one

@@ -46,7 +46,7 @@ std::string angle_text(double phi) {
   return s.str();
 }
 
-// What the check against a run at a tenth of the tolerance says, in words.
+// What the check against a shadow run at a tighter tolerance says, in words.
 std::string trust_sentence(const Stats& st) {
   std::ostringstream s;
   s.precision(3);
