@@ -111,6 +111,24 @@ std::vector<Event> plastic_limit(const Model& model, std::vector<double>& v,
 
 }  // namespace
 
+int shared_by_closings(const Model& model, const std::vector<double>& v,
+                       const std::vector<bool>& armed, const std::vector<LimiterContact>& lc,
+                       const std::vector<PairContact>& pc, double v_eps) {
+  std::vector<int> closings(model.size(), 0);
+  for (const LimiterContact& c : lc)
+    if (armed[c.limiter] && model.limiters[c.limiter].acts_on(c.pellet) &&
+        v[c.pellet] * c.side < -v_eps)
+      ++closings[c.pellet];
+  for (const PairContact& p : pc) {
+    if (v[p.behind] - v[p.ahead] <= v_eps || separated_by_limiter(model, lc, armed, p)) continue;
+    ++closings[p.behind];
+    ++closings[p.ahead];
+  }
+  for (int i = 0; i < model.size(); ++i)
+    if (closings[i] > 1) return i;
+  return -1;
+}
+
 std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
                                    std::vector<bool>& armed,
                                    const std::vector<LimiterContact>& limiter_contacts,

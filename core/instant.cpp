@@ -459,9 +459,14 @@ InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, d
     place[i] = y[phi_index(i)];
   }
   const std::vector<double> v_in = v;
+  out.unordered =
+      shared_by_closings(model, v, armed, contacts.limiters, contacts.pairs, tol.v_eps);
   std::vector<Event> impacts =
       resolve_impacts(model, v, armed, contacts.limiters, contacts.pairs, place,
                       ImpactOptions{.v_eps = tol.v_eps});
+  if (std::any_of(impacts.begin(), impacts.end(),
+                  [](const Event& e) { return e.impacts_resolved > 0; }))
+    out.unordered = -1;
   std::vector<int> struck_limiter_of(n, -1);
   for (int i = 0; i < n; ++i) {
     out.kinetic_change += kinetic(model, i, v[i]) - kinetic(model, i, y[dphi_index(i)]);

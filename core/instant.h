@@ -41,6 +41,10 @@ struct InstantOutcome {
   std::vector<Event> events;  // with times and angles
   std::vector<bool> touched;  // per pellet: its motion interval ends here
   double kinetic_change = 0.0;  // J: kinetic energy gained at the instant (≤ 0: impact losses)
+  // A pellet two of the instant's impacts closed on at once (shared_by_closings), whose order
+  // decided the outcome; -1 if none, or if the cascade went to its plastic limit (which no
+  // order changes).
+  int unordered = -1;
 };
 
 // Phase 1 at the end of an interval: the crossings (sorted by time, within one instant) of the

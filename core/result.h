@@ -121,10 +121,13 @@ struct Warning {
 // a minimum within its error of zero and rose again. Whether its event (a turn, a collision, an
 // impact) happens depends on differences below the tolerance: a run and its shadow of one
 // method missed a collision that tighter runs found, and vouched for the events after it.
+// Or (`order`) a pellet that two impacts closed on at one instant (core/impacts.h,
+// shared_by_closings): which came first, and with it the outcome, is decided alike.
 struct Graze {
-  enum class Of { speed, gap, limiter };
+  enum class Of { speed, gap, limiter, order };
   Of of = Of::speed;
-  int pellet = -1;        // the pellet whose speed or way it is; gap: the one behind
+  int pellet = -1;        // the pellet whose speed or way it is; gap: the one behind; order: the one
+                          // both impacts involve
   int other = -1;         // gap: the pellet ahead; limiter: the limiter
   double t = 0.0;         // the minimum
   double earliest = 0.0;  // the earliest its event could come, had the minimum been below zero

@@ -97,6 +97,8 @@ class Simulation {
   bool stopped_ = false;
   std::size_t next_stop_ = 0;  // into opt_.stops
   std::vector<StateAt> stops_;
+  // The first instant whose impacts' order was decided below the tolerance: the trust ends there.
+  std::optional<Graze> unordered_;
   // opt_.keep_path: the segments that end after opt_.keep_events_from (a sweep's record).
   std::vector<PathSegment> path_;
 };
@@ -151,6 +153,8 @@ std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
     path_.push_back({t, before, to_vector(y_), {}, {}, {}, {}, t});
   }
   InstantOutcome out = resolve_instant(model_, tol_, t, before, contacts, y_, armed_);
+  if (out.unordered >= 0 && !unordered_)
+    unordered_ = Graze{.of = Graze::Of::order, .pellet = out.unordered, .t = t, .earliest = t};
   if (opt_.keep_path) {
     path_.back().events = out.events;
     path_.back().bodies = out.bodies;
@@ -344,6 +348,8 @@ RunResult Simulation::run() {
   result.events = std::move(events_);
   result.stops = std::move(stops_);
   result.graze = finder_.first_graze();
+  if (unordered_ && (!result.graze || unordered_->earliest < result.graze->earliest))
+    result.graze = unordered_;
   if (!path_.empty()) path_.back().t_end = std::min(t, opt_.t_end);
   result.path = std::move(path_);
 

@@ -137,12 +137,19 @@ bool ends_at_graze(RunResult& run) {
       why << "pellet " << g.pellet + 1 << " came within " << g.value << " rad of limiter "
           << g.other + 1;
       break;
+    case Graze::Of::order:
+      why << "pellet " << g.pellet + 1 << " took two impacts at one instant, each closing within "
+          << "the contact radius of the other: which came first, and with it what they left,";
+      break;
   }
-  why << " and turned away, within the " << g.error << " the tolerance leaves uncertain: "
-      << "whether it "
-      << (g.of == Graze::Of::speed ? "stops" : g.of == Graze::Of::gap ? "collides" : "strikes")
-      << " there depends on differences below the tolerance (a grazing event); tighten rtol to "
-         "see whether the events after it converge";
+  if (g.of != Graze::Of::order)
+    why << " and turned away, within the " << g.error << " the tolerance leaves uncertain: "
+        << "whether it "
+        << (g.of == Graze::Of::speed ? "stops" : g.of == Graze::Of::gap ? "collides" : "strikes")
+        << " there";
+  why << " depends on differences below the tolerance ("
+      << (g.of == Graze::Of::order ? "a near-simultaneous impact" : "a grazing event")
+      << "); tighten rtol to see whether the events after it converge";
   run.warnings.push_back({"not_trusted", why.str(), -1, st.trusted_until, st.t_reached});
   return true;
 }

@@ -103,5 +103,27 @@ TEST(ResolveImpacts, SqueezedLightPelletEndsInBoundedWorkAsAPlasticGroup) {
   EXPECT_GT(events.back().impacts_resolved, 0);
 }
 
+// Two impacts closing on one pellet at an instant (from both sides, or from behind while it
+// strikes a limiter): their order decides what they leave, and is decided below the tolerance.
+// One impact, or impacts on different pellets, have no order to decide.
+TEST(SharedByClosings, NamesThePelletTwoImpactsCloseOn) {
+  Model m = testing::one_pellet(0.0, 0.0, 0.0);
+  m.pellets.push_back(m.pellets[0]);
+  m.pellets.push_back(m.pellets[0]);
+  m.limiters = {{0.5, 1.0, false, -1, {}}};
+  const std::vector<bool> armed = {true};
+  const std::vector<PairContact> both_sides = {{0, 1}, {1, 2}};
+  EXPECT_EQ(shared_by_closings(m, {1.0, 0.0, -1.0}, armed, {}, both_sides, 1e-13), 1);
+  EXPECT_EQ(shared_by_closings(m, {1.0, 0.0, 0.0}, armed, {}, both_sides, 1e-13), -1);
+  EXPECT_EQ(shared_by_closings(m, {1.0, 1.0, 1.0}, armed, {}, both_sides, 1e-13), -1);
+  // Pellet 1 strikes the limiter (it lies below it, side −1) while pellet 0 strikes it.
+  const std::vector<LimiterContact> at_limiter = {{1, 0, -1}};
+  EXPECT_EQ(shared_by_closings(m, {2.0, 1.0, 0.0}, armed, at_limiter, {{0, 1}}, 1e-13), 1);
+  EXPECT_EQ(shared_by_closings(m, {2.0, 1.0, 0.0}, {false}, at_limiter, {{0, 1}}, 1e-13), -1);
+  EXPECT_EQ(shared_by_closings(m, {2.0, -1.0, 0.0}, armed, at_limiter, {{0, 1}}, 1e-13), -1);
+  // Pellet 0 strikes pellet 1 while pellet 2 strikes the limiter: no pellet takes both.
+  EXPECT_EQ(shared_by_closings(m, {1.0, 0.0, 1.0}, armed, {{2, 0, -1}}, {{0, 1}}, 1e-13), -1);
+}
+
 }  // namespace
 }  // namespace vibro

@@ -64,11 +64,12 @@ TEST(Recorder, EachBranchAdvancesInTime) {
         for (std::size_t k = 1; k < b.samples.size(); ++k) {
           const double t = b.samples[k].t;
           ASSERT_GE(t, b.samples[k - 1].t) << name << ", pellet " << track.pellet + 1;
-          if (t == b.samples[k - 1].t)
+          if (t == b.samples[k - 1].t) {
             EXPECT_TRUE(std::any_of(r.events.begin(), r.events.end(),
                                     [&](const Event& e) { return e.t == t; }))
                 << name << ", pellet " << track.pellet + 1 << ", branch " << b.index
                 << ": two samples at t = " << t << ", not an instant";
+          }
         }
   }
 }

@@ -3,6 +3,7 @@
 // impacts still go on.
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 
 #include "core/simulate.h"
@@ -147,6 +148,37 @@ TEST(Trust, ASpacingTheTwoPutTenTimesApartEndsTheTrust) {
   EXPECT_EQ(r.unresolved, 2);
   EXPECT_LT(r.trusted_until, std::min(run.events[2].t, shadow.events[2].t));
   EXPECT_GE(r.trusted_until, shadow.events[1].t);  // not before the last event listed alike
+}
+
+// Two pellets swinging in mirror image meet a third resting at the bottom at one instant: which
+// collision comes first decides what the three leave, and is decided below any tolerance. A run
+// and its shadow take the same order; the trust ends at that instant, and says why. Shifted so
+// that one arrives first, the run is trusted to its end.
+TEST(Trust, ANearSimultaneousImpactEndsTheTrust) {
+  auto three = [](double right) {
+    Model m = testing::one_pellet(0.0, -0.2, 1.0);
+    m.pellets.push_back(m.pellets[0]);
+    m.pellets.push_back(m.pellets[0]);
+    m.pellets[1].phi0 = 0.0;
+    m.pellets[1].dphi0 = 0.0;
+    m.pellets[2].phi0 = right;
+    m.pellets[2].dphi0 = -1.0;
+    return m;
+  };
+  SimOptions o;
+  o.t_end = 0.5;
+  o.rtol = 1e-9;
+  o.atol = 1e-12;
+  const RunResult mirrored = simulate(three(0.2), o);
+  ASSERT_FALSE(mirrored.events.empty());
+  const double meeting = mirrored.events.front().t;
+  EXPECT_EQ(mirrored.stats.trusted_until, meeting);
+  EXPECT_TRUE(std::any_of(mirrored.warnings.begin(), mirrored.warnings.end(), [](const Warning& w) {
+    return w.code == "not_trusted" &&
+           w.message.find("near-simultaneous impact") != std::string::npos;
+  }));
+  const RunResult shifted = simulate(three(0.25), o);
+  EXPECT_EQ(shifted.stats.trusted_until, shifted.stats.t_reached);
 }
 
 TEST(Trust, TheCheckCanBeTurnedOff) {
