@@ -365,6 +365,8 @@ RunResult Simulation::run() {
   st.jac_evals = s.jac_evals;
   st.lu_decomps = s.lu_decomps;
   st.stiff_switches = s.stiff_switches;
+  st.dopri5_steps = s.dopri5_steps;
+  st.dop853_steps = s.dop853_steps;
   st.energy_defect = energy_.max_defect();
   st.first_integral_residual = max_fi_residual_;
   st.error_estimate = std::max(st.energy_defect, st.first_integral_residual);

@@ -20,9 +20,15 @@ std::string_view method_name(Method m);  // "dopri5", "dop853", "radau5", "auto"
 // its shadow do not share a method's bias.
 enum class AutoExplicit { by_tolerance, dopri5, dop853 };
 
-// The method `choice` names; by tolerance, DOPRI5 at rtol 1e-6 and looser and DOP853 from 5e-7
-// down (core/integrators/auto_switch.h says why).
+// The explicit method `auto` starts with: the one `choice` names; by tolerance, DOPRI5 at rtol
+// 1e-6 and looser and DOP853 from 5e-7 down.
 AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice = AutoExplicit::by_tolerance);
+
+// True where `auto` weighs DOPRI5 against DOP853 by their cost on the problem
+// (core/integrators/auto_switch.h): rtol above 5e-7 with the method left to it. From 5e-7 down
+// DOP853 is the cheaper on every preset (at 1e-7 the two are within 1.18× of each other either
+// way; at 1e-9 DOP853 is the faster everywhere; docs/PERFORMANCE.md).
+bool auto_weighs_explicit(double rtol, AutoExplicit choice);
 
 struct StepperOptions {
   double rtol = 1e-9;  // relative tolerance per component
@@ -38,6 +44,9 @@ struct StepperStats {
   long jac_evals = 0;   // Jacobian evaluations (implicit method only)
   long lu_decomps = 0;  // LU factorisations (implicit method only)
   long stiff_switches = 0;  // method switches made by "auto"
+  // "auto": the accepted steps each explicit method took (the trust check pairs the run with a
+  // shadow of the other one).
+  long dopri5_steps = 0, dop853_steps = 0;
 };
 
 enum class StepStatus {

@@ -201,22 +201,25 @@ SimOptions check_options(const SimOptions& run) {
   // DOP853 above rtol 1e-8 (where it costs no more), and `auto` (an explicit method where the
   // scene is not stiff) checks Radau IIA, whose own shadow shared its bias on an
   // ill-conditioned cascade. `auto` is checked as its explicit method is: running DOP853 above
-  // rtol 1e-8, by `auto` on DOPRI5; running DOPRI5, by `auto` on DOP853 at a hundredth (the same
-  // method at a tenth shared its bias: 43 estimates ten times short over 160,000 runs, against
-  // 25). The shadow's error must be well below the run's, whatever the methods' error constants:
-  // Radau IIA at rtol 1e-7 erred as much as DOP853 at 1e-8 on a chaotic scene; DOPRI5 at a
-  // tenth of DOP853's rtol 1e-7 put a collision 3.6e-8 s off, as DOP853 did, where at a
-  // thirtieth it erred by 9e-10 s; DOP853 checked by itself at a tenth shared a 5e-9 s error
-  // that at a thirtieth it did not. So DOPRI5 and Radau IIA are checked at a hundredth of their
-  // tolerance and DOP853 at a thirtieth (DOPRI5 at a hundredth would cost DOP853 3.3×, over the
-  // budget of 3×): over 160,000 runs of trust_scan, estimates ten times short went from 24 to 7.
+  // rtol 1e-8, by `auto` on DOPRI5; weighing DOPRI5 against DOP853 (rtol 1e-6 and looser), by
+  // `auto` on DOP853 at a hundredth, more accurate than either (a run mostly on DOP853 checked
+  // by DOPRI5 at a thirtieth was blind to the error of its first DOPRI5 steps, which DOPRI5
+  // shared at every tolerance). The shadow's error must be well below the run's, whatever the
+  // methods' error constants: Radau IIA at rtol 1e-7 erred as much as DOP853 at 1e-8 on a
+  // chaotic scene; DOPRI5 at a tenth of DOP853's rtol 1e-7 put a collision 3.6e-8 s off, as
+  // DOP853 did, where at a thirtieth it erred by 9e-10 s; DOP853 checked by itself at a tenth
+  // shared a 5e-9 s error that at a thirtieth it did not. So DOPRI5 and Radau IIA are checked
+  // at a hundredth of their tolerance and DOP853 at a thirtieth (DOPRI5 at a hundredth would
+  // cost DOP853 3.3×, over the budget of 3×): over 160,000 runs of trust_scan, estimates ten
+  // times short went from 24 to 7.
   double tighter = 30.0;
   if (run.method == Method::dopri5 || run.method == Method::radau5) tighter = 100.0;
   if (run.method == Method::dopri5) o.method = Method::dop853;
   if (run.method == Method::dop853 && run.rtol > 1e-8) o.method = Method::dopri5;
   if (run.method == Method::radau5) o.method = Method::automatic;
   if (run.method == Method::automatic) {
-    if (auto_explicit_for(run.rtol, run.auto_explicit) == AutoExplicit::dopri5) {
+    if (auto_weighs_explicit(run.rtol, run.auto_explicit) ||
+        auto_explicit_for(run.rtol, run.auto_explicit) == AutoExplicit::dopri5) {
       tighter = 100.0;
       o.auto_explicit = AutoExplicit::dop853;
     } else if (run.rtol > 1e-8) {

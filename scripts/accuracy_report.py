@@ -239,7 +239,8 @@ method where that costs little. DOP853 checks a DOPRI5 run at a hundredth of its
 is the cheaper there), `auto` (an explicit method unless the scene is stiff) checks Radau IIA at
 a hundredth, DOPRI5 checks DOP853 at a thirtieth above rtol 1e-8 (where it costs no more), and
 below that DOP853 checks itself at a thirtieth; `auto` is checked as its explicit method is
-(at loose tolerances it runs DOPRI5 and its shadow DOP853). Another method errs independently,
+(at loose tolerances, where it weighs DOPRI5 against DOP853 by cost, its shadow is DOP853 at a
+hundredth). Another method errs independently,
 where the same one at a tighter tolerance can take the very same steps (steps capped by the
 swing or the forcing, or cut short by events, are the same at any tolerance) and then agree
 with itself about a wrong answer (Radau IIA checked by itself agreed with itself through a

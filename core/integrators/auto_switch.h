@@ -1,8 +1,10 @@
-// Automatic stiffness switching ("auto"), in the spirit of LSODA: DOP853 while the problem is
-// non-stiff, RADAU5 while it is stiff.
+// Automatic method choice ("auto"), in the spirit of LSODA: an explicit method while the problem
+// is non-stiff, RADAU5 while it is stiff, and at loose tolerances DOPRI5 or DOP853, whichever
+// costs less on this problem.
 #pragma once
 
 #include <memory>
+#include <optional>
 #include <string_view>
 
 #include "core/integrators/dop853.h"
@@ -12,8 +14,7 @@
 
 namespace vibro::integrators {
 
-// Automatic stiffness switching: an explicit method while the problem is non-stiff, RADAU5 while
-// it is stiff, chosen by cost as LSODA does. When the explicit method's step size is held by
+// Stiffness, chosen by cost as LSODA does: when the explicit method's step size is held by
 // stability (ExplicitRk::stability_limited), its cost per unit of time over the next
 // kMeasureSteps steps is noted and RADAU5 takes over from the same point with the explicit
 // method's step size, on trial: after kTrialSteps steps (the first kTrialWarmupSteps let its step
@@ -22,10 +23,23 @@ namespace vibro::integrators {
 // loss. When RADAU5's h·‖J‖∞ stays below kNonStiffBound for kNonStiffSteps accepted steps, the
 // explicit method takes over again. Cost is counted in right-hand-side evaluations, RADAU5's
 // weighted by kImplicitEvalCost for its linear algebra, so the choice is the same on any machine.
+//
+// The explicit method, where the tolerance does not settle it (auto_weighs_explicit, rtol above
+// 5e-7): DOPRI5 starts; after kExplicitMeasureSteps steps DOP853 is tried for
+// kExplicitTrialSteps (the first kExplicitWarmupSteps let its step size settle), and goes on if
+// its cost per unit of time is below kExplicitMargin times the incumbent's over its whole
+// stretch (a short trial's cost is noisy: on high-frequency DOP853 won a trial by 2 % and ran a
+// third of the run at 1.3 times the cost); the other is tried again after kExplicitRetrySteps
+// steps, twice as many after each trial that changes nothing. Here a step's cost is its
+// right-hand sides and kStepCost more: at rtol 1e-6 DOP853 won on presets where it made more
+// evaluations but half the steps (grazing: 1048 evaluations in 66 steps against DOPRI5's 862 in
+// 135; 1.16× faster), and lost where its steps are held by the forcing or by events
+// (high-frequency: 1.24× slower).
+//
 // A switch happens at the beginning of the next step (or start()), so t_prev(), dense() and
 // name() always refer to the method that took the last step. The current method is kept across
 // start().
-class AutoSwitch : public Stepper {
+class AutoSwitch final : public Stepper {
  public:
   // h·‖J‖∞ <= 1 leaves the explicit methods (stability bounds h·ρ ≈ 3.3 and 6.1) room to grow.
   static constexpr double kNonStiffBound = 1.0;
@@ -37,16 +51,17 @@ class AutoSwitch : public Stepper {
   // A RADAU5 step costs about 2.5 times a DOP853 step per right-hand side it evaluates (its
   // Newton iterations' linear solves; bench/overhead_bench.cpp: 232 against 94 ns per evaluation).
   static constexpr double kImplicitEvalCost = 2.5;
+  static constexpr int kExplicitMeasureSteps = 10;
+  static constexpr int kExplicitWarmupSteps = 5;
+  static constexpr int kExplicitTrialSteps = 15;
+  static constexpr long kExplicitRetrySteps = 100;
+  static constexpr double kExplicitMargin = 0.9;
+  // The work of an explicit step beyond its right-hand sides (the event search, the watches, the
+  // step's bookkeeping), in right-hand sides: fitted to the presets' wall times at rtol 1e-6,
+  // which put it between 1.4 (plastic-limiter) and 6.5 (high-frequency).
+  static constexpr double kStepCost = 4.0;
 
-  // True while RADAU5 is (or is about to be) the method.
-  virtual bool stiff() const = 0;
-};
-
-// `auto` with a given explicit method: DOPRI5 for loose tolerances, DOP853 for tight ones.
-template <class Explicit>
-class AutoSwitchWith final : public AutoSwitch {
- public:
-  explicit AutoSwitchWith(const StepperOptions& options);
+  explicit AutoSwitch(const StepperOptions& options);
 
   std::string_view name() const override { return active().name(); }
   void start(const OdeSystem& sys, double t0, const Vec& y0) override;
@@ -58,9 +73,12 @@ class AutoSwitchWith final : public AutoSwitch {
   void precise_state(double t, Vec& out) override { active().precise_state(t, out); }
   bool dense_is_coarse() const override { return active().dense_is_coarse(); }
   const StepperStats& stats() const override;
-  bool stiff() const override { return stiff_ != switch_pending_; }
+
+  // True while RADAU5 is (or is about to be) the method.
+  bool stiff() const { return (pending_ ? *pending_ : active_) == Kind::radau5; }
 
  private:
+  enum class Kind { dopri5, dop853, radau5 };
   // Work done and time reached: where a measurement of cost per unit of time begins.
   struct Mark {
     double work = 0.0;
@@ -68,38 +86,42 @@ class AutoSwitchWith final : public AutoSwitch {
     long steps = 0;
   };
 
-  const Stepper& active() const;
-  Stepper& active();
+  const Stepper& active() const { return stepper(active_); }
+  Stepper& active() { return const_cast<Stepper&>(stepper(active_)); }
+  const Stepper& stepper(Kind kind) const;
   void switch_method();
-  double work() const;
-  Mark mark() const;
-  double cost_rate(const Mark& from) const;  // work per unit of time since `from`
+  double work() const;           // RADAU5 against the explicit methods
+  double explicit_work() const;  // the explicit methods against each other
+  Mark mark(double w) const { return {w, active().t(), steps_}; }
+  double rate(const Mark& from, double w) const;  // work per unit of time since `from`
   void after_explicit_step();
+  void weigh_explicit();
   void after_implicit_step();
 
-  Explicit explicit_;
+  Dopri5 dopri5_;
+  Dop853 dop853_;
   Radau5 implicit_;
   const OdeSystem* sys_ = nullptr;
-  bool stiff_ = false;           // RADAU5 is the method
-  bool switch_pending_ = false;  // the other method takes the next step
-  int non_stiff_steps_ = 0;      // consecutive RADAU5 steps with h·‖J‖∞ <= kNonStiffBound
-  long switches_ = 0;
-  long steps_ = 0;               // accepted steps of either method
-  Mark measure_from_;            // where the explicit method's measured stretch began
-  double explicit_rate_ = 0.0;   // its cost per unit of time there
-  bool trial_ = false;           // RADAU5 is on trial
+  const bool weighs_explicit_;
+  Kind explicit_;                 // the explicit method that runs while the problem is non-stiff
+  Kind active_;                   // the method that took the last step
+  std::optional<Kind> pending_;   // the method that takes the next step, if another
+  int non_stiff_steps_ = 0;       // consecutive RADAU5 steps with h·‖J‖∞ <= kNonStiffBound
+  long switches_ = 0;             // between explicit and implicit
+  long steps_ = 0;                // accepted steps of any method
+  Mark measure_from_;             // where the explicit method's measured stretch began
+  double explicit_rate_ = 0.0;    // its cost per unit of time there
+  bool trial_ = false;            // RADAU5 is on trial
   Mark trial_from_;
-  long retry_after_ = 0;         // explicit steps before the next trial
-  long explicit_steps_ = 0;      // since the last lost trial
+  long retry_after_ = 0;          // explicit steps before the next trial of RADAU5
+  long explicit_steps_ = 0;       // since the last lost trial
+  // Weighing the explicit methods.
+  long weighed_steps_ = 0;        // explicit steps since the last explicit trial ended
+  long next_weighing_ = kExplicitMeasureSteps;
+  Mark weigh_from_;               // the incumbent's measured stretch, then the challenger's
+  double incumbent_rate_ = 0.0;
+  bool weighing_ = false;         // the other explicit method is on trial
   mutable StepperStats stats_;
 };
-
-// The `auto` stepper for these options (StepperOptions::auto_explicit). At rtol 1e-6 and looser a
-// DOPRI5 step (6 stages) buys as much as a DOP853 step (12, and 3 more for its dense output), and
-// runs with many events are bound by restarts rather than accuracy: DOPRI5 is then the cheaper
-// explicit method (Hairer's own advice; on the presets at 1e-6 at most 1.03× DOP853's time,
-// against up to 1.2× the other way). From 5e-7 down DOP853 is (at 1e-7 the two are within 1.18×
-// of each other either way; at 1e-9 DOP853 is the faster on every preset; docs/PERFORMANCE.md).
-std::unique_ptr<AutoSwitch> make_auto_switch(const StepperOptions& options);
 
 }  // namespace vibro::integrators

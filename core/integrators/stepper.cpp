@@ -27,6 +27,10 @@ AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice) {
   return rtol > 5e-7 ? AutoExplicit::dopri5 : AutoExplicit::dop853;
 }
 
+bool auto_weighs_explicit(double rtol, AutoExplicit choice) {
+  return choice == AutoExplicit::by_tolerance && rtol > 5e-7;
+}
+
 std::unique_ptr<Stepper> make_stepper(Method method, const StepperOptions& options) {
   switch (method) {
     case Method::dopri5:
@@ -36,7 +40,7 @@ std::unique_ptr<Stepper> make_stepper(Method method, const StepperOptions& optio
     case Method::radau5:
       return std::make_unique<integrators::Radau5>(options);
     case Method::automatic:
-      return integrators::make_auto_switch(options);
+      return std::make_unique<integrators::AutoSwitch>(options);
   }
   return nullptr;
 }

@@ -221,7 +221,8 @@ TEST(Trust, EachRunIsCheckedByAnotherMethod) {
   EXPECT_EQ(shadow_of(Method::dop853, 1e-6).method, Method::dopri5);
   EXPECT_EQ(shadow_of(Method::radau5, 1e-6).method, Method::automatic);
   // `auto` on DOP853 (rtol 1e-7 down) is checked by `auto` on DOPRI5 above rtol 1e-8 at a
-  // thirtieth of the tolerance, and on DOPRI5 (rtol 1e-6 up) by `auto` on DOP853 at a hundredth.
+  // thirtieth of the tolerance; where it weighs DOPRI5 against DOP853 (rtol 1e-6 up), by `auto`
+  // on DOP853 at a hundredth, a shadow more accurate than either.
   SimOptions s = shadow_of(Method::automatic, 1e-7);
   EXPECT_EQ(s.method, Method::automatic);
   EXPECT_EQ(auto_explicit_for(1e-7), AutoExplicit::dop853);

@@ -14,7 +14,6 @@ namespace vibro::testing {
 namespace {
 
 using integrators::AutoSwitch;
-using integrators::AutoSwitchWith;
 using integrators::Dop853;
 using integrators::Dop853;
 using integrators::Dopri5;
@@ -136,7 +135,7 @@ TEST(IntegratorsStiff, AutoStartsWithTheExplicitMethodForItsTolerance) {
 
 TEST(IntegratorsStiff, AutoSwitchesBackWhenTheProblemCalmsDown) {
   const StiffThenCalm sys;
-  AutoSwitchWith<Dop853> s(tolerances(1e-8, 1e-8));
+  AutoSwitch s(tolerances(1e-8, 1e-8));
   s.start(sys, 0.0, StiffThenCalm::initial());
   ASSERT_EQ(run_to(s, 1.5).status, StepStatus::ok);
   EXPECT_EQ(s.name(), "radau5");
