@@ -107,8 +107,8 @@ void AutoSwitch::after_explicit_step() {
 }
 
 // Before an explicit step, where the time reached is the run's (a step's end that an event cut
-// short is not): the incumbent's cost per unit of time over its whole stretch, then the
-// challenger's after its warm-up, each from one step's start to another's.
+// short is not): the incumbent's cost per unit of time over its whole stretch, the challenger's
+// over its trial after kExplicitWarmupSteps, each from one step's start to another's.
 void AutoSwitch::weigh_explicit() {
   const Kind other = explicit_ == Kind::dopri5 ? Kind::dop853 : Kind::dopri5;
   if (!weighing_) {

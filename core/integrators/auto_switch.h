@@ -24,17 +24,17 @@ namespace vibro::integrators {
 // explicit method takes over again. Cost is counted in right-hand-side evaluations, RADAU5's
 // weighted by kImplicitEvalCost for its linear algebra, so the choice is the same on any machine.
 //
-// The explicit method, where the tolerance does not settle it (auto_weighs_explicit, rtol above
-// 5e-7): DOPRI5 starts; after kExplicitMeasureSteps steps DOP853 is tried for
-// kExplicitTrialSteps (the first kExplicitWarmupSteps let its step size settle), and goes on if
-// its cost per unit of time is below kExplicitMargin times the incumbent's over its whole
-// stretch (a short trial's cost is noisy: on high-frequency DOP853 won a trial by 2 % and ran a
-// third of the run at 1.3 times the cost); the other is tried again after kExplicitRetrySteps
-// steps, twice as many after each trial that changes nothing. Here a step's cost is its
-// right-hand sides and kStepCost more: at rtol 1e-6 DOP853 won on presets where it made more
-// evaluations but half the steps (grazing: 1048 evaluations in 66 steps against DOPRI5's 862 in
-// 135; 1.16× faster), and lost where its steps are held by the forcing or by events
-// (high-frequency: 1.24× slower).
+// The explicit method, where the tolerance does not settle it (auto_weighs_explicit, rtol
+// around 1e-6): DOPRI5 starts; after kExplicitMeasureSteps steps DOP853 is tried for
+// kExplicitTrialSteps, and goes on if its cost per unit of time after its first
+// kExplicitWarmupSteps (the other method's step size settling) is below kExplicitMargin times
+// the incumbent's over its whole stretch. A short trial's cost is noisy (on high-frequency
+// DOP853 won a trial by 2 % and ran a third of the run at 1.3 times the cost), hence the margin.
+// The other method is tried again after kExplicitRetrySteps steps, twice as many after each
+// trial that changes nothing. Here a step's cost is its right-hand sides and kStepCost more: at
+// rtol 1e-6 DOP853 won on presets where it made more evaluations but half the steps (grazing:
+// 1048 evaluations in 66 steps against DOPRI5's 862 in 135; 1.16× faster), and lost where its
+// steps are held by the forcing or by events (high-frequency: 1.24× slower).
 //
 // A switch happens at the beginning of the next step (or start()), so t_prev(), dense() and
 // name() always refer to the method that took the last step. The current method is kept across

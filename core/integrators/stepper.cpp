@@ -28,7 +28,7 @@ AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice) {
 }
 
 bool auto_weighs_explicit(double rtol, AutoExplicit choice) {
-  return choice == AutoExplicit::by_tolerance && rtol > 5e-7;
+  return choice == AutoExplicit::by_tolerance && rtol > 5e-7 && rtol <= 5e-6;
 }
 
 std::unique_ptr<Stepper> make_stepper(Method method, const StepperOptions& options) {
