@@ -47,8 +47,7 @@ struct StepperStats {
   long jac_evals = 0;   // Jacobian evaluations (implicit method only)
   long lu_decomps = 0;  // LU factorisations (implicit method only)
   long stiff_switches = 0;  // method switches made by "auto"
-  // "auto": the accepted steps each explicit method took (the trust check pairs the run with a
-  // shadow of the other one).
+  // "auto": the accepted steps each explicit method took, where it weighs one against the other.
   long dopri5_steps = 0, dop853_steps = 0;
 };
 

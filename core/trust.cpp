@@ -125,17 +125,26 @@ bool ends_at_graze(RunResult& run) {
   why.precision(3);
   why << "events are trusted until t = " << std::setprecision(7) << g.earliest << " s: at t = "
       << g.t << " s " << std::setprecision(3);
+  // A minimum below zero is a crossing that would have turned that far past (a grazing one).
+  const bool struck = g.value < 0.0;
   switch (g.of) {
     case Graze::Of::speed:
-      why << "the speed of pellet " << g.pellet + 1 << " fell to " << g.value << " rad/s";
+      why << "the speed of pellet " << g.pellet + 1 << " fell to " << g.value
+          << " rad/s and turned away";
       break;
     case Graze::Of::gap:
-      why << "pellets " << g.pellet + 1 << " and " << g.other + 1 << " came within " << g.value
-          << " rad";
+      why << "pellets " << g.pellet + 1 << " and " << g.other + 1
+          << (struck ? " collided so slowly that they would have turned " : " came within ")
+          << std::abs(g.value) << (struck ? " rad past each other" : " rad and turned away");
       break;
     case Graze::Of::limiter:
-      why << "pellet " << g.pellet + 1 << " came within " << g.value << " rad of limiter "
-          << g.other + 1;
+      why << "pellet " << g.pellet + 1;
+      if (struck)
+        why << " struck limiter " << g.other + 1 << " so slowly that it would have turned "
+            << -g.value << " rad past it";
+      else
+        why << " came within " << g.value << " rad of limiter " << g.other + 1
+            << " and turned away";
       break;
     case Graze::Of::order:
       why << "pellet " << g.pellet + 1 << " took two impacts at one instant, each closing within "
@@ -143,8 +152,7 @@ bool ends_at_graze(RunResult& run) {
       break;
   }
   if (g.of != Graze::Of::order)
-    why << " and turned away, within the " << g.error << " the tolerance leaves uncertain: "
-        << "whether it "
+    why << ", within the " << g.error << " the tolerance leaves uncertain: whether it "
         << (g.of == Graze::Of::speed ? "stops" : g.of == Graze::Of::gap ? "collides" : "strikes")
         << " there";
   why << " depends on differences below the tolerance ("

@@ -342,13 +342,23 @@ std::optional<Graze> CrossingFinder::near_miss(const Watch& w, double tm, double
   const double scale =
       w.kind == WatchKind::reversal ? largest : 1.0 + std::abs(y[phi_index(w.pellet)]);
   const double error = 10.0 * (rtol_ * scale + atol_);
-  if (!(c > 0.0) || !(gm > 0.0) || !(gm < error)) return std::nullopt;
+  if (!(c > 0.0) || !(std::abs(gm) < error)) return std::nullopt;
   const Graze::Of of = w.kind == WatchKind::reversal ? Graze::Of::speed
                        : w.kind == WatchKind::gap    ? Graze::Of::gap
                                                      : Graze::Of::limiter;
-  // Pushed below zero by the error, the minimum would cross this much earlier.
+  // Pushed down by the error, the minimum would cross this much earlier.
   return Graze{of, w.pellet, w.kind == WatchKind::limiter ? w.limiter : w.other, tm,
-               std::max(t_start_, tm - std::sqrt((gm + error) / c)), gm, error};
+               std::max(t_start_, tm - std::sqrt((std::abs(gm) + error) / c)), gm, error};
+}
+
+std::optional<Graze> CrossingFinder::grazing_crossing(const Watch& w, double t, const Closing& at,
+                                                      const Vec& y) const {
+  if (!(at.rate < 0.0) || !(at.curvature > 0.0)) return std::nullopt;
+  const double overshoot = at.rate * at.rate / (2.0 * at.curvature);
+  std::optional<Graze> graze = near_miss(w, t - at.rate / at.curvature, at.value - overshoot,
+                                         0.5 * at.curvature, 0.0, y);
+  if (graze) graze->t = t;  // the strike; its minimum would have come after it
+  return graze;
 }
 
 void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model,

@@ -245,11 +245,18 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
   // Near misses before the step's first event (after it, another interval starts).
   for (const Graze& g : grazes)
     if (g.t < earliest) keep(g);
-  // A body that turns within its error of the limiter ahead of it may as well have struck it.
+  // A body that turns within its error of the limiter ahead of it may as well have struck it,
+  // and one that strikes within its error of turning may as well have turned.
   if (std::isfinite(earliest)) {
     dense(earliest, y);
     for (const Crossing& c : found) {
       const Watch& turn = watches[c.watch];
+      if (turn.kind == WatchKind::limiter || turn.kind == WatchKind::gap) {
+        if (auto graze = grazing_crossing(
+                turn, earliest, closing(turn, model, *law_, bodies, earliest, y, true), y))
+          keep(*graze);
+        continue;
+      }
       if (turn.kind != WatchKind::reversal) continue;
       // At the turn the way left to the limiter is at its minimum, curving up at half the
       // deceleration.
