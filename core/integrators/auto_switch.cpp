@@ -33,15 +33,17 @@ void AutoSwitch::start(const OdeSystem& sys, double t0, const Vec& y0) {
   dopri5_.reserve(n);
   dop853_.reserve(n);
   implicit_.reserve(n);
-  if (pending_) {
-    if ((*pending_ == Kind::radau5) != (active_ == Kind::radau5)) {
-      non_stiff_steps_ = 0;
-      ++switches_;
-    }
-    active_ = *pending_;
-    pending_.reset();
-  }
+  if (pending_) take_pending();
   active().start(sys, t0, y0);
+}
+
+void AutoSwitch::take_pending() {
+  if ((*pending_ == Kind::radau5) != (active_ == Kind::radau5)) {
+    non_stiff_steps_ = 0;
+    ++switches_;
+  }
+  active_ = *pending_;
+  pending_.reset();
 }
 
 void AutoSwitch::switch_method() {
@@ -63,12 +65,7 @@ void AutoSwitch::switch_method() {
       implicit_.resume(*sys_, from.t(), from.y(), h);
       break;
   }
-  if ((to == Kind::radau5) != (active_ == Kind::radau5)) {
-    non_stiff_steps_ = 0;
-    ++switches_;
-  }
-  active_ = to;
-  pending_.reset();
+  take_pending();
 }
 
 double AutoSwitch::work() const {

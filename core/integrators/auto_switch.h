@@ -89,7 +89,8 @@ class AutoSwitch final : public Stepper {
   const Stepper& active() const { return stepper(active_); }
   Stepper& active() { return const_cast<Stepper&>(stepper(active_)); }
   const Stepper& stepper(Kind kind) const;
-  void switch_method();
+  void switch_method();  // the pending method resumes where the active one stands
+  void take_pending();   // the pending method becomes the active one
   double work() const;           // RADAU5 against the explicit methods
   double explicit_work() const;  // the explicit methods against each other
   Mark mark(double w) const { return {w, active().t(), steps_}; }
