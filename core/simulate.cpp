@@ -101,9 +101,18 @@ class Simulation {
   std::optional<Graze> unordered_;
   // opt_.keep_path: the segments that end after opt_.keep_events_from (a sweep's record).
   std::vector<PathSegment> path_;
+  bool smooth_ = false;  // the last instant was one of reversals alone
 };
 
 std::vector<double> to_vector(const Vec& y) { return {y.data(), y.data() + y.size()}; }
+
+// An instant of reversals alone leaves the state as it was and every body sliding: the stepper
+// goes on with its step size (Stepper::continue_smoothly).
+bool only_reversals(const std::vector<Event>& events) {
+  return !events.empty() && std::all_of(events.begin(), events.end(), [](const Event& e) {
+    return e.kind == EventKind::reversal;
+  });
+}
 
 // The time the next step may not pass: the run's end, or the next stop.
 double Simulation::step_limit() const {
@@ -153,6 +162,7 @@ std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
     path_.push_back({t, before, to_vector(y_), {}, {}, {}, {}, t});
   }
   InstantOutcome out = resolve_instant(model_, tol_, t, before, contacts, y_, armed_);
+  smooth_ = only_reversals(out.events);
   if (out.unordered >= 0 && !unordered_)
     unordered_ = Graze{.of = Graze::Of::order, .pellet = out.unordered, .t = t, .earliest = t};
   if (opt_.keep_path) {
@@ -175,7 +185,10 @@ std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
 
 void Simulation::open_interval(double t, std::vector<Body> bodies) {
   interval_.emplace(model_, std::move(bodies), armed_, neighbours_, t, y_, tol_);
-  stepper_->start(interval_->dynamics(), t, y_);
+  if (smooth_)
+    stepper_->continue_smoothly(interval_->dynamics(), t, y_);
+  else
+    stepper_->start(interval_->dynamics(), t, y_);
   finder_.start(interval_->watches(), model_, interval_->bodies(), t, y_, opt_.rtol, opt_.atol);
   recorder_.sample(t, y_);
   recorder_.check_normal_force(t, y_, interval_->bodies());

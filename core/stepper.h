@@ -69,6 +69,15 @@ class Stepper {
   // use of it. The step size of the previous segment, if any, is kept as a hint for the first step.
   virtual void start(const OdeSystem& sys, double t0, const Vec& y0) = 0;
 
+  // Restarts at (t0, y0) where the state went on continuously and the motion on the far side is
+  // as smooth as before (a sliding body's speed passing through zero: its friction changes sign,
+  // nothing else). The previous proposal is the first step: HINIT, which start() bounds it by,
+  // guesses a thousand times too short where the speed is zero (its weight there is atol), and
+  // the controller takes four steps to grow back. After an impact or a change of mode, start().
+  virtual void continue_smoothly(const OdeSystem& sys, double t0, const Vec& y0) {
+    start(sys, t0, y0);
+  }
+
   // Takes one accepted step, never beyond t_limit (> t()). Rejected attempts are retried inside.
   // On anything but ok, t() and y() are left at the last accepted point.
   virtual StepStatus step(double t_limit) = 0;

@@ -27,6 +27,16 @@ const Stepper& AutoSwitch::stepper(Kind kind) const {
 }
 
 void AutoSwitch::start(const OdeSystem& sys, double t0, const Vec& y0) {
+  prepare(sys, y0);
+  active().start(sys, t0, y0);
+}
+
+void AutoSwitch::continue_smoothly(const OdeSystem& sys, double t0, const Vec& y0) {
+  prepare(sys, y0);
+  active().continue_smoothly(sys, t0, y0);
+}
+
+void AutoSwitch::prepare(const OdeSystem& sys, const Vec& y0) {
   sys_ = &sys;
   // Every method gets its work arrays now, so that a switch does not allocate.
   const int n = static_cast<int>(y0.size());
@@ -34,7 +44,6 @@ void AutoSwitch::start(const OdeSystem& sys, double t0, const Vec& y0) {
   dop853_.reserve(n);
   implicit_.reserve(n);
   if (pending_) take_pending();
-  active().start(sys, t0, y0);
 }
 
 void AutoSwitch::take_pending() {

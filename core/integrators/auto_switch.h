@@ -65,6 +65,7 @@ class AutoSwitch final : public Stepper {
 
   std::string_view name() const override { return active().name(); }
   void start(const OdeSystem& sys, double t0, const Vec& y0) override;
+  void continue_smoothly(const OdeSystem& sys, double t0, const Vec& y0) override;
   StepStatus step(double t_limit) override;
   double t_prev() const override { return active().t_prev(); }
   double t() const override { return active().t(); }
@@ -91,6 +92,7 @@ class AutoSwitch final : public Stepper {
   const Stepper& stepper(Kind kind) const;
   void switch_method();  // the pending method resumes where the active one stands
   void take_pending();   // the pending method becomes the active one
+  void prepare(const OdeSystem& sys, const Vec& y0);  // before a (re)start
   double work() const;           // RADAU5 against the explicit methods
   double explicit_work() const;  // the explicit methods against each other
   Mark mark(double w) const { return {w, active().t(), steps_}; }

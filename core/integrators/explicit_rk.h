@@ -44,6 +44,11 @@ class ExplicitRk final : public Stepper {
     h_ = first_step(h_, guess);
   }
 
+  void continue_smoothly(const OdeSystem& sys, double t0, const Vec& y0) override {
+    if (h_ <= 0.0) return start(sys, t0, y0);
+    begin(sys, t0, y0);
+  }
+
   // Continues at (t0, y0) with the first step h0, without HINIT: the hand-over from another
   // method (auto), which knows a good step size. Forgets the stiffness history.
   void resume(const OdeSystem& sys, double t0, const Vec& y0, double h0) {

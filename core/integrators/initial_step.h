@@ -20,7 +20,8 @@ double initial_step(const OdeSystem& sys, double t0, const Vec& y0, const Vec& f
 // impact at a stop HINIT guesses far too short (the angle's weight there is its atol); trusting
 // the proposal up to 10 or 100 times the guess saves 8–15 % of DOP853's right-hand sides, but
 // the true event-time error grows: runs above what their tolerance asks rose from 6,017 to 7,643
-// of 115,000 (tests/differential/trust_scan, seeds 1–8), so the guess stays the bound.
+// of 115,000 (tests/differential/trust_scan, seeds 1–8), so the guess stays the bound. A reversal,
+// where the motion goes on smoothly, does not come here (Stepper::continue_smoothly).
 inline double first_step(double previous, double guess) {
   return previous > 0.0 ? std::min(previous, guess) : guess;
 }

@@ -236,11 +236,19 @@ def check_engine():
         ref = vibro_ref.simulate(sc)
         eng = run_engine(sc)
         same, first, worst = compare(ref["events"], eng["events"])
-        report(same and worst <= 1e-8 and ref["unsupported"] is None,
+        # Past the time the engine vouches for (stats.trusted_until, with a warning), its events
+        # may differ from the reference's: the grazing preset's tangency, where a strike at
+        # 1e-6 rad/s and a turn are both within the tolerance, is told so from its first approach.
+        trusted = eng["stats"]["trusted_until"]
+        differing = [run[first]["t"] for run in (ref["events"], eng["events"])
+                     if not same and first < len(run)]
+        disowned = bool(differing) and trusted <= min(differing)
+        report((same or disowned) and worst <= 1e-8 and ref["unsupported"] is None,
                "engine agrees (%s)" % name,
                "%d/%d events, %s, max |dt| %.1e s" % (
                    len(ref["events"]), len(eng["events"]), "same sequence" if same else
-                   "sequences differ at event %d" % first, worst))
+                   "sequences differ at event %d, %s the engine's trust ends at t = %.6g s" % (
+                       first, "after" if disowned else "before", trusted), worst))
 
 
 # ---- findings: scenes where the engine was found wrong ------------------------------------------
