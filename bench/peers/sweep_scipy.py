@@ -31,14 +31,12 @@ def load_preset(vibro):
                                      text=True, check=True).stdout)
 
 
-def section(scene, Omega, transient, record, rtol):
+def impact_oscillator(scene, Omega):
+    """The preset's right-hand side at Omega, its strike at the stop (a terminal event) and the
+    stop's restitution."""
     m, R, g = scene["model"]["pellets"][0]["m"], scene["model"]["R"], 9.81
     F0, psi = scene["model"]["pellets"][0]["F0"], scene["model"]["pellets"][0].get("psi", 0.0)
-    k = scene["model"]["limiters"][0]["k"]
     w2 = g / R
-    T = 2 * math.pi / Omega
-    times = [n * T for n in range(transient, transient + record + 1)]
-    t_end = times[-1]
 
     def rhs(t, y):
         return [y[1], F0 * math.cos(Omega * t + psi) / (m * R) - w2 * math.sin(y[0])]
@@ -47,6 +45,15 @@ def section(scene, Omega, transient, record, rtol):
         return y[0]
     strike.terminal = True
     strike.direction = -1
+    return rhs, strike, scene["model"]["limiters"][0]["k"]
+
+
+def section(scene, Omega, transient, record, rtol):
+    psi = scene["model"]["pellets"][0].get("psi", 0.0)
+    rhs, strike, k = impact_oscillator(scene, Omega)
+    T = 2 * math.pi / Omega
+    times = [n * T for n in range(transient, transient + record + 1)]
+    t_end = times[-1]
 
     t, y = 0.0, [scene["model"]["pellets"][0]["phi0"], scene["model"]["pellets"][0]["dphi0"]]
     points = []

@@ -15,21 +15,14 @@ import time
 
 from scipy.integrate import solve_ivp
 
+from sweep_scipy import impact_oscillator
+
 ROOT = os.path.dirname(os.path.dirname(os.path.dirname(os.path.abspath(__file__))))
 
 
 def scipy_run(scene, Omega, t_end, rtol):
     p = scene["model"]["pellets"][0]
-    m, R, F0, psi = p["m"], scene["model"]["R"], p["F0"], p.get("psi", 0.0)
-    k, w2 = scene["model"]["limiters"][0]["k"], 9.81 / scene["model"]["R"]
-
-    def rhs(t, y):
-        return [y[1], F0 * math.cos(Omega * t + psi) / (m * R) - w2 * math.sin(y[0])]
-
-    def strike(t, y):
-        return y[0]
-    strike.terminal = True
-    strike.direction = -1
+    rhs, strike, k = impact_oscillator(scene, Omega)
     t, y, steps, nfev = 0.0, [p["phi0"], p["dphi0"]], 0, 0
     started = time.perf_counter()
     while t < t_end:
