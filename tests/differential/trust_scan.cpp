@@ -24,6 +24,7 @@
 #include <iomanip>
 #include <iostream>
 #include <map>
+#include <sstream>
 #include <string>
 #include <thread>
 #include <vector>
@@ -120,6 +121,56 @@ std::vector<Row> check_scene(const RandomScene& scene, long index) {
   return rows;
 }
 
+// Prints one run of a scene beside its shadow and the two references, instant by instant, with
+// the run's trust fields: what --dump's scenes are studied with.
+void show(const RandomScene& scene, Method method, double rtol) {
+  SimOptions ref_options = run_options(scene, Method::dop853, 1e-13);
+  ref_options.atol = 1e-15;
+  ref_options.sample_every_step = true;
+  const RunResult ref = simulate(scene.model, ref_options);
+  ref_options.method = Method::dopri5;
+  const RunResult confirm = simulate(scene.model, ref_options);
+  SimOptions o = run_options(scene, method, rtol);
+  o.atol = rtol * 1e-3;
+  o.check = true;
+  const RunResult run = simulate(scene.model, o);
+  const RunResult shadow = simulate(scene.model, check_options(o));
+  const std::vector<std::vector<Event>> lists = {by_instant(run.events), by_instant(shadow.events),
+                                                 by_instant(ref.events), by_instant(confirm.events)};
+  std::cout << "run " << method_name(method) << " rtol " << rtol << ": event_time_error "
+            << run.stats.event_time_error << " s, trusted until " << run.stats.trusted_until
+            << " of " << run.stats.t_reached << " s; shadow " << run.stats.check_method
+            << "; steps " << run.stats.steps << ", " << shadow.stats.steps << ", " << ref.stats.steps
+            << ", " << confirm.stats.steps << "\n"
+            << "k: run | shadow − run | reference − run | confirmation − reference\n";
+  std::size_t n = 0;
+  for (const auto& l : lists) n = std::max(n, l.size());
+  auto name = [](const Event& e) {
+    std::ostringstream s;
+    s << event_kind_name(e.kind);
+    for (int p : e.pellets) s << " " << p;
+    if (e.limiter >= 0) s << " @" << e.limiter;
+    return s.str();
+  };
+  for (std::size_t k = 0; k < n; ++k) {
+    std::cout << k << ":";
+    const Event* base = k < lists[0].size() ? &lists[0][k] : nullptr;
+    for (std::size_t j = 0; j < lists.size(); ++j) {
+      std::cout << (j ? " | " : " ");
+      if (k >= lists[j].size()) {
+        std::cout << "-";
+        continue;
+      }
+      const Event& e = lists[j][k];
+      const Event* against = j == 3 && k < lists[2].size() ? &lists[2][k] : base;
+      if (j == 0 || !against || !same(e, *against)) std::cout << name(e) << " t=" << std::setprecision(15) << e.t;
+      else std::cout << std::setprecision(3) << e.t - against->t;
+    }
+    std::cout << std::setprecision(6) << "\n";
+  }
+  for (const Warning& w : run.warnings) std::cout << w.message << "\n";
+}
+
 // A run that vouched for a wrong event, or whose estimate fell ten times short of an error that
 // matters.
 bool flagged(const Row& r) {
@@ -138,7 +189,7 @@ int main(int argc, char** argv) {
   long count = 1000, first = 0;
   std::uint64_t seed = 1;
   int jobs = 1;
-  std::string out, dump;
+  std::string out, dump, show_run;
   for (int k = 1; k + 1 < argc; k += 2) {
     const std::string key = argv[k];
     if (key == "--count") count = std::atol(argv[k + 1]);
@@ -147,11 +198,25 @@ int main(int argc, char** argv) {
     else if (key == "--first") first = std::atol(argv[k + 1]);
     else if (key == "--out") out = argv[k + 1];
     else if (key == "--dump") dump = argv[k + 1];
+    else if (key == "--show") show_run = argv[k + 1];
     else {
       std::cerr << "usage: trust_scan --count N [--seed S] [--first I] [--jobs J] [--out runs.csv] "
                    "[--dump DIR]\n";
       return 2;
     }
+  }
+  if (!show_run.empty()) {  // INDEX:METHOD:RTOL
+    const auto a = show_run.find(':'), b = show_run.rfind(':');
+    const std::string name = a == b ? "" : show_run.substr(a + 1, b - a - 1);
+    const Method* method = std::find_if(std::begin(kMethodsChecked), std::end(kMethodsChecked),
+                                        [&](Method m) { return method_name(m) == name; });
+    if (a == std::string::npos || method == std::end(kMethodsChecked)) {
+      std::cerr << "--show INDEX:METHOD:RTOL, e.g. 680:dop853:1e-8\n";
+      return 2;
+    }
+    show(scene_at(seed, std::atol(show_run.substr(0, a).c_str())), *method,
+         std::atof(show_run.substr(b + 1).c_str()));
+    return 0;
   }
   std::vector<std::vector<Row>> results(count);
   std::atomic<long> next{0};
