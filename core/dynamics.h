@@ -22,8 +22,8 @@ double body_mass(const Model& model, const Body& body);
 // Free acceleration of a body at rest at phi: forcing and gravity, no friction.
 double body_free_acceleration(const Model& model, const Body& body, double t, double phi);
 
-// The longest step an integrator may take on this model, s: a third of the slowest swing's
-// period or of a forcing's period.
+// The longest step an integrator may take on this model, s: a radian of the slowest swing or
+// of a forcing (sqrt(R/g), 1/Ω).
 double longest_step(const Model& model);
 
 // The acceleration of a sliding body under the model's friction law, with the model's constants

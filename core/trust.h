@@ -14,11 +14,11 @@
 namespace vibro {
 
 // The shadow's options: the same scene, limits and deadline, nothing recorded, not checked
-// itself; DOPRI5 is checked by DOP853 and Radau IIA by `auto`, at tolerances divided by a hundred;
-// DOP853 by DOPRI5 above rtol 1e-8 and by itself below, at tolerances divided by thirty; `auto`
-// as its explicit method is: weighing DOPRI5 against DOP853 (rtol 1e-6 and looser) by `auto` on
-// DOP853 at a hundredth, on DOP853 by `auto` on DOPRI5 above rtol 1e-8 and by itself below, at
-// a thirtieth (down to the smallest tolerances the integrators accept).
+// itself, at tolerances divided by a hundred (down to the smallest the integrators accept):
+// DOPRI5 checked by DOP853, Radau IIA by `auto`, DOP853 at rtol 1e-8 and below by itself;
+// above rtol 1e-8 DOP853 by DOPRI5 at a thirtieth of rtol and a three-hundredth of atol.
+// `auto` as its explicit method is: weighing DOPRI5 against DOP853 (rtol 1e-6 and looser) by
+// `auto` on DOP853, on DOP853 by `auto` on DOPRI5 above rtol 1e-8 and by itself below.
 SimOptions check_options(const SimOptions& run);
 
 // A run's events instant by instant, as runs are compared: the collisions of one instant as one

@@ -237,10 +237,10 @@ TRUST_TEXT = """\
 Every run is checked against a *shadow*: the same scene at a tighter tolerance, with another
 method where that costs little. DOP853 checks a DOPRI5 run at a hundredth of its tolerances (it
 is the cheaper there), `auto` (an explicit method unless the scene is stiff) checks Radau IIA at
-a hundredth, DOPRI5 checks DOP853 at a thirtieth above rtol 1e-8 (where it costs no more), and
-below that DOP853 checks itself at a thirtieth; `auto` is checked as its explicit method is
-(at loose tolerances, where it weighs DOPRI5 against DOP853 by cost, its shadow is DOP853 at a
-hundredth). Another method errs independently,
+a hundredth, DOPRI5 checks DOP853 above rtol 1e-8 (where it costs no more) at a thirtieth of
+rtol and a three-hundredth of atol, and below that DOP853 checks itself at a hundredth; `auto`
+is checked as its explicit method is (at loose tolerances, where it weighs DOPRI5 against DOP853
+by cost, its shadow is DOP853 at a hundredth). Another method errs independently,
 where the same one at a tighter tolerance can take the very same steps (steps capped by the
 swing or the forcing, or cut short by events, are the same at any tolerance) and then agree
 with itself about a wrong answer (Radau IIA checked by itself agreed with itself through a
@@ -248,8 +248,11 @@ cascade of collisions at 1e-8 rad/s where the explicit methods put an impact 1 m
 shadow must be well ahead of the run whatever the methods' error constants: Radau IIA at rtol
 1e-7 erred as much as DOP853 at 1e-8 on a chaotic scene; DOPRI5 at a tenth of DOP853's rtol 1e-7
 put a collision 3.6e-8 s off, as DOP853 did, where at a thirtieth it erred by 9e-10 s; DOP853
-checked by itself at a tenth shared a 5e-9 s error that at a thirtieth it did not (DOPRI5 at a
-hundredth would cost DOP853 3.3×, over the budget). The two event lists are compared instant by
+checked by itself at a tenth shared a 5e-9 s error that at a thirtieth it did not, and at a
+thirtieth a lucky run's 3.6e-10 s that at a hundredth it did not; DOPRI5 at a thirtieth of
+DOP853's rtol 1e-7 and atol erred as DOP853 did (1.4e-6 s, estimated at 7.9e-8 s) where atol
+held the steps, and at a three-hundredth of atol it did not (DOPRI5 at a hundredth of rtol would
+cost DOP853 3.3×, over the budget). The two event lists are compared instant by
 instant: the collisions of one instant as one collision of all the pellets they involve, the
 impacts on one limiter as one (how a cascade is listed depends on which gaps its instant found
 closed, one collision of three pellets or thirty of alternating pairs; its outcome does not):
@@ -347,7 +350,9 @@ Together they found, and this issue fixed, with each scene kept in a regression 
 | estimates 10× to 700× short where a run and its shadow of one method agreed far better than the tolerance asked and shared the error | the estimate is never below a hundredth of what the tolerance asks |
 | DOP853 stepped over the bilateral law's kink and erred by 200× its tolerance at rtol 1e-12; a reference at rtol 1e-13 put a collision 2e-10 s off | an interval keeps one side of the normal force's zero, so its equations stay smooth up to the normal watch's root |
 | DOP853 accepted a 3.8 ms step under forcing at 741 rad/s on an estimate 5000× below its true error, after rejecting steps three and nine times as long | after a rejection the estimate is no lower than the error model predicts from it |
-| DOP853 took a quarter swing of 1e-6 rad in one step (ωh = 2.75) on an estimate of 0.03 of the tolerance, 7.6e-5 s off at rtol 1e-6 and 1e-7 alike | no step spans more than a third of a swing's or a forcing's period |
+| DOP853 took a quarter swing of 1e-6 rad in one step (ωh = 2.75) on an estimate of 0.03 of the tolerance, 7.6e-5 s off at rtol 1e-6 and 1e-7 alike; held to ωh ≤ 2, in two steps, 3.3e-6 s off at rtol 1e-12 | no step spans more than a radian of a swing or a forcing (ωh ≤ 1: 5e-10 s off) |
+| two pellets turning back 6e-11 s apart: the first reversal found the other at 1.6e-13 rad/s, taken as zero, and only the reversal whose root came first was listed, which each method and tolerance chose otherwise (four scenes of seeds 9–16) | a sliding pellet at zero speed within v_eps at another's reversal, and not going on its way, reverses there too |
+| event times and states taken from each step's dense output, of lower order than the step (DOP853's errs 16 times a step's end): DOP853 took a pellet's flights between its limiter and its turns one step each at every tolerance, and its run and shadow put each turn 1.3e-13 s late alike, 40 times what the references did | the root is corrected by a Newton step on a precise state (one step of the method from the step's start), as Radau IIA's was; runs above what their tolerance asks fell threefold |
 | elastic pellets pressed together bounced 1e-8 s apart and 1e-15 rad high: 13 collisions at one tolerance, 34 at another | pellets that would part by less than the round-off of the gap move on together |
 | a squeeze listed as alternating pair collisions by a run and as one collision of three pellets by its shadow ended the trust; Radau IIA and its DOP853 shadow at a tenth shared a chaotic scene's error | the check compares instant by instant; another method's shadow runs at a hundredth |
 | DOP853 and its shadow (DOPRI5 at a tenth above rtol 1e-8, DOP853 at a tenth below) erred alike: DOPRI5's error constant is often ten times DOP853's, and DOP853 at a tenth took the same steps | DOP853 is checked at a thirtieth; with the scan's truth net of its references' own disagreement (6 of them), estimates ten times short over 160,000 runs went from 24 to 7 |

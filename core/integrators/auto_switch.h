@@ -72,7 +72,6 @@ class AutoSwitch final : public Stepper {
   const Vec& y() const override { return active().y(); }
   void dense(double t, Vec& out) const override { active().dense(t, out); }
   void precise_state(double t, Vec& out) override { active().precise_state(t, out); }
-  bool dense_is_coarse() const override { return active().dense_is_coarse(); }
   const StepperStats& stats() const override;
 
   // True while RADAU5 is (or is about to be) the method.

@@ -62,8 +62,9 @@ class ExplicitRk final : public Stepper {
   void reserve(int n) {
     if (n == n_) return;
     n_ = n;
-    for (Vec* v : {&y_, &f_, &yp_, &fp_, &ytry_, &ftry_}) v->resize(n);
+    for (Vec* v : {&y_, &f_, &yp_, &fp_, &ytry_, &ftry_, &f_precise_}) v->resize(n);
     scheme_.resize(n);
+    precise_.resize(n);
   }
 
   StepStatus step(double t_limit) override {
@@ -92,6 +93,16 @@ class ExplicitRk final : public Stepper {
   }
 
   const StepperStats& stats() const override { return stats_; }
+
+  // One step of the method from the last step's start to t, without error control: the last
+  // step passed it, and a shorter one errs less.
+  void precise_state(double t, Vec& out) override {
+    const double h = t - t_prev_;
+    if (h <= 0.0) return dense(t, out);
+    out.resize(n_);
+    precise_.attempt(*sys_, t_prev_, yp_, fp_, h, tol_, out, f_precise_);
+    stats_.rhs_evals += Scheme::kAttemptEvals;
+  }
 
   // Hairer's stiffness detection has fired (h·ρ beyond the stability boundary in 15 steps); it
   // keeps its history across start(), so short segments between events still add up.
@@ -135,6 +146,7 @@ class ExplicitRk final : public Stepper {
   StiffnessDetector detector_;
   StiffnessDetector near_bound_;
   mutable Scheme scheme_;  // dense() builds the interpolant lazily: most steps never need it
+  Scheme precise_;         // precise_state's step, which keeps scheme_'s stages for dense()
   mutable StepperStats stats_;
   mutable bool dense_ready_ = false;
 
@@ -149,6 +161,7 @@ class ExplicitRk final : public Stepper {
   Vec y_, f_;        // accepted point and f there
   Vec yp_, fp_;      // previous accepted point (start of the last step)
   Vec ytry_, ftry_;  // end of the step being attempted
+  Vec f_precise_;    // f at the end of precise_state's step, if the scheme computes it
 };
 
 template <class Scheme>

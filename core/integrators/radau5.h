@@ -28,7 +28,6 @@ class Radau5 final : public Stepper {
   // (Hairer & Wanner IV.5): a fresh step from the last step's start to t is as accurate as a
   // step's end. It costs a factorisation and a Newton iteration; the driver asks only at events.
   void precise_state(double t, Vec& out) override;
-  bool dense_is_coarse() const override { return true; }
   const StepperStats& stats() const override { return stats_; }
 
   // Continues at (t0, y0) with the first step h0, without an initial step guess: the hand-over

@@ -74,12 +74,16 @@ TEST(AutoMethod, StaysExplicitOnTheNonStiffPresets) {
 }
 
 // Where one explicit method is the cheaper at rtol 1e-6, `auto` runs it: DOPRI5 where a light
-// pellet's collisions keep every interval short (mass-ratio: 1.6 times cheaper than DOP853),
-// DOP853 on forced and smooth flights (1.2 to 2 times cheaper than DOPRI5).
+// pellet's collisions keep every interval short (mass-ratio: 1.6 times cheaper than DOP853) or
+// where events come every few steps (high-frequency: each event's precise state costs DOP853
+// twelve right-hand sides, DOPRI5 six), DOP853 on forced and smooth flights (1.2 to 2 times
+// cheaper than DOPRI5).
 TEST(AutoMethod, WeighsItsExplicitMethodsByCost) {
-  const RunResult light = run_preset("mass-ratio", Method::automatic, 1e-6);
-  EXPECT_GT(light.stats.dopri5_steps, 5 * light.stats.dop853_steps);
-  for (const char* name : {"high-frequency", "impact-oscillator", "grazing", "plastic-limiter"}) {
+  for (const char* name : {"mass-ratio", "high-frequency"}) {
+    const RunResult busy = run_preset(name, Method::automatic, 1e-6);
+    EXPECT_GT(busy.stats.dopri5_steps, 5 * busy.stats.dop853_steps) << name;
+  }
+  for (const char* name : {"impact-oscillator", "grazing", "plastic-limiter"}) {
     const RunResult flight = run_preset(name, Method::automatic, 1e-6);
     EXPECT_GT(flight.stats.dop853_steps, flight.stats.dopri5_steps) << name;
   }

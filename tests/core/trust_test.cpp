@@ -229,13 +229,16 @@ TEST(Trust, EachRunIsCheckedByAnotherMethod) {
   EXPECT_EQ(shadow_of(Method::dop853, 1e-6).method, Method::dopri5);
   EXPECT_EQ(shadow_of(Method::radau5, 1e-6).method, Method::automatic);
   // `auto` on DOP853 (rtol 1e-7 down) is checked by `auto` on DOPRI5 above rtol 1e-8 at a
-  // thirtieth of the tolerance; where it weighs DOPRI5 against DOP853 (rtol 1e-6 up), by `auto`
-  // on DOP853 at a hundredth, a shadow more accurate than either.
+  // thirtieth of rtol and a three-hundredth of atol; where it weighs DOPRI5 against DOP853
+  // (rtol 1e-6 up), by `auto` on DOP853 at a hundredth, a shadow more accurate than either.
   SimOptions s = shadow_of(Method::automatic, 1e-7);
   EXPECT_EQ(s.method, Method::automatic);
   EXPECT_EQ(auto_explicit_for(1e-7), AutoExplicit::dop853);
   EXPECT_EQ(s.auto_explicit, AutoExplicit::dopri5);
   EXPECT_DOUBLE_EQ(s.rtol, 1e-7 / 30);
+  EXPECT_DOUBLE_EQ(s.atol, 1e-9 / 300);
+  EXPECT_DOUBLE_EQ(shadow_of(Method::dop853, 1e-7).rtol, 1e-7 / 30);
+  EXPECT_DOUBLE_EQ(shadow_of(Method::dop853, 1e-7).atol, 1e-9 / 300);
   s = shadow_of(Method::automatic, 1e-6);
   EXPECT_EQ(auto_explicit_for(1e-6), AutoExplicit::dopri5);
   EXPECT_EQ(s.auto_explicit, AutoExplicit::dop853);
@@ -245,8 +248,10 @@ TEST(Trust, EachRunIsCheckedByAnotherMethod) {
                 ->name(),
             "dopri5");
   EXPECT_EQ(shadow_of(Method::automatic, 1e-9).auto_explicit, AutoExplicit::by_tolerance);
-  EXPECT_DOUBLE_EQ(shadow_of(Method::automatic, 1e-9).rtol, 1e-9 / 30);
-  EXPECT_DOUBLE_EQ(shadow_of(Method::dop853, 1e-9).rtol, 1e-9 / 30);
+  EXPECT_DOUBLE_EQ(shadow_of(Method::automatic, 1e-9).rtol, 1e-11);
+  EXPECT_EQ(shadow_of(Method::dop853, 1e-9).method, Method::dop853);
+  EXPECT_DOUBLE_EQ(shadow_of(Method::dop853, 1e-9).rtol, 1e-11);
+  EXPECT_DOUBLE_EQ(shadow_of(Method::dop853, 1e-9).atol, 1e-13);
   EXPECT_DOUBLE_EQ(shadow_of(Method::dopri5, 1e-9).rtol, 1e-11);
 }
 

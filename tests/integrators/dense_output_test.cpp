@@ -92,6 +92,42 @@ TEST_P(IntegratorsDense, InterpolantStartsWithTheRightHandSidesSlope) {
   EXPECT_GT(checked, 5);
 }
 
+// precise_state: the state inside a step as accurate as a step's end, where events are
+// placed. Every method's interpolant is of lower order than its steps. Measured from each
+// step's own start (the exact rotation of the oscillator's state there) at rtol 1e-6, the
+// local error of precise_state inside a step stays below that of the step's end; the
+// interpolant's is 8 (DOPRI5), 41 (DOP853) and 200 (Radau IIA) times larger: DOP853's errs 16
+// times a step's end.
+TEST_P(IntegratorsDense, PreciseStateIsAsAccurateAsAStepsEnd) {
+  const Oscillator sys;
+  StepperOptions o;
+  o.rtol = 1e-6;
+  o.atol = 1e-6;
+  auto s = make_stepper(GetParam(), o);
+  s->start(sys, 0.0, Oscillator::initial());
+  const auto from = [](const Vec& y0, double dt) {  // the exact flow over dt
+    return Vec{{y0[0] * std::cos(dt) + y0[1] * std::sin(dt),
+                y0[1] * std::cos(dt) - y0[0] * std::sin(dt)}};
+  };
+  double end_worst = 0.0, dense_worst = 0.0, precise_worst = 0.0;
+  Vec start(2), out(2);
+  while (s->t() < 10.0) {
+    ASSERT_EQ(s->step(10.0), StepStatus::ok);
+    const double a = s->t_prev(), h = s->t() - a;
+    s->dense(a, start);
+    end_worst = std::max(end_worst, (s->y() - from(start, h)).cwiseAbs().maxCoeff());
+    for (int j = 1; j <= 9; ++j) {
+      const double t = a + h * j / 10.0;
+      s->dense(t, out);
+      dense_worst = std::max(dense_worst, (out - from(start, t - a)).cwiseAbs().maxCoeff());
+      s->precise_state(t, out);
+      precise_worst = std::max(precise_worst, (out - from(start, t - a)).cwiseAbs().maxCoeff());
+    }
+  }
+  EXPECT_LT(precise_worst, end_worst);
+  EXPECT_GT(dense_worst, 3.0 * precise_worst);
+}
+
 INSTANTIATE_TEST_SUITE_P(AllMethods, IntegratorsDense, ::testing::ValuesIn(all_methods()),
                          [](const auto& info) {
                            const std::string_view n = method_name(info.param);
