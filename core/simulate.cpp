@@ -418,7 +418,8 @@ RunResult simulate(const Model& model, const SimOptions& options) {
   }
   SimOptions shadow = check_options(options);
   shadow.deadline_ms = options.deadline_ms - run.stats.wall_ms;  // one deadline for both
-  apply_check(model, Simulation(model, shadow, nullptr).run(), run);
+  const Model perturbed = check_model(model);
+  apply_check(model, Simulation(perturbed, shadow, nullptr).run(), run);
   return run;
 }
 

@@ -250,6 +250,12 @@ SimOptions check_options(const SimOptions& run) {
   return o;
 }
 
+Model check_model(const Model& model) {
+  Model m = model;
+  for (Pellet& p : m.pellets) p.dphi0 *= 1.0 + 64.0 * std::numeric_limits<double>::epsilon();
+  return m;
+}
+
 TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow) {
   TrustReport r;
   const double t_common = std::min(run.stats.t_reached, shadow.stats.t_reached);
