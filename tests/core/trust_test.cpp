@@ -255,5 +255,31 @@ TEST(Trust, EachRunIsCheckedByAnotherMethod) {
   EXPECT_DOUBLE_EQ(shadow_of(Method::dopri5, 1e-9).rtol, 1e-11);
 }
 
+// The shadow's scene is the run's with its speeds a round-off faster: what was at rest stays at
+// rest, angles and forces are the run's; the run itself is not touched.
+TEST(Trust, TheShadowStartsARoundOffFaster) {
+  Model model = testing::one_pellet(0.2, 1.0, 3.0);
+  model.pellets.push_back(model.pellets[0]);
+  model.pellets[1].phi0 = -1.0;
+  model.pellets[1].dphi0 = 0.0;
+  const Model shadow = check_model(model);
+  for (std::size_t i = 0; i < model.pellets.size(); ++i) {
+    EXPECT_EQ(shadow.pellets[i].phi0, model.pellets[i].phi0);
+    EXPECT_EQ(shadow.pellets[i].force.psi, model.pellets[i].force.psi);
+  }
+  EXPECT_EQ(shadow.pellets[1].dphi0, 0.0);
+  EXPECT_GT(shadow.pellets[0].dphi0, 3.0);
+  EXPECT_LE(shadow.pellets[0].dphi0, 3.0 * (1.0 + 1e-13));
+
+  SimOptions o;
+  o.t_end = 1.0;
+  const RunResult checked = simulate(model, o);
+  o.check = false;
+  const RunResult unchecked = simulate(model, o);
+  ASSERT_EQ(checked.events.size(), unchecked.events.size());
+  for (std::size_t k = 0; k < checked.events.size(); ++k)
+    EXPECT_EQ(checked.events[k].t, unchecked.events[k].t);
+}
+
 }  // namespace
 }  // namespace vibro
