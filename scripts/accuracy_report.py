@@ -362,27 +362,38 @@ Together they found, and this issue fixed, with each scene kept in a regression 
 
 What remains: the trust check's blind spot, an error that a run and its shadow share, is narrowed
 (near misses and near-simultaneous impacts end the trust; the trust ends ten errors before the
-runs part; the shadow runs at a thirtieth or a hundredth of the tolerance, with another method
-where that costs little; a spacing the two put apart ends the trust) but not removed. Over trust
-scans of 8000 scenes × 20 runs (seeds 1–8: `trust_scan --count 1000 --seed S --jobs 2 --out
-runs.csv --dump DIR`, which writes each flagged scene as scene JSON), no run vouched for a wrong
-event (2 before the near-simultaneous impact ended the trust), and 6 estimates fell more than ten
-times short of a true error above 1 % of what the tolerance asks (24 before the shadow moved to a
-thirtieth, 7 before reversals kept the step size; 3 runs, each also counted as `auto`'s), all of
-one kind: DOP853 whose DOPRI5 shadow at a thirtieth erred as much as the run, and alike. At
-rtol 1e-7 a run erring by 4.9e-9 s (three quarters of what the tolerance asks) was estimated at
-9.5e-11 s, and one of a scene that amplifies every error (DOPRI5 at rtol 1e-8 errs there by 900
-times what it asks) erring by 1.4e-6 s at 7.9e-8 s; at rtol 1e-8 one erring by 3.6e-10 s at
-3.3e-11 s. DOPRI5 at a thirtieth of DOP853's tolerance errs within a factor of three of DOP853 on
-such scenes, so the two errors sometimes cancel in their difference; a shadow far more accurate
-(DOPRI5 at a hundredth) would cost DOP853 over 3×, and DOP853 checking itself at a thirtieth left
-15 estimates short instead of 7 (run and shadow taking the same capped steps). A floor under the
-estimate does not help either: at a tenth of what the tolerance asks it leaves 4 of the 6 and
-raises the median over-estimate from 1.1 to 8.6. The share of runs trusted to their end went
-from 99.25 % to 98.54 % (near-simultaneous impacts 0.2 %, grazing strikes 0.5 %), and the runs
-whose true error within their trust exceeds what their tolerance asks from 6,340 to 6,163. The
-scan counts a true error net of its two references' own difference (DOP853 and DOPRI5 at rtol
-1e-13 put an impact of a chaotic scene 7e-8 s apart: an error below that is not known).
+runs part; event times have the steps' accuracy; the shadow runs at a hundredth of the tolerance,
+or with another method at a thirtieth where that costs little, from speeds 64 ulps apart so that
+the two never round alike; a spacing the two put apart ends the trust) but not removed. Over
+trust scans of 32,000 scenes × 20 runs (seeds 1–32: `trust_scan --count 1000 --seed S --jobs 2
+--out runs.csv --dump DIR`, which writes each flagged scene as scene JSON; `trust_scan --seed S
+--show I:METHOD:RTOL` prints one run beside its shadow and both references, event by event), 21
+estimates fell more than ten times short of a true error above 1 % of what the tolerance asks (45
+with the check and event core as they were before, over the same seeds), and 9 runs vouched for
+events that the references list otherwise (12 before), in 4 scenes. 11 of the 21 and 3 of the 9
+are one chaotic scene (seed 10, scene 71): a pellet bouncing on its limiter between the impacts of
+a four-pellet chain, where every method and tolerance (down to rtol 1e-14) scatters an impact at
+t = 1 ms by 1.5e-12 s and the chain amplifies that a millionfold by 4 ms; its two references
+agree with each other better than either agrees with the truth, so the scan's truth there is
+itself uncertain. The others are chaotic chains of hundreds to thousands of impacts, a shadow
+whose error matched the run's and cancelled in the difference (DOP853 checked by DOPRI5 at rtol
+1e-6 and 1e-7), and Radau IIA on pellets co-moving 1e-9 rad apart for 68 ms before they touch
+again at 4e-7 rad/s (a gap that never turns, so no near-miss test sees it). The runs whose true
+error within their trust exceeds what their tolerance asks went from 24,860 to 8,159 (the event
+times on the steps' accuracy; 23,274 with the shorter steps alone), the share trusted to their
+end from 98.39 % to 98.46 %, and the median over-estimate is 2.45 (1.05 before: the runs are
+more accurate, their shadows' differences less so). The check costs a median 2.26× the bare run
+for DOP853 and `auto`, 2.09× for DOPRI5, 1.28× for Radau IIA. The scan counts a true error net of
+its two references' own difference (DOP853 and DOPRI5 at rtol 1e-13 put an impact of a chaotic
+scene 7e-8 s apart: an error below that is not known), and a run's events only up to the first
+its references list otherwise.
+
+Tried over the same scans and not landed: a shadow started from a model perturbed by a tenth of
+the tolerance (R·(1 + rtol/10)), to show how a scene amplifies errors where run and shadow take
+the same steps: its systematic shift of the event times cancelled runs' errors of the same size,
+and estimates ten times short rose to 44 (272 at a third of the tolerance). A shadow with its
+angles 16 ulps apart broke equilibria (a pellet at rest at the bottom turned at 7e-14 s) and
+2.4 % of the runs lost their trust; with the forcing's phase moved too, 1 %.
 
 ### A speed cut judged by the scan: a reversal keeps the step size
 
