@@ -78,25 +78,40 @@ Agreement agreement(const RunResult& a, const RunResult& b) {
 
 bool complete(const RunResult& r) { return r.stats.termination == Termination::completed; }
 
+// The reference, DOP853 at rtol 1e-13, and its confirmation, DOPRI5 at the same tolerance; both
+// search every step's inside at its samples, whatever a run skips.
+struct References {
+  RunResult ref, confirm;
+};
+References references(const RandomScene& scene) {
+  SimOptions o = run_options(scene, Method::dop853, 1e-13);
+  o.atol = 1e-15;
+  o.sample_every_step = true;
+  References r;
+  r.ref = simulate(scene.model, o);
+  o.method = Method::dopri5;
+  r.confirm = simulate(scene.model, o);
+  return r;
+}
+
+// A run as the scan makes it: checked, atol a thousandth of rtol.
+SimOptions checked_run(const RandomScene& scene, Method method, double rtol) {
+  SimOptions o = run_options(scene, method, rtol);
+  o.atol = rtol * 1e-3;
+  o.check = true;
+  return o;
+}
+
 std::vector<Row> check_scene(const RandomScene& scene, long index) {
   std::vector<Row> rows;
   if (validate_model(scene.model)) return rows;
-  SimOptions ref_options = run_options(scene, Method::dop853, 1e-13);
-  ref_options.atol = 1e-15;
-  // The references search every step's inside at its samples, whatever a run skips.
-  ref_options.sample_every_step = true;
-  const RunResult ref = simulate(scene.model, ref_options);
-  ref_options.method = Method::dopri5;
-  const RunResult confirm = simulate(scene.model, ref_options);
+  const auto [ref, confirm] = references(scene);
   if (!complete(ref) || !complete(confirm)) return rows;
   const Agreement refs = agreement(ref, confirm);
   const std::vector<Event> truth = by_instant(ref.events), confirmed = by_instant(confirm.events);
   for (Method m : kMethodsChecked) {
     for (double rtol : kRtols) {
-      SimOptions o = run_options(scene, m, rtol);
-      o.atol = rtol * 1e-3;
-      o.check = true;
-      const RunResult run = simulate(scene.model, o);
+      const RunResult run = simulate(scene.model, checked_run(scene, m, rtol));
       if (!complete(run)) continue;
       Row r;
       r.scene = index;
@@ -133,15 +148,8 @@ std::vector<Row> check_scene(const RandomScene& scene, long index) {
 // Prints one run of a scene beside its shadow and the two references, instant by instant, with
 // the run's trust fields: what --dump's scenes are studied with.
 void show(const RandomScene& scene, Method method, double rtol) {
-  SimOptions ref_options = run_options(scene, Method::dop853, 1e-13);
-  ref_options.atol = 1e-15;
-  ref_options.sample_every_step = true;
-  const RunResult ref = simulate(scene.model, ref_options);
-  ref_options.method = Method::dopri5;
-  const RunResult confirm = simulate(scene.model, ref_options);
-  SimOptions o = run_options(scene, method, rtol);
-  o.atol = rtol * 1e-3;
-  o.check = true;
+  const auto [ref, confirm] = references(scene);
+  const SimOptions o = checked_run(scene, method, rtol);
   const RunResult run = simulate(scene.model, o);
   const RunResult shadow = simulate(check_model(scene.model), check_options(o));
   const std::vector<std::vector<Event>> lists = {by_instant(run.events), by_instant(shadow.events),
