@@ -271,11 +271,13 @@ void set_mode(Body& body, double v, const Support& support, double a_free, doubl
 // A sliding pellet that no impact touched, whose speed at the instant is within v_eps of zero
 // and that does not go on the way it went, reaches zero speed here: another body's reversal
 // 6e-11 s before its own found it at 1.6e-13 rad/s, and a run listed the one reversal or the
-// other as the step sequence had it.
+// other as the step sequence had it. Its speed may have turned already (its root just before
+// the instant, which was put a little late): a run going on with it its new way listed the
+// reversal nowhere.
 bool snapped_to_a_halt(const Body& held, double v, bool touched, const Body& now,
                        const EventTolerances& tol) {
   if (held.mode != Mode::sliding || touched || v == 0.0 || std::abs(v) > tol.v_eps) return false;
-  return now.mode != Mode::sliding || now.s != (v > 0.0 ? 1 : -1);
+  return now.mode != Mode::sliding || now.s != held.s;
 }
 
 }  // namespace
