@@ -19,6 +19,9 @@ struct SimOptions {
   // Check the run against a shadow solution at tighter tolerances (core/trust.h); off,
   // the trust fields come from the run alone and cannot see event-time errors.
   bool check = true;
+  // The longest step, as a share of longest_step(model) (core/dynamics.h): the check's shadow
+  // takes shorter ones, so that where that bound holds the steps it does not share the run's.
+  double longest_step_scale = 1.0;
 
   // Every run ends: these bound its work.
   long max_events = 200000;

@@ -53,7 +53,8 @@ class Simulation {
         stepper_(stepper ? std::move(stepper)
                          : make_stepper(options.method,
                                         StepperOptions{options.rtol, options.atol,
-                                                       longest_step(model),
+                                                       options.longest_step_scale *
+                                                           longest_step(model),
                                                        options.auto_explicit})),
         times_(std::max(options.samples_per_step, 2) + 1),
         states_(times_.size(), Vec(y_.size())) {}

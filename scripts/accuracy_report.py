@@ -234,25 +234,23 @@ def extremes():
 
 
 TRUST_TEXT = """\
-Every run is checked against a *shadow*: the same scene at a tighter tolerance, with another
-method where that costs little. DOP853 checks a DOPRI5 run at a hundredth of its tolerances (it
-is the cheaper there), `auto` (an explicit method unless the scene is stiff) checks Radau IIA at
-a hundredth, DOPRI5 checks DOP853 above rtol 1e-8 (where it costs no more) at a thirtieth of
-rtol and a three-hundredth of atol, and below that DOP853 checks itself at a hundredth; `auto`
-is checked as its explicit method is (at loose tolerances, where it weighs DOPRI5 against DOP853
-by cost, its shadow is DOP853 at a hundredth). Another method errs independently,
-where the same one at a tighter tolerance can take the very same steps (steps capped by the
-swing or the forcing, or cut short by events, are the same at any tolerance) and then agree
-with itself about a wrong answer (Radau IIA checked by itself agreed with itself through a
-cascade of collisions at 1e-8 rad/s where the explicit methods put an impact 1 ms away). The
-shadow must be well ahead of the run whatever the methods' error constants: Radau IIA at rtol
-1e-7 erred as much as DOP853 at 1e-8 on a chaotic scene; DOPRI5 at a tenth of DOP853's rtol 1e-7
-put a collision 3.6e-8 s off, as DOP853 did, where at a thirtieth it erred by 9e-10 s; DOP853
-checked by itself at a tenth shared a 5e-9 s error that at a thirtieth it did not, and at a
-thirtieth a lucky run's 3.6e-10 s that at a hundredth it did not; DOPRI5 at a thirtieth of
-DOP853's rtol 1e-7 and atol erred as DOP853 did (1.4e-6 s, estimated at 7.9e-8 s) where atol
-held the steps, and at a three-hundredth of atol it did not (DOPRI5 at a hundredth of rtol would
-cost DOP853 3.3×, over the budget). The two event lists are compared instant by
+Every run is checked against a *shadow*: the same scene at a hundredth of both tolerances, with
+its longest step halved, and with another method where the same one errs alike at any
+tolerance. DOP853 checks a DOPRI5 run (it is the cheaper at the tighter tolerance), `auto` (an
+explicit method unless the scene is stiff) checks Radau IIA, DOP853 checks itself, and `auto` is
+checked by `auto` on DOP853 (at loose tolerances, where `auto` weighs DOPRI5 against DOP853 by
+cost, that is more accurate than either). Radau IIA checked by itself agreed with itself through
+a cascade of collisions at 1e-8 rad/s where the explicit methods put an impact 1 ms away; DOPRI5
+checking DOP853 (at a thirtieth of rtol, which cost what DOP853 at a hundredth does) erred as
+much as DOP853 and cancelled its error (3e-3 s estimated at 1.1e-4 s). Steps capped by the
+swing or the forcing (no step spans more than a radian of either, `sqrt(R/g)` and `1/Ω`) are the
+same at any tolerance, so a shadow capped alike shared them and their error: DOP853 at rtol 1e-6
+and its shadow at 1e-8 took the same 280 steps of `1/Ω`, and a chain of collisions amplified
+their common error to 1.6e-7 s, estimated at 6.7e-10 s. Halved, a capped step of DOP853 errs 2⁹
+times less (2⁶ for DOPRI5). The shadow must be well ahead of the run whatever luck a run has:
+at a tenth of the tolerance Radau IIA's shadow erred as much as the run on a chaotic scene, and
+at a thirtieth DOP853's shared a lucky run's 3.6e-10 s error that at a hundredth it did not.
+The two event lists are compared instant by
 instant: the collisions of one instant as one collision of all the pellets they involve, the
 impacts on one limiter as one (how a cascade is listed depends on which gaps its instant found
 closed, one collision of three pellets or thirty of alternating pairs; its outcome does not):
@@ -287,11 +285,10 @@ the run's error without a model of how errors propagate through impacts, stickin
 a sequence that changes: a grazing impact, a stick test at its threshold). The shadow sees both.
 Its blind spot is an error the run and its shadow share: the same method's bias on an
 ill-conditioned decision. The differential tests below count how often that happens. Why a
-thirtieth and a hundredth: the shadow then costs little more than the run (a tolerance divided
-by `q` costs `q^(1/(p+1))` times the steps of a method of order p: 1.46× for DOP853 at a
-thirtieth; DOP853 at a hundredth of DOPRI5's tolerance takes fewer steps than DOPRI5 itself, and
-events cost the same in both), and the estimate errs by a few percent where the error constants
-are alike. `"solver": {"check":
+hundredth: a tolerance divided by `q` costs `q^(1/(p+1))` times the steps of a method of order p
+(1.67× for DOP853; DOP853 at a hundredth of DOPRI5's tolerance takes fewer steps than DOPRI5
+itself), events cost the same in both, and the estimate errs by a few percent where the error
+constants are alike. `"solver": {"check":
 false}` turns it off: the trust fields then come from the consistency checks alone and
 `stats.check` is false."""
 
@@ -359,34 +356,42 @@ Together they found, and this issue fixed, with each scene kept in a regression 
 | a chaotic run at rtol 1e-7 and its shadow put a turn and an impact 5.7e-7 s and 6.9e-6 s apart, each within what the tolerance explains; a reference listed them the other way round | a spacing the two put more than a tenth apart ends the trust |
 | the grazing preset struck its limiter at 2.5e-4 rad/s at rtol 1e-8 (3e-9 rad short of where it would have turned), its shadow alike, where rtol 1e-9 and a reference turned away; the trust went on 1.5 s | a strike that would have turned within its error past the limiter is a near miss too |
 | a pellet squeezed between two others was closed on from both sides at one instant; DOP853 at rtol 1e-8 and its shadow resolved the two collisions in one order, a reference in the other, and the run vouched for the wrong events after it (the last wrong events vouched for in 160,000 runs) | a near-simultaneous impact ends the trust |
+| DOP853 at rtol 1e-6 and its shadow at 1e-8 took the same 280 steps (each the longest allowed, `1/Ω`), and a chain of collisions amplified their common error to 1.6e-7 s, estimated at 6.7e-10 s; DOPRI5 checking DOP853 at a thirtieth of rtol erred as much as DOP853 and cancelled its error (3e-3 s, estimated at 1.1e-4 s) | the shadow's longest step is half the run's, and DOP853 checks itself at a hundredth at every tolerance: estimates ten times short over 640,000 runs went from 21 to 17, at the same cost |
+| at another pellet's reversal, put a little late, a pellet whose speed had just turned (within v_eps, going its new way) was not listed as reversing: Radau IIA at rtol 1e-8 listed one of two simultaneous turns and vouched for it (seeds 15 and 30) | a sliding pellet at zero speed within v_eps that does not go on the way it went during the interval reverses there |
 
 What remains: the trust check's blind spot, an error that a run and its shadow share, is narrowed
 (near misses and near-simultaneous impacts end the trust; the trust ends ten errors before the
-runs part; event times have the steps' accuracy; the shadow runs at a hundredth of the tolerance,
-or with another method at a thirtieth where that costs little, from speeds 64 ulps apart so that
-the two never round alike; a spacing the two put apart ends the trust) but not removed. Over
-trust scans of 32,000 scenes × 20 runs (seeds 1–32: `trust_scan --count 1000 --seed S --jobs 2
---out runs.csv --dump DIR`, which writes each flagged scene as scene JSON; `trust_scan --seed S
---show I:METHOD:RTOL` prints one run beside its shadow and both references, event by event), 21
-estimates fell more than ten times short of a true error above 1 % of what the tolerance asks (45
-with the check and event core as they were before, over the same seeds), and 9 runs vouched for
-events that the references list otherwise (12 before), in 4 scenes. 11 of the 21 and 3 of the 9
-are one chaotic scene (seed 10, scene 71): a pellet bouncing on its limiter between the impacts of
-a four-pellet chain, where every method and tolerance (down to rtol 1e-14) scatters an impact at
-t = 1 ms by 1.5e-12 s and the chain amplifies that a millionfold by 4 ms; its two references
-agree with each other better than either agrees with the truth, so the scan's truth there is
-itself uncertain. The others are chaotic chains of hundreds to thousands of impacts, a shadow
-whose error matched the run's and cancelled in the difference (DOP853 checked by DOPRI5 at rtol
-1e-6 and 1e-7), and Radau IIA on pellets co-moving 1e-9 rad apart for 68 ms before they touch
-again at 4e-7 rad/s (a gap that never turns, so no near-miss test sees it). The runs whose true
-error within their trust exceeds what their tolerance asks went from 24,860 to 8,159 (the event
-times on the steps' accuracy; 23,274 with the shorter steps alone), the share trusted to their
-end from 98.39 % to 98.46 %, and the median over-estimate is 2.45 (1.05 before: the runs are
-more accurate, their shadows' differences less so). The check costs a median 2.26× the bare run
-for DOP853 and `auto`, 2.09× for DOPRI5, 1.28× for Radau IIA. The scan counts a true error net of
-its two references' own difference (DOP853 and DOPRI5 at rtol 1e-13 put an impact of a chaotic
-scene 7e-8 s apart: an error below that is not known), and a run's events only up to the first
-its references list otherwise.
+runs part; event times have the steps' accuracy; the shadow runs at a hundredth of the tolerance
+with its longest step halved, with another method where one method errs alike, from speeds 64
+ulps apart so that the two never round alike; a spacing the two put apart ends the trust) but
+not removed. Over trust scans of 32,000 scenes × 20 runs (seeds 1–32: `trust_scan --count 1000
+--seed S --jobs 2 --out runs.csv --dump DIR`, which writes each flagged scene as scene JSON;
+`trust_scan --seed S --show I:METHOD:RTOL` prints one run beside its shadow and both references,
+event by event), 17 estimates fell more than ten times short of a true error above 1 % of what
+the tolerance asks (45 with the check and event core as they were before 2026-11-24, 21 before
+the shadow's halved step), and 11 runs vouched for events that the references list otherwise (12
+before, 9 before the halved step), in 4 scenes. 10 of the 17 and 5 of the 11 are one chaotic
+scene (seed 10, scene 71): a pellet bouncing on its limiter between the impacts of a four-pellet
+chain, where every method and tolerance (down to rtol 1e-14) scatters an impact at t = 1 ms by
+1.5e-12 s and the chain amplifies that a millionfold by 4 ms; its two references agree with each
+other better than either agrees with the truth, so the scan's truth there is itself uncertain.
+Of the other short estimates, 6 are in chaotic chains of 400 to 10,000 impacts (seeds 11, 19,
+31; in one an elastic pair chatters between a mobile limiter and a forced pellet, run and shadow
+agree to 1e-19 s while the references part from both by 1e-11 s after seven impacts: round-off
+both share, from pellets at rest, amplified by the chain), and one is a run at round-off
+(2.2e-12 s, half what rtol 1e-10 asks, estimated at 1.1e-13 s). The other wrong events vouched
+for are two chaotic chains (seeds 11 and 21, 250 and 13,000 impacts) and Radau IIA on pellets
+co-moving 1e-9 rad apart for 68 ms before they touch again at 4e-7 rad/s (a gap that never turns,
+so no near-miss test sees it). near-miss test sees it). The runs whose true error within their trust exceeds what their
+tolerance asks went from 24,860 to 8,164 (the event times on the steps' accuracy; 23,274 with the
+shorter steps alone), the share trusted to their end from 98.39 % to 98.47 %, and the median
+over-estimate is 2.43 (1.05 before: the runs are more accurate, their shadows' differences less
+so; DOP853 at rtol 1e-6 over-estimates by a median 75×, held up by the floor of a hundredth of
+what the tolerance asks). The check costs a median 2.25× the bare run for DOP853 and `auto`,
+2.11× for DOPRI5, 1.31× for Radau IIA. The scan counts a true error net of its two references'
+own difference (DOP853 and DOPRI5 at rtol 1e-13 put an impact of a chaotic scene 7e-8 s apart: an
+error below that is not known), and a run's events only up to the first its references list
+otherwise.
 
 Tried over the same scans and not landed: a shadow started from a model perturbed by a tenth of
 the tolerance (R·(1 + rtol/10)), to show how a scene amplifies errors where run and shadow take
@@ -453,8 +458,8 @@ def main():
         "## What the error numbers mean",
         "",
         "- **The trust fields** (`stats.event_time_error`, `stats.state_error`, `stats.trusted_until`, in",
-        "  every result) come from a shadow run of the same scene at a thirtieth or a hundredth of the",
-        "  tolerance, compared event by event (below, *The trust check*).",
+        "  every result) come from a shadow run of the same scene at a hundredth of the tolerance,",
+        "  compared event by event (below, *The trust check*).",
         "- **The consistency checks**: the energy-balance defect `|E(t) − E(0) − W_force − W_friction −",
         "  impact losses|` over the energy scale, and the residual of the exact first integral of MODEL.md",
         "  on unforced paper-law intervals. Both vanish for the exact solution; both are measured at every",
