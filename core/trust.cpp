@@ -243,7 +243,11 @@ SimOptions check_options(const SimOptions& run) {
 
 Model check_model(const Model& model) {
   Model m = model;
-  for (Pellet& p : m.pellets) p.dphi0 *= 1.0 + 64.0 * std::numeric_limits<double>::epsilon();
+  const double ulps = 64.0 * std::numeric_limits<double>::epsilon();
+  for (Pellet& p : m.pellets) {
+    if (p.dphi0 != 0.0) p.phi0 += ulps * (1.0 + std::abs(p.phi0));
+    p.dphi0 *= 1.0 + ulps;
+  }
   return m;
 }
 

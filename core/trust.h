@@ -21,16 +21,21 @@ namespace vibro {
 // `auto` on DOP853, on DOP853 by `auto` on DOPRI5 above rtol 1e-8 and by itself below.
 SimOptions check_options(const SimOptions& run);
 
-// The shadow's scene: the run's, its initial speeds 64 ulps faster. Where the run and its shadow
-// take the same steps (flights cut short by events, one step each at any tolerance), they round
-// alike and agree about what round-off, amplified by a chaotic chain of impacts, has already
-// moved (trust scan seed 7, scene 534: DOP853 at rtol 1e-10 and its shadow vouched for a turn
-// where a reference listed a collision; now their trust ends before). Rest stays rest, contacts stay
-// contacts, and the shadow's answer moves by round-off where the scene does not amplify it. Over
-// trust_scan seeds 1-32 (640,000 runs) estimates ten times short went from 25 to 21 and wrong
-// events vouched for from 14 to 10, with the share trusted to the end unchanged (98.46 %); moving
-// the angles instead broke equilibria (a pellet at rest at the bottom turned at 7e-14 s: 2.4 %
-// of the runs lost their trust), and moving the forcing's phase too cost 1 %.
+// The shadow's scene: the run's, its initial speeds 64 ulps faster and the angles of the pellets
+// that move 64 ulps ahead. Where the run and its shadow take the same steps (flights cut short by
+// events, one step each at any tolerance), they round alike and agree about what round-off,
+// amplified by a chaotic chain of impacts, has already moved (trust scan seed 7, scene 534:
+// DOP853 at rtol 1e-10 and its shadow vouched for a turn where a reference listed a collision;
+// now their trust ends before). Speeds alone do not move a chain that starts at once: a pellet
+// 2e-9 rad from its limiter at 41 rad/s struck it at 4.8e-11 s, 64 ulps faster 7e-25 s sooner,
+// and the run and its shadow then agreed to 1e-22 s through 50 impacts whose round-off (1e-15 s)
+// a chaotic cascade amplified to 4e-7 s by 4 ms, estimated at 2.6e-8 s (seed 10, scene 71). Rest
+// stays rest, contacts stay contacts, and the shadow's answer moves by round-off where the scene
+// does not amplify it. Over trust_scan seeds 1-32 (640,000 runs) the angles took the estimates
+// ten times short from 24 to 13 and the wrong events vouched for from 8 to 4, with the share
+// trusted to the end unchanged (98.49 %). Moving the angles of pellets at rest too broke
+// equilibria (a pellet at rest at the bottom turned at 7e-14 s: 2.4 % of the runs lost their
+// trust), and moving the forcing's phase cost 1 %.
 Model check_model(const Model& model);
 
 // A run's events instant by instant, as runs are compared: the collisions of one instant as one
