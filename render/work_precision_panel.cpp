@@ -102,19 +102,33 @@ void draw_work_precision_panel(cairo_t* cr, const PanelInput& in) {
     draw_markers(cr, odd, MarkerShape::diamond, style.px(6.0), {1, 1, 1, 1}, kInk, style.px(1.0));
     diverged = diverged || !odd.empty();
     // The loosest and tightest tolerance at the ends of each line, unless another line's
-    // label already sits there (auto often runs exactly as dop853 does).
+    // label already sits there (auto often runs exactly as dop853 does): beside the point, else
+    // above, below or before it, wherever the label overlaps no other (radau5 and auto ended a
+    // hair apart on the stiff-friction scene, their labels on top of each other).
     set_font(cr, style.note_font());
     for (const auto& [point, rtol] : {std::pair{px.front(), points.front()->rtol},
                                       std::pair{px.back(), points.back()->rtol}}) {
-      const Point at{point.x + style.px(6), point.y};
       const std::string text = "rtol " + decade_label(static_cast<int>(std::lround(std::log10(rtol))));
-      const Rect box = text_box(cr, text, at, {HAlign::left, VAlign::middle});
+      const double gap = style.px(6);
+      const std::pair<Point, TextAlign> spots[] = {
+          {{point.x + gap, point.y}, {HAlign::left, VAlign::middle}},
+          {{point.x + gap, point.y - gap}, {HAlign::left, VAlign::bottom}},
+          {{point.x + gap, point.y + gap}, {HAlign::left, VAlign::top}},
+          {{point.x - gap, point.y}, {HAlign::right, VAlign::middle}}};
+      const Rect beside = text_box(cr, text, spots[0].first, spots[0].second);
       const bool taken = std::any_of(avoid.boxes.begin(), avoid.boxes.end(), [&](const Rect& b) {
-        return std::abs(b.x - box.x) < style.px(12) && std::abs(b.y - box.y) < style.px(8);
+        return std::abs(b.x - beside.x) < style.px(12) && std::abs(b.y - beside.y) < style.px(8);
       });
       if (taken) continue;
-      draw_text(cr, text, at, {HAlign::left, VAlign::middle}, c);
-      avoid.boxes.push_back(box);
+      for (const auto& [at, align] : spots) {
+        const Rect box = text_box(cr, text, at, align);
+        const bool clear = std::none_of(avoid.boxes.begin(), avoid.boxes.end(),
+                                        [&](const Rect& b) { return b.overlaps(box); });
+        if (!clear) continue;
+        draw_text(cr, text, at, align, c);
+        avoid.boxes.push_back(box);
+        break;
+      }
     }
     avoid.lines.push_back(px);
     legend.push_back({std::string(method_name(method)), c, Swatch::line});
