@@ -88,6 +88,14 @@ void draw_work_precision_panel(cairo_t* cr, const PanelInput& in) {
   std::vector<LegendEntry> legend;
   std::size_t colour = 0;
   bool diverged = false;
+  // The loosest and tightest tolerance at the ends of each line, placed once every line is drawn.
+  struct EndLabel {
+    Point point;
+    std::string text;
+    Colour colour;
+  };
+  std::vector<EndLabel> ends;
+  const double marker = style.px(3.5);
   for (const auto& [method, points] : lines) {
     const Colour c = series_colour(colour++);
     std::vector<Point> px, odd;
@@ -98,40 +106,47 @@ void draw_work_precision_panel(cairo_t* cr, const PanelInput& in) {
     set_colour(cr, c);
     cairo_set_line_width(cr, style.curve_width());
     stroke_polyline(cr, px);
-    draw_markers(cr, px, MarkerShape::circle, style.px(3.5), c, c, 0.0);
+    draw_markers(cr, px, MarkerShape::circle, marker, c, c, 0.0);
     draw_markers(cr, odd, MarkerShape::diamond, style.px(6.0), {1, 1, 1, 1}, kInk, style.px(1.0));
     diverged = diverged || !odd.empty();
-    // The loosest and tightest tolerance at the ends of each line, unless another line's
-    // label already sits there (auto often runs exactly as dop853 does): beside the point, else
-    // above, below or before it, wherever the label overlaps no other (radau5 and auto ended a
-    // hair apart on the stiff-friction scene, their labels on top of each other).
-    set_font(cr, style.note_font());
     for (const auto& [point, rtol] : {std::pair{px.front(), points.front()->rtol},
-                                      std::pair{px.back(), points.back()->rtol}}) {
-      const std::string text = "rtol " + decade_label(static_cast<int>(std::lround(std::log10(rtol))));
-      const double gap = style.px(6);
-      const std::pair<Point, TextAlign> spots[] = {
-          {{point.x + gap, point.y}, {HAlign::left, VAlign::middle}},
-          {{point.x + gap, point.y - gap}, {HAlign::left, VAlign::bottom}},
-          {{point.x + gap, point.y + gap}, {HAlign::left, VAlign::top}},
-          {{point.x - gap, point.y}, {HAlign::right, VAlign::middle}}};
-      const Rect beside = text_box(cr, text, spots[0].first, spots[0].second);
-      const bool taken = std::any_of(avoid.boxes.begin(), avoid.boxes.end(), [&](const Rect& b) {
-        return std::abs(b.x - beside.x) < style.px(12) && std::abs(b.y - beside.y) < style.px(8);
-      });
-      if (taken) continue;
-      for (const auto& [at, align] : spots) {
-        const Rect box = text_box(cr, text, at, align);
-        const bool clear = std::none_of(avoid.boxes.begin(), avoid.boxes.end(),
-                                        [&](const Rect& b) { return b.overlaps(box); });
-        if (!clear) continue;
-        draw_text(cr, text, at, align, c);
-        avoid.boxes.push_back(box);
-        break;
-      }
-    }
+                                      std::pair{px.back(), points.back()->rtol}})
+      ends.push_back({point, "rtol " + decade_label(static_cast<int>(std::lround(std::log10(rtol)))), c});
     avoid.lines.push_back(px);
     legend.push_back({std::string(method_name(method)), c, Swatch::line});
+  }
+  // Each end label beside its point, else above, below or before it, wherever it covers no
+  // other label and no marker (radau5's and auto's rtol 1e-12 labels lay on top of each other
+  // on the stiff-friction scene, and later lines' markers on earlier lines' labels on the
+  // chatter scene); none where another line's label already sits (auto often runs exactly as
+  // dop853 does).
+  std::vector<Rect> markers;
+  for (const std::vector<Point>& line : avoid.lines)
+    for (const Point& q : line) markers.push_back({q.x - marker, q.y - marker, 2 * marker, 2 * marker});
+  set_font(cr, style.note_font());
+  for (const EndLabel& end : ends) {
+    const double gap = style.px(6);
+    const Point& point = end.point;
+    const std::pair<Point, TextAlign> spots[] = {
+        {{point.x + gap, point.y}, {HAlign::left, VAlign::middle}},
+        {{point.x + gap, point.y - gap}, {HAlign::left, VAlign::bottom}},
+        {{point.x + gap, point.y + gap}, {HAlign::left, VAlign::top}},
+        {{point.x - gap, point.y}, {HAlign::right, VAlign::middle}}};
+    const Rect beside = text_box(cr, end.text, spots[0].first, spots[0].second);
+    const bool taken = std::any_of(avoid.boxes.begin(), avoid.boxes.end(), [&](const Rect& b) {
+      return std::abs(b.x - beside.x) < style.px(12) && std::abs(b.y - beside.y) < style.px(8);
+    });
+    if (taken) continue;
+    for (const auto& [at, align] : spots) {
+      const Rect box = text_box(cr, end.text, at, align);
+      const auto covers = [&](const Rect& b) { return b.overlaps(box); };
+      if (std::any_of(avoid.boxes.begin(), avoid.boxes.end(), covers) ||
+          std::any_of(markers.begin(), markers.end(), covers))
+        continue;
+      draw_text(cr, end.text, at, align, end.colour);
+      avoid.boxes.push_back(box);
+      break;
+    }
   }
   if (diverged) {
     legend.push_back({"events differ from the reference", kInk, Swatch::marker,
