@@ -372,34 +372,56 @@ ahead (speeds 64 ulps faster, moving pellets 64 ulps on) so that the two never r
 spacing the two put apart ends the trust) but not removed. Over trust scans of 32,000 scenes × 20
 runs (seeds 1–32: `trust_scan --count 1000 --seed S --jobs 2 --out runs.csv --dump DIR`, which
 writes each flagged scene as scene JSON; `trust_scan --seed S --show I:METHOD:RTOL` prints one
-run beside its shadow and both references, event by event), 13 estimates fell more than ten times
-short of a true error above 1 % of what the tolerance asks (45 with the check and event core as
-they were before 2026-11-24, 21 at the start of the session of 2026-11-24 (later)), and 2 runs
-vouched for events that the references list otherwise (12 and 9 then), both in one scene. Of the
-13, 7 are in chains of collisions that amplify an error tenfold or more per impact, over 400 to
-8,000 impacts or over ten (seeds 11, 16, 17, 18, 28), where a run and its shadow agree about an
-error the references do not share; in one the two share an error that grows twentyfold per
-cycle from a pellet's stick (seed 20, scene 657, Radau IIA at rtol 1e-8: 6.4e-9 s estimated at
-5e-11 s); five are runs of DOP853 (and `auto` on it) whose error grows along a chain of 38 to 90
-impacts, with their shadows 16 to 63 times closer than the references (seeds 2, 5, 10). The 2 wrong
-events vouched for are a chaotic chain of 258 impacts (seed 11, scene 599, DOP853 at rtol 1e-8,
-whose estimate, 4.4e-6 s, is 3 times short). The runs whose true error within their trust exceeds
-what their tolerance asks went from 24,860 to 7,824 (the event times on the steps' accuracy and
-their polish), the share trusted to their end from 98.39 % to 98.49 %, and the median
-over-estimate is 2.45 (1.05 before: the runs are more accurate, their shadows' differences less
-so; DOP853 at rtol 1e-6 over-estimates by a median 76×, held up by the floor of a hundredth of
-what the tolerance asks). The check costs a median 2.25× the bare run for DOP853 and `auto`,
-2.12× for DOPRI5, 1.31× for Radau IIA. The scan counts a true error net of its two references'
-own difference (DOP853 and DOPRI5 at rtol 1e-13 put an impact of a chaotic scene 7e-8 s apart: an
-error below that is not known), and a run's events only up to the first its references list
-otherwise.
+run beside its shadow, the reference and its alternates, event by event), 8 estimates fell more
+than ten times short of a true error above 1 % of what the tolerance asks (45 with the check and
+event core as they were before 2026-11-24, 21 at the start of the session of 2026-11-24 (later),
+13 at its end against the scan's earlier references), and 2 runs vouched for events that the
+references list otherwise, both in one scene. The runs whose true error within their trust
+exceeds what their tolerance asks went from 24,860 to 7,532 (the event times on the steps'
+accuracy and their polish), the share trusted to their end from 98.39 % to 98.49 %, and the
+median over-estimate is 2.42 (1.05 before: the runs are more accurate, their shadows'
+differences less so; DOP853 at rtol 1e-6 over-estimates by a median 75×, held up by the floor of
+a hundredth of what the tolerance asks). The check costs a median 2.25× the bare run for DOP853,
+2.24× for `auto`, 2.09× for DOPRI5, 1.31× for Radau IIA.
 
-Tried over the same scans and not landed: a shadow started from a model perturbed by a tenth of
-the tolerance (R·(1 + rtol/10)), to show how a scene amplifies errors where run and shadow take
-the same steps: its systematic shift of the event times cancelled runs' errors of the same size,
-and estimates ten times short rose to 44 (272 at a third of the tolerance). A shadow with its
-angles 16 ulps apart broke equilibria (a pellet at rest at the bottom turned at 7e-14 s) and
-2.4 % of the runs lost their trust; with the forcing's phase moved too, 1 %.
+The scan counts a true error net of the spread of the reference's alternates, each as valid as
+the reference: DOPRI5 at rtol 1e-13, and DOP853 with the moving pellets, then every pellet, an ulp
+on. An error below that spread is not known: a chain of a thousand collisions 4e-5 s apart walks
+its round-off to 1.3e-7 s from the reference, where DOPRI5 happened to stay within 1.7e-8 s
+(seed 18, scene 598); pellets at rest 2e-9 rad apart, struck together at 1e-4 rad/s by a force
+at 5243 rad/s, collide where an ulp of their angles moves the tenth impact by 4e-7 s (seed 28,
+scene 416). With DOPRI5 alone as the alternate the same runs counted 13 short.
+
+The 8 fall in two kinds, both understood:
+
+- *A perturbation as large as the run's error* (6 runs: seed 2 scene 654, DOP853 at rtol 1e-6;
+  seed 5 scene 425 and seed 10 scene 833, DOP853 and `auto` at 1e-10; seed 20 scene 657, Radau
+  IIA at 1e-8). The shadow starts 64 ulps ahead, and a chain that amplifies errors a
+  hundred-thousandfold amplifies that start as it amplifies the run's own error. Where the two
+  are alike in size and sign, the shadow lands where the run did: the reference DOP853 at rtol
+  1e-13 started 64 ulps ahead puts the 20th event of seed 20 scene 657 6.35e-9 s early, Radau
+  IIA at 1e-8 puts it 6.39e-9 s early, and the shadow agrees with the run to 5e-13 s. A single
+  perturbed shadow cannot tell these apart. Over the same scans (against the earlier
+  references, where 64 ulps counted 13 short and 2 wrong) a start 8 ulps ahead cleared them and
+  brought back the round-off chain the 64 ulps were for (14 short, 9 wrong events vouched for);
+  256 ulps moved the coincidence to Radau IIA at rtol 1e-10 (12 short, 2 wrong); 64 ulps behind
+  moved it elsewhere (15 short, 3 wrong); a start a thousandth of the tolerance ahead, a test of
+  the scene's conditioning rather than of the run, took the runs trusted to their end from
+  98.5 % to 87.6 %.
+- *Chains that start at rest* (4 runs: seed 11 scene 599, three pellets at rest near the top,
+  DOP853 and `auto` at rtol 1e-8 vouching for wrong events after 258 impacts with an estimate
+  three times short, Radau IIA at 1e-9; seed 16 scene 951, two resting pellets 2e-9 rad apart
+  that collide 8,000 times, DOPRI5 at 1e-6). Nothing moves at the start, so the shadow starts
+  where the run does, and the round-off that the chain amplifies (an ulp of the resting angles
+  moves the last collisions by 3e-7 s) is the two runs' alone. Moving resting pellets' angles
+  in the shadow too cleared them but broke equilibria and stick decisions (2.4 % of the runs
+  lost their trust); moving the forcing's phase instead, 1.2 % (a reversal near a tangency moved
+  8 ms under a phase 1e-13 rad on, where the references agreed with the run to 4e-14 s).
+
+Tried over the same scans and not landed, earlier: a shadow started from a model perturbed by a
+tenth of the tolerance (R·(1 + rtol/10)), to show how a scene amplifies errors where run and
+shadow take the same steps: its systematic shift of the event times cancelled runs' errors of the
+same size, and estimates ten times short rose to 44 (272 at a third of the tolerance).
 
 ### A speed cut judged by the scan: a reversal keeps the step size
 
@@ -491,8 +513,9 @@ def main():
             "### The estimate against the true error, random scenes", "",
             f"`build/tests/differential/trust_scan --count {OPTIONS.trust_scan} --seed 3 --jobs 2`: random",
             "scenes of the differential generator (below), every method at rtol 1e-6 … 1e-10, against the",
-            "same confirmed reference. *Missed* counts runs that listed another event than the reference",
-            "before their own `trusted_until`; *below 1/10* the runs whose estimate fell more than ten times",
+            "reference and its alternates (DOPRI5 at rtol 1e-13, DOP853 with the moving pellets and with every",
+            "pellet an ulp on), the true error net of their spread. *Missed* counts runs that listed another",
+            "event than the reference before their own `trusted_until`; *below 1/10* the runs whose estimate fell more than ten times",
             "short of the true error (over runs with a true error above 1e-14 s), and how many of those had a",
             "true error that matters: above 1 % of what the tolerance asks, `rtol·(T0 + t)`.", "",
             tool("trust_scan", ["--count", str(OPTIONS.trust_scan), "--seed", "3", "--jobs", "2"]), "",
