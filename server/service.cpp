@@ -14,6 +14,7 @@
 #include "server/api_error.h"
 #include "server/http.h"
 #include "server/router.h"
+#include "server/whole_response.h"
 
 namespace vibro::server {
 namespace {
@@ -31,6 +32,13 @@ class HttpServer : public httplib::Server {
  public:
   void widen_backlog() { ::listen(svr_sock_, SOMAXCONN); }
 };
+
+// The bytes a response takes on the wire, headers and body, within a status line's margin.
+std::size_t wire_bytes(const Response& res) {
+  std::size_t n = 64 + res.body.size();
+  for (const auto& [name, value] : res.headers) n += name.size() + value.size() + 4;
+  return n;
+}
 
 std::vector<Route> api_routes(Api& api) {
   auto bind = [&api](auto member) {
@@ -151,7 +159,15 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
                  what.c_str());
     send_error(res, {500, "server", "internal error"});
   });
-  http.set_logger([&s](const Request& req, const Response& res) { s.log.write(req, res); });
+  // Around the writing of a response: its headers are written right after the first, its body
+  // right before the second.
+  http.set_post_routing_handler([](const Request& req, Response& res) {
+    hold_if_whole({req.remote_addr, req.remote_port, req.local_port}, wire_bytes(res));
+  });
+  http.set_logger([&s](const Request& req, const Response& res) {
+    release_held();
+    s.log.write(req, res);
+  });
 }
 
 Service::~Service() = default;
