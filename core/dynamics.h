@@ -3,6 +3,7 @@
 #pragma once
 
 #include <cmath>
+#include <numbers>
 #include <vector>
 
 #include "core/model.h"
@@ -65,6 +66,9 @@ class SegmentDynamics final : public OdeSystem {
   int dimension() const override { return 3 * model_.size(); }
   void rhs(double t, const Vec& y, Vec& dydt) const override;
   void jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) const override;
+  double period(int component) const override {
+    return component == phi_index(component / 3) ? 2.0 * std::numbers::pi : 0.0;
+  }
 
  private:
   const Model& model_;

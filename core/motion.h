@@ -2,6 +2,8 @@
 // Pellets in contact that move together form one Body; a lone pellet is a body of one.
 #pragma once
 
+#include <cmath>
+#include <numbers>
 #include <vector>
 
 namespace vibro {
@@ -26,5 +28,9 @@ struct Body {
 inline int phi_index(int pellet) { return 3 * pellet; }
 inline int dphi_index(int pellet) { return 3 * pellet + 1; }
 inline int work_index(int pellet) { return 3 * pellet + 2; }
+
+// An angle's distance from the nearest whole turn, that is from the bottom of the circle: the size
+// the tolerances hold it relative to (OdeSystem::period), whatever turns brought it there.
+inline double angle_size(double phi) { return std::abs(std::remainder(phi, 2.0 * std::numbers::pi)); }
 
 }  // namespace vibro

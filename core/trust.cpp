@@ -8,6 +8,7 @@
 #include <tuple>
 
 #include "core/event_tolerances.h"
+#include "core/motion.h"
 
 namespace vibro {
 namespace {
@@ -63,7 +64,7 @@ double spacing(const std::vector<Event>& events, std::size_t k, double t_end) {
 double grazing_window(const Model& model, const Stats& st, double phi) {
   double a = model.g / model.R;
   for (const Pellet& p : model.pellets) a += std::abs(p.force.F0) / (p.m * model.R);
-  const double delta = 10.0 * (st.rtol * (1.0 + std::abs(phi)) + st.atol);
+  const double delta = 10.0 * (st.rtol * (1.0 + angle_size(phi)) + st.atol);
   return a > 0.0 ? std::sqrt(2.0 * delta / a) : 0.0;
 }
 

@@ -338,9 +338,9 @@ std::optional<Graze> CrossingFinder::near_miss(const Watch& w, double tm, double
                                                double largest, const Vec& y) const {
   // What the tolerance leaves uncertain in the watch: its error where the steps are held to
   // rtol·|y| + atol, ten times over (the bound an estimate keeps). A speed is held relative to
-  // the speeds of this motion; an angle relative to itself.
+  // the speeds of this motion; an angle relative to its distance from the bottom.
   const double scale =
-      w.kind == WatchKind::reversal ? largest : 1.0 + std::abs(y[phi_index(w.pellet)]);
+      w.kind == WatchKind::reversal ? largest : 1.0 + angle_size(y[phi_index(w.pellet)]);
   const double error = 10.0 * (rtol_ * scale + atol_);
   if (!(c > 0.0) || !(std::abs(gm) < error)) return std::nullopt;
   const Graze::Of of = w.kind == WatchKind::reversal ? Graze::Of::speed

@@ -60,7 +60,7 @@ double Dop853Scheme::attempt(const OdeSystem& sys, double t, const Vec& y, const
     const double incr = b1 * k1[i] + b6 * k6[i] + b7 * k7[i] + b8 * k8[i] + b9 * k9[i] +
                         b10 * k10[i] + b11 * k11[i] + b12 * k12[i];
     y1[i] = y[i] + h * incr;
-    const double sk = tol.scale(y[i], y1[i]);
+    const double sk = tol.scale(i, y[i], y1[i]);
     const double e3 = (incr - bhh1 * k1[i] - bhh2 * k9[i] - bhh3 * k12[i]) / sk;
     const double e5 = (er1 * k1[i] + er6 * k6[i] + er7 * k7[i] + er8 * k8[i] + er9 * k9[i] +
                        er10 * k10[i] + er11 * k11[i] + er12 * k12[i]) /

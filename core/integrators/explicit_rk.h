@@ -30,7 +30,7 @@ class ExplicitRk final : public Stepper {
  public:
   explicit ExplicitRk(const StepperOptions& options)
       : options_(options),
-        tol_{options.atol, options.rtol},
+        tol_{options.atol, options.rtol, {}},
         control_(Scheme::kControl),
         near_bound_(near_bound_fraction(options.rtol)) {}
 
@@ -132,6 +132,7 @@ class ExplicitRk final : public Stepper {
     sys_ = &sys;
     t_ = t_prev_ = t0;
     y_ = y0;
+    tol_.take_periods(sys);
     sys.rhs(t0, y_, f_);
     ++stats_.rhs_evals;
     f_finite_ = all_finite(f_);

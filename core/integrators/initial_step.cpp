@@ -12,9 +12,10 @@ double initial_step(const OdeSystem& sys, double t0, const Vec& y0, const Vec& f
   double dnf = 0.0;
   double dny = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double sk = tol.atol + tol.rtol * std::abs(y0[i]);
+    const double sk = tol.scale(i, y0[i]);
     dnf += (f0[i] / sk) * (f0[i] / sk);
-    dny += (y0[i] / sk) * (y0[i] / sk);
+    const double y = tol.size(i, y0[i]);  // an angle by its place, not its turns
+    dny += (y / sk) * (y / sk);
   }
   double h = (dnf <= 1e-10 || dny <= 1e-10) ? 1e-6 : std::sqrt(dny / dnf) * 0.01;
   h = std::min(h, h_max);
@@ -24,7 +25,7 @@ double initial_step(const OdeSystem& sys, double t0, const Vec& y0, const Vec& f
 
   double der2 = 0.0;
   for (Eigen::Index i = 0; i < n; ++i) {
-    const double sk = tol.atol + tol.rtol * std::abs(y0[i]);
+    const double sk = tol.scale(i, y0[i]);
     const double d = (f1[i] - f0[i]) / sk;
     der2 += d * d;
   }

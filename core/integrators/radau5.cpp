@@ -104,6 +104,7 @@ void Radau5::begin(const OdeSystem& sys, double t0, const Vec& y0) {
   sys_ = &sys;
   t_ = t_prev_ = t0;
   y_ = y0;
+  tol_.take_periods(sys);
   sys.rhs(t0, y_, f_);
   ++stats_.rhs_evals;
   f_valid_ = true;
@@ -130,7 +131,7 @@ void Radau5::resume(const OdeSystem& sys, double t0, const Vec& y0, double h0) {
 }
 
 void Radau5::update_scale() {
-  for (int i = 0; i < n_; ++i) scal_[i] = tol_.atol + tol_.rtol * std::abs(y_[i]);
+  for (int i = 0; i < n_; ++i) scal_[i] = tol_.scale(i, y_[i]);
 }
 
 bool Radau5::decompose(double h) {
