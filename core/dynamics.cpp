@@ -53,7 +53,8 @@ SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bo
 }
 
 // The hot loop of every run: each transcendental function is computed once per body.
-void SegmentDynamics::rhs(double t, const Vec& y, Vec& dydt) const {
+void SegmentDynamics::evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const {
+  if (J) J->setZero();
   const double R = model_.R;
   const bool paper = model_.friction == FrictionLaw::paper;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
@@ -89,14 +90,24 @@ void SegmentDynamics::rhs(double t, const Vec& y, Vec& dydt) const {
       dydt[dphi_index(i)] = acc;
       dydt[work_index(i)] = R * dphi * (Fi - m * s * law_.mu * n);
     }
+    if (!J) continue;
+    const SlidingLaw::Slopes dacc = law_.slopes(c, sn, dphi, s, side);
+    for (int i : body.members) {
+      (*J)(2 * i, 2 * i + 1) = 1.0;
+      (*J)(2 * i + 1, 2 * L) = dacc.phi;
+      (*J)(2 * i + 1, 2 * L + 1) = dacc.dphi;
+    }
   }
+}
+
+void SegmentDynamics::rhs_and_motion_jacobian(double t, const Vec& y, Vec& dydt, Mat& J) const {
+  evaluate(t, y, dydt, &J);
 }
 
 void SegmentDynamics::jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) const {
   dfdy.setZero();
   dfdt.setZero();
   const double R = model_.R, g = model_.g;
-  const double gR = law_.gR;
   const double mu = law_.mu;
   for (std::size_t b = 0; b < bodies_.size(); ++b) {
     const Body& body = bodies_[b];
@@ -111,27 +122,17 @@ void SegmentDynamics::jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) con
       dF += model_.pellets[i].force.rate(t);
     }
     // acc and the normal force per mass n, with their partial derivatives.
-    double dacc_dphi, dacc_ddphi;
-    const double n_raw = g * c + R * dphi * dphi;
-    double n = n_raw, dn_dphi = -g * sn, dn_ddphi = 2.0 * R * dphi;
-    if (model_.friction == FrictionLaw::paper) {
-      dacc_dphi = -gR * (c - s * mu * sn);
-      dacc_ddphi = -2.0 * s * mu * dphi;
-    } else {
-      const double sq = normal_side_[b];
-      n = sq * n_raw;
-      dn_dphi *= sq;
-      dn_ddphi *= sq;
-      dacc_dphi = -gR * c + s * mu * sq * gR * sn;
-      dacc_ddphi = -s * mu * sq * 2.0 * dphi;
-    }
+    const SlidingLaw::Slopes dacc = law_.slopes(c, sn, dphi, s, normal_side_[b]);
+    const double sq = model_.friction == FrictionLaw::paper ? 1.0 : normal_side_[b];
+    const double n = sq * (g * c + R * dphi * dphi);
+    const double dn_dphi = -sq * g * sn, dn_ddphi = sq * 2.0 * R * dphi;
     const double dacc_dt = dF / (mass_[b] * R);
     for (int i : body.members) {
       const double m = model_.pellets[i].m;
       const double Fi = model_.pellets[i].force.at(t);
       dfdy(phi_index(i), dphi_index(i)) = 1.0;
-      dfdy(dphi_index(i), phi_index(L)) = dacc_dphi;
-      dfdy(dphi_index(i), dphi_index(L)) = dacc_ddphi;
+      dfdy(dphi_index(i), phi_index(L)) = dacc.phi;
+      dfdy(dphi_index(i), dphi_index(L)) = dacc.dphi;
       dfdt[dphi_index(i)] = dacc_dt;
       const int w = work_index(i);
       dfdy(w, phi_index(L)) += R * dphi * (-m * s * mu * dn_dphi);

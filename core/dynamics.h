@@ -49,6 +49,14 @@ struct SlidingLaw {
     return paper ? F / (M * R) - s * mu * dphi * dphi - gR * (sin_phi + s * mu * cos_phi)
                  : F / (M * R) - gR * sin_phi - s * mu * side * (dphi * dphi + gR * cos_phi);
   }
+  // Its partial derivatives in phi and dphi, which depend on the place and speed alone.
+  struct Slopes {
+    double phi, dphi;
+  };
+  Slopes slopes(double cos_phi, double sin_phi, double dphi, int s, int side) const {
+    return paper ? Slopes{-gR * (cos_phi - s * mu * sin_phi), -2.0 * s * mu * dphi}
+                 : Slopes{-gR * cos_phi + s * mu * side * gR * sin_phi, -2.0 * s * mu * side * dphi};
+  }
   bool paper;
   double R;   // m
   double gR;  // g / R, 1/s²
@@ -64,13 +72,18 @@ class SegmentDynamics final : public OdeSystem {
   void set_normal_side(int body, int side) { normal_side_[body] = side; }
   int normal_side(int body) const { return normal_side_[body]; }
   int dimension() const override { return 3 * model_.size(); }
-  void rhs(double t, const Vec& y, Vec& dydt) const override;
+  void rhs(double t, const Vec& y, Vec& dydt) const override { evaluate(t, y, dydt, nullptr); }
   void jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) const override;
+  // rhs, and J = ∂(dphi, ddphi)/∂(phi, dphi) of every pellet (2N × 2N, rows and columns 2i,
+  // 2i + 1 for pellet i): the variational equations' matrix, without the forcing's and the
+  // work's terms, from the same sines and cosines.
+  void rhs_and_motion_jacobian(double t, const Vec& y, Vec& dydt, Mat& J) const;
   double period(int component) const override {
     return component == phi_index(component / 3) ? 2.0 * std::numbers::pi : 0.0;
   }
 
  private:
+  void evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const;
   const Model& model_;
   const std::vector<Body>& bodies_;
   std::vector<double> mass_;  // per body

@@ -38,24 +38,21 @@ Vec reduced_rate(const SegmentDynamics& d, int pellets, double t, const Vec& y) 
 }
 
 // The variational equations of one interval: the motion (3 components per pellet) followed by
-// the 2N × 2N transition matrix Φ of (phi, dphi), column by column, with Φ' = (∂f/∂y) Φ. The
-// work components do not act back on the motion, so they are left out of Φ.
+// perturbations of (phi, dphi), a 2N × m matrix Φ column by column, with Φ' = (∂f/∂y) Φ (m = 2N
+// for the transition matrix, 1 for one perturbation). The work components do not act back on the
+// motion, so they are left out of Φ.
 class Variational final : public OdeSystem {
  public:
-  Variational(const SegmentDynamics& dynamics, int pellets)
-      : d_(dynamics), n_(pellets), full_(3 * pellets), rate_(3 * pellets),
-        jac_(3 * pellets, 3 * pellets), dfdt_(3 * pellets), reduced_(2 * pellets, 2 * pellets) {}
-  int dimension() const override { return 3 * n_ + 4 * n_ * n_; }
+  Variational(const SegmentDynamics& dynamics, int pellets, int columns)
+      : d_(dynamics), n_(pellets), m_(columns), full_(3 * pellets), rate_(3 * pellets),
+        reduced_(2 * pellets, 2 * pellets) {}
+  int dimension() const override { return 3 * n_ + 2 * n_ * m_; }
   void rhs(double t, const Vec& z, Vec& dzdt) const override {
     full_ = z.head(3 * n_);
-    d_.rhs(t, full_, rate_);
+    d_.rhs_and_motion_jacobian(t, full_, rate_, reduced_);
     dzdt.head(3 * n_) = rate_;
-    d_.jacobian(t, full_, jac_, dfdt_);
-    for (int r = 0; r < 2 * n_; ++r)
-      for (int c = 0; c < 2 * n_; ++c) reduced_(r, c) = jac_(motion_index(r), motion_index(c));
-    const int m = 2 * n_;
-    Eigen::Map<const Mat> phi(z.data() + 3 * n_, m, m);
-    Eigen::Map<Mat> dphi(dzdt.data() + 3 * n_, m, m);
+    Eigen::Map<const Mat> phi(z.data() + 3 * n_, 2 * n_, m_);
+    Eigen::Map<Mat> dphi(dzdt.data() + 3 * n_, 2 * n_, m_);
     dphi.noalias() = reduced_ * phi;
   }
   // Only implicit methods ask for it, and the transitions are integrated explicitly: central
@@ -78,12 +75,9 @@ class Variational final : public OdeSystem {
   }
 
  private:
-  static int motion_index(int reduced) { return 3 * (reduced / 2) + reduced % 2; }
   const SegmentDynamics& d_;
-  const int n_;
+  const int n_, m_;
   mutable Vec full_, rate_;
-  mutable Mat jac_;
-  mutable Vec dfdt_;
   mutable Mat reduced_;
 };
 
@@ -132,6 +126,8 @@ PathJacobian instant_saltation(const Model& model, const PathSegment& segment,
   const Vec f_after = reduced_rate(dynamics_of(model, segment.bodies, segment.normal_sides, y_after),
                                    n, segment.t, y_after);
   Mat S = Mat::Identity(2 * n, 2 * n);
+  out.time_row = Vec::Zero(2 * n);
+  bool timed = false;  // the instant's time is its first crossing's
   std::set<int> seen;
   for (const Event& e : segment.events) {
     // A chatter sums the impacts after the one listed with it: the pellet ends at rest, which
@@ -178,6 +174,8 @@ PathJacobian instant_saltation(const Model& model, const PathSegment& segment,
     // S_e = G + (f⁺ − G f⁻) ∇hᵀ / (∇h·f⁻ + h_t) on the event's pellets' rows.
     const Vec jump = f_after - c.reset * f_before;
     const double approach = c.grad.dot(f_before) + c.h_t;
+    if (!timed) out.time_row = -c.grad / approach;  // h(y + δy, t + δt) = 0 to first order
+    timed = true;
     Mat Se = Mat::Identity(2 * n, 2 * n);
     for (int p : c.pellets)
       for (int r : {angle_row(p), speed_row(p)})
@@ -196,19 +194,24 @@ PathJacobian instant_saltation(const Model& model, const PathSegment& segment,
   return out;
 }
 
-PathJacobian interval_transition(const Model& model, const PathSegment& segment, double rtol) {
+namespace {
+
+// Φ·start over the motion interval a segment opens (start: 2N × m), integrated by `method`.
+PathJacobian carried_over_interval(const Model& model, const PathSegment& segment, const Mat& start,
+                                   Method method, double rtol) {
   const int n = model.size();
+  const auto m = static_cast<int>(start.cols());
   PathJacobian out;
-  out.matrix = Mat::Identity(2 * n, 2 * n);
+  out.matrix = start;
   if (!(segment.t_end > segment.t)) return out;
   const Vec y = full_state(segment.y);
   const SegmentDynamics d = dynamics_of(model, segment.bodies, segment.normal_sides, y);
-  const Variational sys(d, n);
+  const Variational sys(d, n, m);
   Vec z(sys.dimension());
   z.head(3 * n) = y;
-  Eigen::Map<Mat>(z.data() + 3 * n, 2 * n, 2 * n).setIdentity();
+  Eigen::Map<Mat>(z.data() + 3 * n, 2 * n, m) = start;
   std::unique_ptr<Stepper> stepper =
-      make_stepper(Method::dop853, StepperOptions{rtol, 1e-3 * rtol, longest_step(model)});
+      make_stepper(method, StepperOptions{rtol, 1e-3 * rtol, longest_step(model)});
   stepper->start(sys, segment.t, z);
   while (stepper->t() < segment.t_end) {
     if (stepper->step(segment.t_end) != StepStatus::ok) {
@@ -217,8 +220,15 @@ PathJacobian interval_transition(const Model& model, const PathSegment& segment,
       return out;
     }
   }
-  out.matrix = Eigen::Map<const Mat>(stepper->y().data() + 3 * n, 2 * n, 2 * n);
+  out.matrix = Eigen::Map<const Mat>(stepper->y().data() + 3 * n, 2 * n, m);
   return out;
+}
+
+}  // namespace
+
+PathJacobian interval_transition(const Model& model, const PathSegment& segment, double rtol) {
+  const int n = model.size();
+  return carried_over_interval(model, segment, Mat::Identity(2 * n, 2 * n), Method::dop853, rtol);
 }
 
 PathJacobian segment_jacobian(const Model& model, const std::vector<PathSegment>& path,
@@ -241,6 +251,29 @@ PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& p
     M = step.matrix * M;
   }
   out.matrix = std::move(M);
+  return out;
+}
+
+InstantShifts instant_shifts(const Model& model, const std::vector<PathSegment>& path,
+                             const Vec& delta0, double rtol) {
+  InstantShifts out;
+  Mat v = delta0;
+  for (std::size_t k = 0; k < path.size(); ++k) {
+    const PathJacobian S = instant_saltation(model, path[k], k == 0 ? std::vector<int>{} : path[k - 1].normal_sides);
+    if (!S.unsupported.empty()) {
+      out.unsupported = S.unsupported;
+      out.dt.clear();
+      return out;
+    }
+    out.dt.push_back(S.time_row.dot(v.col(0)));
+    const PathJacobian F = carried_over_interval(model, path[k], S.matrix * v, Method::dopri5, rtol);
+    if (!F.unsupported.empty()) {
+      out.unsupported = F.unsupported;
+      out.dt.clear();
+      return out;
+    }
+    v = F.matrix;
+  }
   return out;
 }
 

@@ -18,6 +18,9 @@ namespace vibro {
 // its speed.
 struct PathJacobian {
   Mat matrix;  // 2N × 2N
+  // Of an instant: its time's derivative with respect to the state reaching it (its first
+  // crossing's surface); zero where no surface sets it (the start, a release from a limiter).
+  Vec time_row;
   // Non-empty when the path holds what this does not differentiate (pellets moving together),
   // naming it; the matrix is then not set.
   std::string unsupported;
@@ -40,5 +43,14 @@ PathJacobian segment_jacobian(const Model& model, const std::vector<PathSegment>
 
 // The whole path's: the segments' in turn.
 PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol);
+
+// How far each instant of a path moves, to first order, when its initial (phi, dphi) move by
+// delta0 (2N): one time shift per segment, s.
+struct InstantShifts {
+  std::vector<double> dt;
+  std::string unsupported;  // non-empty: the path holds what the saltations do not cover; no dt
+};
+InstantShifts instant_shifts(const Model& model, const std::vector<PathSegment>& path,
+                             const Vec& delta0, double rtol);
 
 }  // namespace vibro

@@ -50,6 +50,8 @@ struct SimOptions {
   double keep_events_from = -std::numeric_limits<double>::infinity();
   // Keep the run's hybrid path (RunResult::path): what the variational equations replay.
   bool keep_path = false;
+  // At most this many instants of it (about 1 KB each); it ends where they are reached.
+  std::size_t path_limit = std::numeric_limits<std::size_t>::max();
   // The Lyapunov exponents of the motion from keep_events_from (or 0) to the end
   // (RunResult::lyapunov, core/lyapunov.h).
   bool lyapunov = false;

@@ -103,8 +103,11 @@ class Simulation {
   std::vector<StateAt> stops_;
   // The first instant whose impacts' order was decided below the tolerance: the trust ends there.
   std::optional<Graze> unordered_;
-  // opt_.keep_path: the segments that end after opt_.keep_events_from (a sweep's record).
+  // opt_.keep_path: the segments that end after opt_.keep_events_from (a sweep's record), up to
+  // opt_.path_limit of them.
   std::vector<PathSegment> path_;
+  bool path_full_ = false;
+  bool keeps_path() const { return opt_.keep_path && !path_full_; }
   bool smooth_ = false;  // the last instant was one of reversals alone
 };
 
@@ -158,18 +161,19 @@ bool Simulation::over_budget(double t) {
 // Resolves an instant at t and keeps what it reports; returns the next interval's bodies.
 std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
                                       const InstantContacts& contacts) {
-  if (opt_.keep_path) {
+  if (keeps_path()) {
     if (!path_.empty()) {
       path_.back().t_end = t;
       if (t < opt_.keep_events_from) path_.pop_back();
     }
-    path_.push_back({t, before, to_vector(y_), {}, {}, {}, {}, t});
+    path_full_ = path_.size() >= opt_.path_limit;
+    if (!path_full_) path_.push_back({t, before, to_vector(y_), {}, {}, {}, {}, t});
   }
   InstantOutcome out = resolve_instant(model_, tol_, t, before, contacts, y_, armed_);
   smooth_ = only_reversals(out.events);
   if (out.unordered >= 0 && !unordered_)
     unordered_ = Graze{.of = Graze::Of::order, .pellet = out.unordered, .t = t, .earliest = t};
-  if (opt_.keep_path) {
+  if (keeps_path()) {
     path_.back().events = out.events;
     path_.back().bodies = out.bodies;
     path_.back().y = to_vector(y_);
@@ -196,7 +200,7 @@ void Simulation::open_interval(double t, std::vector<Body> bodies) {
   finder_.start(interval_->watches(), model_, interval_->bodies(), t, y_, opt_.rtol, opt_.atol);
   recorder_.sample(t, y_);
   recorder_.check_normal_force(t, y_, interval_->bodies());
-  if (opt_.keep_path) {
+  if (keeps_path()) {
     PathSegment& p = path_.back();
     p.bodies = interval_->bodies();
     p.normal_sides.clear();
@@ -395,7 +399,7 @@ RunResult Simulation::run() {
   result.graze = finder_.first_graze();
   if (unordered_ && (!result.graze || unordered_->earliest < result.graze->earliest))
     result.graze = unordered_;
-  if (!path_.empty()) path_.back().t_end = std::min(t, opt_.t_end);
+  if (!path_.empty() && !path_full_) path_.back().t_end = std::min(t, opt_.t_end);
   result.path = std::move(path_);
 
   const StepperStats& s = stepper_->stats();

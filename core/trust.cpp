@@ -1,6 +1,7 @@
 #include "core/trust.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <iomanip>
 #include <limits>
@@ -8,6 +9,7 @@
 #include <tuple>
 
 #include "core/event_tolerances.h"
+#include "core/monodromy.h"
 #include "core/motion.h"
 
 namespace vibro {
@@ -97,6 +99,43 @@ double placement_round_off(const Event& e) {
   if (!(approach > 0.0)) return 0.0;
   return 1e2 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(e.phi)) / approach;
 }
+
+// The shadow's instants, each with how far its start 64 ulps ahead moved it (to first order,
+// from the variational equations along its path): a chain that amplifies errors amplifies that
+// start as it amplifies the run's own error, and where the two are alike the shadow lands where
+// the run did. Less that shift, the shadow is where it would be from the run's start, and its
+// difference from the run is the run's error. Radau IIA at rtol 1e-8 put an event 6.39e-9 s
+// early, the start 64 ulps ahead put the shadow's 6.35e-9 s early, and the two agreed to 5e-13 s
+// (trust scan, seed 20, scene 657); less its shift of 6.36e-9 s, the shadow was 6.36e-9 s from
+// the run. Empty where the path holds what the saltations do not cover (pellets moving
+// together) or nothing was moved.
+class StartShifts {
+ public:
+  StartShifts(const Model& model, const RunResult& shadow) {
+    const Model moved = check_model(model);
+    Vec delta(2 * model.size());
+    for (int i = 0; i < model.size(); ++i) {
+      delta[2 * i] = moved.pellets[i].phi0 - model.pellets[i].phi0;
+      delta[2 * i + 1] = moved.pellets[i].dphi0 - model.pellets[i].dphi0;
+    }
+    if (shadow.path.empty() || delta.isZero(0.0)) return;
+    // A tenth of the shift is all the estimate needs: DOPRI5 at rtol 1e-4 put the shifts within
+    // 1 % of the difference of shadows started with and without the 64 ulps.
+    const InstantShifts s = instant_shifts(model, shadow.path, delta, 1e-4);
+    for (std::size_t k = 0; k < s.dt.size(); ++k)
+      if (!shadow.path[k].events.empty()) at_.emplace_back(shadow.path[k].t, s.dt[k]);
+  }
+  // The shift of the instant at t (0 where none is known).
+  double at(double t) const {
+    const double same = 1e-12 * (1.0 + std::abs(t));
+    auto it = std::lower_bound(at_.begin(), at_.end(), t - same,
+                               [](const std::pair<double, double>& x, double v) { return x.first < v; });
+    return it != at_.end() && it->first <= t + same ? it->second : 0.0;
+  }
+
+ private:
+  std::vector<std::pair<double, double>> at_;  // (time, shift), in time order
+};
 
 // The final states' difference completes a report.
 TrustReport finish(const Model& model, const RunResult& run, const RunResult& shadow,
@@ -239,7 +278,10 @@ SimOptions check_options(const SimOptions& run) {
   o.record.clear();
   o.stops.clear();
   o.check = false;
-  o.keep_path = false;
+  // The start's shifts are found along its path, over its first 20,000 instants (about 20 MB; a
+  // run may list 200,000): past them the shadow is taken as it is.
+  o.keep_path = true;
+  o.path_limit = 20000;
   o.lyapunov = false;
   return o;
 }
@@ -262,12 +304,15 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
   const double time_scale = tol.time_scale;
   const std::vector<Event> a = by_instant(run.events), b = by_instant(shadow.events);
   const std::size_t n = std::min(a.size(), b.size());
+  const StartShifts shifts(model, shadow);
   std::size_t k = 0;
   bool summed = false;  // a chatter series was summed at or before event k
   for (; k < n && listed_alike(a[k], b[k]); ++k) {
     const double t = a[k].t;
     if (t > t_common) break;
-    const double dt = std::abs(t - b[k].t);
+    // The shadow as it is, and less its start's shift: the start is there to part round-off the
+    // run and the shadow would share (check_model), the shift to keep it from hiding the error.
+    const double dt = std::max(std::abs(t - b[k].t), std::abs(t - (b[k].t - shifts.at(b[k].t))));
     const double round_off = std::max(1e3 * std::numeric_limits<double>::epsilon() * (time_scale + t),
                                       placement_round_off(a[k]));
     // Times that differ by more than a tenth of the time to the neighbouring events, and by
@@ -323,14 +368,17 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
 }
 
 void apply_check(const Model& model, const RunResult& shadow, RunResult& run) {
+  const auto started = std::chrono::steady_clock::now();
   const TrustReport r = compare_runs(model, run, shadow);
+  const double compared_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   Stats& st = run.stats;
   st.check = true;
   std::ostringstream method;
   method << std::setprecision(3) << shadow.stats.method << " at rtol " << shadow.stats.rtol;
   st.check_method = method.str();
-  st.check_wall_ms = shadow.stats.wall_ms;
-  st.wall_ms += shadow.stats.wall_ms;
+  st.check_wall_ms = shadow.stats.wall_ms + compared_ms;
+  st.wall_ms += st.check_wall_ms;
   st.event_time_error = r.event_time_error;
   st.state_error = r.state_error;
   st.trusted_until = r.trusted_until;

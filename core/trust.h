@@ -13,8 +13,8 @@
 
 namespace vibro {
 
-// The shadow's options: the same scene, limits and deadline, nothing recorded, not checked
-// itself, at tolerances divided by a hundred (down to the smallest the integrators accept):
+// The shadow's options: the same scene, limits and deadline, nothing recorded but its path (where
+// its start's shifts are found, compare_runs), not checked itself, at tolerances divided by a hundred (down to the smallest the integrators accept):
 // DOPRI5 checked by DOP853, Radau IIA by `auto`, DOP853 at rtol 1e-8 and below by itself;
 // above rtol 1e-8 DOP853 by DOPRI5 at a thirtieth of rtol and a three-hundredth of atol.
 // `auto` as its explicit method is: weighing DOPRI5 against DOP853 (rtol 1e-6 and looser) by
@@ -55,7 +55,8 @@ struct TrustReport {
                         // to its neighbours; -1: none
 };
 
-// Compares a run with its shadow, instant by instant. The runs agree on an event when kind,
+// Compares a run with its shadow, instant by instant, the shadow's times taken as they are and
+// less what its start 64 ulps ahead moved them (from its path). The runs agree on an event when kind,
 // pellets and limiter are the same and the times differ by less than a tenth of the time to the neighbouring events;
 // trust ends ten errors before the first events that they do not (but not before the last
 // they list alike), or where either run stopped.

@@ -20,6 +20,31 @@ double largest_time_difference(const RunResult& run, const RunResult& ref) {
   return worst;
 }
 
+// A run checked as a user's is (atol a thousandth of rtol), and its true event-time error against
+// DOP853 at rtol 1e-13.
+struct Checked {
+  RunResult run;
+  std::size_t reference_events = 0;
+  double truth = 0.0;
+};
+
+Checked checked_against_reference(const Model& model, double t_end, Method method, double rtol) {
+  SimOptions o;
+  o.t_end = t_end;
+  o.method = Method::dop853;
+  o.rtol = 1e-13;
+  o.atol = 1e-16;
+  o.check = false;
+  const RunResult ref = simulate(model, o);
+  o.method = method;
+  o.rtol = rtol;
+  o.atol = 1e-3 * rtol;
+  o.check = true;
+  Checked c{simulate(model, o), ref.events.size(), 0.0};
+  c.truth = largest_time_difference(c.run, ref);
+  return c;
+}
+
 // The paper scene is well conditioned: trusted to its end, and the estimate never ten times
 // below the true error (against DOP853 at rtol 1e-13), for every method. Nor a hundred times
 // above it: at rtol 1e-10 the chatter summation's own error (1e-8·sqrt(R/g), which the reference
@@ -296,22 +321,11 @@ TEST(Trust, AShadowDoesNotShareTheRunsCappedSteps) {
       pellet(1.7274739182240466, -5.6448036228086, 0.0, 19.39748536229544, 3408.372064190431,
              0.2820007962479455),
       pellet(0.4514024415959406, -1.526718347592995, -16.042506605315726, 0.0, 0.0, 0.0)};
-  SimOptions o;
-  o.t_end = 0.030686203454863226;
-  o.method = Method::dop853;
-  o.rtol = 1e-13;
-  o.atol = 1e-15;
-  o.check = false;
-  const RunResult ref = simulate(model, o);
-  o.rtol = 1e-6;
-  o.atol = 1e-9;
-  o.check = true;
-  const RunResult run = simulate(model, o);
-  ASSERT_EQ(run.events.size(), ref.events.size());
-  EXPECT_EQ(run.stats.trusted_until, run.stats.t_reached);
-  const double truth = largest_time_difference(run, ref);
-  EXPECT_GT(truth, 1e-7);
-  EXPECT_GE(run.stats.event_time_error, 0.1 * truth);
+  const Checked c = checked_against_reference(model, 0.030686203454863226, Method::dop853, 1e-6);
+  ASSERT_EQ(c.run.events.size(), c.reference_events);
+  EXPECT_EQ(c.run.stats.trusted_until, c.run.stats.t_reached);
+  EXPECT_GT(c.truth, 1e-7);
+  EXPECT_GE(c.run.stats.event_time_error, 0.1 * c.truth);
 }
 
 // A pellet 2e-9 rad from its limiter at 41 rad/s strikes it at 4.8e-11 s: 64 ulps faster it
@@ -333,6 +347,32 @@ TEST(Trust, AShadowOfAnImpactAtOnceStrikesARoundOffApart) {
   const double apart = std::abs(run.events[0].t - shadow.events[0].t);
   EXPECT_GT(apart, 0.0);
   EXPECT_LT(apart, 1e-14);
+}
+
+// A chain of collisions and turns amplifies a start 64 ulps ahead as it amplifies the run's own
+// error: Radau IIA at rtol 1e-8 put the 20th event 6.4e-9 s early, so did the shadow's start, and
+// the run and its shadow agreed to 5e-13 s (trust scan, seed 20, scene 657: estimated at
+// 5e-11 s). Less what its start moved it, the shadow sees the error.
+TEST(Trust, AShadowsStartDoesNotHideTheRunsError) {
+  Model model;
+  model.R = 0.5969369981779354;
+  model.alpha0 = 0.22060823440551758;
+  model.friction = FrictionLaw::bilateral;
+  model.k_c = 1.0;
+  model.limiters.resize(1);
+  model.limiters[0].angle = 0.21564414294698597;
+  model.limiters[0].k = 0.0;
+  model.pellets.push_back(Pellet{.m = 2.3276240818214298, .phi0 = 2.6699534824394853,
+                                 .force = {10.38757019961966, 10.502868917619864, 5.338181236492599}});
+  model.pellets.push_back(Pellet{.m = 0.3165216377812751, .phi0 = 2.6699534844394854,
+                                 .dphi0 = -0.1358685125895375,
+                                 .force = {8.672007695525208, 469.28976028734724, 3.8678906118664753}});
+  const Checked c = checked_against_reference(model, 0.2675627690885587, Method::radau5, 1e-8);
+  ASSERT_EQ(c.run.events.size(), c.reference_events);
+  EXPECT_EQ(c.run.stats.trusted_until, c.run.stats.t_reached);
+  EXPECT_GT(c.truth, 1e-9);
+  EXPECT_GE(c.run.stats.event_time_error, 0.1 * c.truth);
+  EXPECT_LE(c.run.stats.event_time_error, 10.0 * c.truth);
 }
 
 // The shadow's scene is the run's a round-off ahead: speeds 64 ulps faster, the angles of moving
