@@ -196,9 +196,10 @@ PathJacobian instant_saltation(const Model& model, const PathSegment& segment,
 
 namespace {
 
-// Φ·start over the motion interval a segment opens (start: 2N × m), integrated by `method`.
+// Φ·start over the motion interval a segment opens (start: 2N × m), integrated by `stepper`:
+// started afresh, or going on with the step size it last took.
 PathJacobian carried_over_interval(const Model& model, const PathSegment& segment, const Mat& start,
-                                   Method method, double rtol) {
+                                   Stepper& stepper, bool afresh) {
   const int n = model.size();
   const auto m = static_cast<int>(start.cols());
   PathJacobian out;
@@ -210,17 +211,18 @@ PathJacobian carried_over_interval(const Model& model, const PathSegment& segmen
   Vec z(sys.dimension());
   z.head(3 * n) = y;
   Eigen::Map<Mat>(z.data() + 3 * n, 2 * n, m) = start;
-  std::unique_ptr<Stepper> stepper =
-      make_stepper(method, StepperOptions{rtol, 1e-3 * rtol, longest_step(model)});
-  stepper->start(sys, segment.t, z);
-  while (stepper->t() < segment.t_end) {
-    if (stepper->step(segment.t_end) != StepStatus::ok) {
+  if (afresh)
+    stepper.start(sys, segment.t, z);
+  else
+    stepper.continue_smoothly(sys, segment.t, z);
+  while (stepper.t() < segment.t_end) {
+    if (stepper.step(segment.t_end) != StepStatus::ok) {
       out.unsupported = "the variational equations failed to integrate at t = " +
-                        std::to_string(stepper->t()) + " s";
+                        std::to_string(stepper.t()) + " s";
       return out;
     }
   }
-  out.matrix = Eigen::Map<const Mat>(stepper->y().data() + 3 * n, 2 * n, m);
+  out.matrix = Eigen::Map<const Mat>(stepper.y().data() + 3 * n, 2 * n, m);
   return out;
 }
 
@@ -228,7 +230,9 @@ PathJacobian carried_over_interval(const Model& model, const PathSegment& segmen
 
 PathJacobian interval_transition(const Model& model, const PathSegment& segment, double rtol) {
   const int n = model.size();
-  return carried_over_interval(model, segment, Mat::Identity(2 * n, 2 * n), Method::dop853, rtol);
+  const std::unique_ptr<Stepper> stepper =
+      make_stepper(Method::dop853, StepperOptions{rtol, 1e-3 * rtol, longest_step(model)});
+  return carried_over_interval(model, segment, Mat::Identity(2 * n, 2 * n), *stepper, true);
 }
 
 PathJacobian segment_jacobian(const Model& model, const std::vector<PathSegment>& path,
@@ -255,23 +259,28 @@ PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& p
 }
 
 InstantShifts instant_shifts(const Model& model, const std::vector<PathSegment>& path,
-                             const Vec& delta0, double rtol) {
+                             const Mat& deltas, double rtol) {
   InstantShifts out;
-  Mat v = delta0;
+  out.dt.resize(static_cast<Eigen::Index>(path.size()), deltas.cols());
+  Mat v = deltas;
+  // One stepper over the whole path, each interval begun with the step size the last one took
+  // (the intervals of a chain of impacts are short, and a first-step guess for each cost more
+  // than their steps), and steps up to two radians of a swing or a forcing: the shifts are wanted
+  // to a few percent, and kept to them (against central differences of runs, and of shadows
+  // started with and without their 64 ulps) at a quarter less cost than at one radian.
+  const std::unique_ptr<Stepper> stepper =
+      make_stepper(Method::dopri5, StepperOptions{rtol, 1e-3 * rtol, 2.0 * longest_step(model)});
   for (std::size_t k = 0; k < path.size(); ++k) {
     const PathJacobian S = instant_saltation(model, path[k], k == 0 ? std::vector<int>{} : path[k - 1].normal_sides);
-    if (!S.unsupported.empty()) {
-      out.unsupported = S.unsupported;
-      out.dt.clear();
-      return out;
-    }
-    out.dt.push_back(S.time_row.dot(v.col(0)));
-    const PathJacobian F = carried_over_interval(model, path[k], S.matrix * v, Method::dopri5, rtol);
+    const PathJacobian F = S.unsupported.empty()
+                               ? carried_over_interval(model, path[k], S.matrix * v, *stepper, k == 0)
+                               : S;
     if (!F.unsupported.empty()) {
       out.unsupported = F.unsupported;
-      out.dt.clear();
+      out.dt.resize(0, deltas.cols());
       return out;
     }
+    out.dt.row(static_cast<Eigen::Index>(k)) = S.time_row.transpose() * v;
     v = F.matrix;
   }
   return out;

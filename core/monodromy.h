@@ -45,12 +45,13 @@ PathJacobian segment_jacobian(const Model& model, const std::vector<PathSegment>
 PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol);
 
 // How far each instant of a path moves, to first order, when its initial (phi, dphi) move by
-// delta0 (2N): one time shift per segment, s.
+// each column of deltas (2N × m), integrated together: s, one row per segment, one column per
+// perturbation.
 struct InstantShifts {
-  std::vector<double> dt;
+  Mat dt;
   std::string unsupported;  // non-empty: the path holds what the saltations do not cover; no dt
 };
 InstantShifts instant_shifts(const Model& model, const std::vector<PathSegment>& path,
-                             const Vec& delta0, double rtol);
+                             const Mat& deltas, double rtol);
 
 }  // namespace vibro

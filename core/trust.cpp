@@ -100,41 +100,66 @@ double placement_round_off(const Event& e) {
   return 1e2 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(e.phi)) / approach;
 }
 
-// The shadow's instants, each with how far its start 64 ulps ahead moved it (to first order,
-// from the variational equations along its path): a chain that amplifies errors amplifies that
-// start as it amplifies the run's own error, and where the two are alike the shadow lands where
-// the run did. Less that shift, the shadow is where it would be from the run's start, and its
-// difference from the run is the run's error. Radau IIA at rtol 1e-8 put an event 6.39e-9 s
-// early, the start 64 ulps ahead put the shadow's 6.35e-9 s early, and the two agreed to 5e-13 s
-// (trust scan, seed 20, scene 657); less its shift of 6.36e-9 s, the shadow was 6.36e-9 s from
-// the run. Empty where the path holds what the saltations do not cover (pellets moving
-// together) or nothing was moved.
+// How far a start a round-off apart moves an instant, to first order (from the variational
+// equations along the shadow's path, instant_shifts).
+struct StartShift {
+  // The shadow's own start 64 ulps ahead (check_model). A chain that amplifies errors amplifies
+  // it as it amplifies the run's own error, and where the two are alike the shadow lands where
+  // the run did: Radau IIA at rtol 1e-8 put an event 6.39e-9 s early, the start 64 ulps ahead
+  // put the shadow's 6.35e-9 s early, and the two agreed to 5e-13 s (trust scan, seed 20, scene
+  // 657). Less this shift, the shadow is where it would be from the run's start.
+  double start = 0.0;
+  // Every angle a few ulps on (4ε·(1 + |φ|)), the resting pellets' too (not those exactly on a
+  // limiter's angle), every other pellet's back: the round-off a run carries, as the chain
+  // amplifies it (pellets at one place moved alike would keep their gaps; 64 ulps over-stated
+  // the scatter of seed 28 scene 859 sixtyfold). The shadow cannot move resting
+  // pellets (it would break equilibria), and a chain from rest amplified round-off it did not
+  // see: two resting pellets 1e-6 rad apart, one forced, collided 112 times, and the last
+  // collision scattered by ±3e-9 s over every tolerance from 1e-8 to 1e-13 while a run and its
+  // shadow agreed to 1e-11 s (seed 28, scene 859).
+  double round_off = 0.0;
+};
+
+// The shadow's instants with their StartShift; none where the path holds what the saltations do
+// not cover (pellets moving together).
 class StartShifts {
  public:
   StartShifts(const Model& model, const RunResult& shadow) {
+    if (shadow.path.empty()) return;
     const Model moved = check_model(model);
-    Vec delta(2 * model.size());
+    const double ulps = 4.0 * std::numeric_limits<double>::epsilon();
+    Mat deltas = Mat::Zero(2 * model.size(), 2);
     for (int i = 0; i < model.size(); ++i) {
-      delta[2 * i] = moved.pellets[i].phi0 - model.pellets[i].phi0;
-      delta[2 * i + 1] = moved.pellets[i].dphi0 - model.pellets[i].dphi0;
+      const Pellet& p = model.pellets[i];
+      deltas(2 * i, 0) = moved.pellets[i].phi0 - p.phi0;
+      deltas(2 * i + 1, 0) = moved.pellets[i].dphi0 - p.dphi0;
+      const bool on_a_limiter = std::any_of(model.limiters.begin(), model.limiters.end(),
+                                            [&](const Limiter& l) { return l.angle == p.phi0; });
+      const double sign = i % 2 == 0 ? 1.0 : -1.0;
+      deltas(2 * i, 1) = on_a_limiter ? 0.0 : sign * ulps * (1.0 + std::abs(p.phi0));
+      deltas(2 * i + 1, 1) = sign * ulps * p.dphi0;
     }
-    if (shadow.path.empty() || delta.isZero(0.0)) return;
     // A tenth of the shift is all the estimate needs: DOPRI5 at rtol 1e-4 put the shifts within
     // 1 % of the difference of shadows started with and without the 64 ulps.
-    const InstantShifts s = instant_shifts(model, shadow.path, delta, 1e-4);
-    for (std::size_t k = 0; k < s.dt.size(); ++k)
-      if (!shadow.path[k].events.empty()) at_.emplace_back(shadow.path[k].t, s.dt[k]);
+    const InstantShifts s = instant_shifts(model, shadow.path, deltas, 1e-4);
+    for (Eigen::Index k = 0; k < s.dt.rows(); ++k)
+      if (!shadow.path[k].events.empty())
+        at_.push_back({shadow.path[k].t, {s.dt(k, 0), s.dt(k, 1)}});
   }
-  // The shift of the instant at t (0 where none is known).
-  double at(double t) const {
+  // The instant at t's (none where none is known).
+  StartShift at(double t) const {
     const double same = 1e-12 * (1.0 + std::abs(t));
     auto it = std::lower_bound(at_.begin(), at_.end(), t - same,
-                               [](const std::pair<double, double>& x, double v) { return x.first < v; });
-    return it != at_.end() && it->first <= t + same ? it->second : 0.0;
+                               [](const Instant& x, double v) { return x.t < v; });
+    return it != at_.end() && it->t <= t + same ? it->shift : StartShift{};
   }
 
  private:
-  std::vector<std::pair<double, double>> at_;  // (time, shift), in time order
+  struct Instant {
+    double t;
+    StartShift shift;
+  };
+  std::vector<Instant> at_;  // in time order
 };
 
 // The final states' difference completes a report.
@@ -312,9 +337,11 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     if (t > t_common) break;
     // The shadow as it is, and less its start's shift: the start is there to part round-off the
     // run and the shadow would share (check_model), the shift to keep it from hiding the error.
-    const double dt = std::max(std::abs(t - b[k].t), std::abs(t - (b[k].t - shifts.at(b[k].t))));
-    const double round_off = std::max(1e3 * std::numeric_limits<double>::epsilon() * (time_scale + t),
-                                      placement_round_off(a[k]));
+    const StartShift shift = shifts.at(b[k].t);
+    const double dt = std::max(std::abs(t - b[k].t), std::abs(t - (b[k].t - shift.start)));
+    const double round_off =
+        std::max({1e3 * std::numeric_limits<double>::epsilon() * (time_scale + t),
+                  placement_round_off(a[k]), std::abs(shift.round_off)});
     // Times that differ by more than a tenth of the time to the neighbouring events, and by
     // more than the tolerance explains (a thousand times rtol over the time scale and the time
     // run: sensitive dynamics amplified them), leave the events' order and spacing unresolved,
@@ -336,7 +363,7 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     }
     // Errors the run and its shadow share, the shadow cannot see: the round-off of event times
     // (a thousand ulps of the time scale and the time run, or of the angles an impact is found
-    // at), from a summed chatter on, the summation's own error (chatter_time²/T0, docs/MODEL.md:
+    // at, or of the start as the chain amplifies it), from a summed chatter on, the summation's own error (chatter_time²/T0, docs/MODEL.md:
     // both sum the same way), and a bias of one method.
     summed = summed || a[k].kind == EventKind::chatter;
     const double chatter = summed ? tol.chatter_time * tol.chatter_time / time_scale : 0.0;
