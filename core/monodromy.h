@@ -5,6 +5,7 @@
 // eigenvalues are the Floquet multipliers (docs/ORBITS.md).
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -46,12 +47,13 @@ PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& p
 
 // How far each instant of a path moves, to first order, when its initial (phi, dphi) move by
 // each column of deltas (2N × m), integrated together: s, one row per segment, one column per
-// perturbation.
+// perturbation; rows for the first segments only where budget_ms (wall clock) ran out.
 struct InstantShifts {
   Mat dt;
   std::string unsupported;  // non-empty: the path holds what the saltations do not cover; no dt
 };
 InstantShifts instant_shifts(const Model& model, const std::vector<PathSegment>& path,
-                             const Mat& deltas, double rtol);
+                             const Mat& deltas, double rtol,
+                             double budget_ms = std::numeric_limits<double>::infinity());
 
 }  // namespace vibro

@@ -451,7 +451,8 @@ RunResult simulate(const Model& model, const SimOptions& options) {
   SimOptions shadow = check_options(options);
   shadow.deadline_ms = options.deadline_ms - run.stats.wall_ms;  // one deadline for both
   const Model perturbed = check_model(model);
-  apply_check(model, Simulation(perturbed, shadow, nullptr).run(), run);
+  const RunResult checked = Simulation(perturbed, shadow, nullptr).run();
+  apply_check(model, checked, run, shadow.deadline_ms - checked.stats.wall_ms);
   return run;
 }
 

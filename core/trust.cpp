@@ -124,7 +124,7 @@ struct StartShift {
 // not cover (pellets moving together).
 class StartShifts {
  public:
-  StartShifts(const Model& model, const RunResult& shadow) {
+  StartShifts(const Model& model, const RunResult& shadow, double budget_ms) {
     if (shadow.path.empty()) return;
     const Model moved = check_model(model);
     const double ulps = 4.0 * std::numeric_limits<double>::epsilon();
@@ -141,7 +141,7 @@ class StartShifts {
     }
     // A tenth of the shift is all the estimate needs: DOPRI5 at rtol 1e-4 put the shifts within
     // 1 % of the difference of shadows started with and without the 64 ulps.
-    const InstantShifts s = instant_shifts(model, shadow.path, deltas, 1e-4);
+    const InstantShifts s = instant_shifts(model, shadow.path, deltas, 1e-4, budget_ms);
     for (Eigen::Index k = 0; k < s.dt.rows(); ++k)
       if (!shadow.path[k].events.empty())
         at_.push_back({shadow.path[k].t, {s.dt(k, 0), s.dt(k, 1)}});
@@ -321,7 +321,8 @@ Model check_model(const Model& model) {
   return m;
 }
 
-TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow) {
+TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow,
+                         double budget_ms) {
   TrustReport r;
   const double t_common = std::min(run.stats.t_reached, shadow.stats.t_reached);
   r.trusted_until = t_common;
@@ -329,7 +330,7 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
   const double time_scale = tol.time_scale;
   const std::vector<Event> a = by_instant(run.events), b = by_instant(shadow.events);
   const std::size_t n = std::min(a.size(), b.size());
-  const StartShifts shifts(model, shadow);
+  const StartShifts shifts(model, shadow, budget_ms);
   std::size_t k = 0;
   bool summed = false;  // a chatter series was summed at or before event k
   for (; k < n && listed_alike(a[k], b[k]); ++k) {
@@ -394,9 +395,9 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
   return finish(model, run, shadow, r);
 }
 
-void apply_check(const Model& model, const RunResult& shadow, RunResult& run) {
+void apply_check(const Model& model, const RunResult& shadow, RunResult& run, double budget_ms) {
   const auto started = std::chrono::steady_clock::now();
-  const TrustReport r = compare_runs(model, run, shadow);
+  const TrustReport r = compare_runs(model, run, shadow, budget_ms);
   const double compared_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
   Stats& st = run.stats;

@@ -1,10 +1,12 @@
 // Whether a run can vouch for its events (API.md, "Trust fields"). The run is checked against a
-// shadow solution of the same scene at a thirtieth or a hundredth of its tolerances, compared
-// event by event: where both list the same events, their differences estimate the run's error
-// (the shadow's own error is several times smaller); where they list different events, the
-// sequence depends on differences below the tolerance, and the run is not trusted from there on.
+// shadow solution of the same scene at a hundredth of its tolerances, compared event by event:
+// where both list the same events, their differences estimate the run's error (the shadow's own
+// error is several times smaller), with what round-off does to them from the variational
+// equations along the shadow's path; where they list different events, the sequence depends on
+// differences below the tolerance, and the run is not trusted from there on.
 #pragma once
 
+#include <limits>
 #include <vector>
 
 #include "core/model.h"
@@ -14,11 +16,10 @@
 namespace vibro {
 
 // The shadow's options: the same scene, limits and deadline, nothing recorded but its path (where
-// its start's shifts are found, compare_runs), not checked itself, at tolerances divided by a hundred (down to the smallest the integrators accept):
-// DOPRI5 checked by DOP853, Radau IIA by `auto`, DOP853 at rtol 1e-8 and below by itself;
-// above rtol 1e-8 DOP853 by DOPRI5 at a thirtieth of rtol and a three-hundredth of atol.
-// `auto` as its explicit method is: weighing DOPRI5 against DOP853 (rtol 1e-6 and looser) by
-// `auto` on DOP853, on DOP853 by `auto` on DOPRI5 above rtol 1e-8 and by itself below.
+// its start's shifts are found, compare_runs), not checked itself, at a hundredth of both
+// tolerances (down to the smallest the integrators accept) with its longest step halved: DOPRI5
+// checked by DOP853, Radau IIA by `auto`, DOP853 by itself, and `auto` by itself, on DOP853 where
+// it weighs DOPRI5 against DOP853 (rtol 1e-6 and looser).
 SimOptions check_options(const SimOptions& run);
 
 // The shadow's scene: the run's, its initial speeds 64 ulps faster and the angles of the pellets
@@ -60,11 +61,14 @@ struct TrustReport {
 // pellets and limiter are the same and the times differ by less than a tenth of the time to the neighbouring events;
 // trust ends ten errors before the first events that they do not (but not before the last
 // they list alike), or where either run stopped.
-TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow);
+// budget_ms (wall clock) bounds the shifts: past it the shadow's times are taken as they are.
+TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow,
+                         double budget_ms = std::numeric_limits<double>::infinity());
 
 // Fills the trust fields of `run` (stats and a warning a person reads) from the comparison with
 // its shadow, and error_estimate as the largest of the estimates in one unit.
-void apply_check(const Model& model, const RunResult& shadow, RunResult& run);
+void apply_check(const Model& model, const RunResult& shadow, RunResult& run,
+                 double budget_ms = std::numeric_limits<double>::infinity());
 
 // Fills them from the run alone, when the check is turned off: the energy balance and the first
 // integral only, which do not see event times.

@@ -256,9 +256,10 @@ impacts on one limiter as one (how a cascade is listed depends on which gaps its
 closed, one collision of three pellets or thirty of alternating pairs; its outcome does not):
 
 - `stats.event_time_error` is the largest time difference of the events listed alike (kind,
-  pellets, limiter), and never below the errors the two runs share and the shadow cannot see: the
-  round-off of event times (`1e3·ε·(T0 + t)`, `T0 = sqrt(R/g)`, or `100·ε·(1 + |φ|)` over an
-  impact's approach speed), from a summed chatter on the summation's own error (`1e-8·T0`,
+  pellets, limiter; the shadow's time taken as it is and less what its start moved it, below),
+  and never below the errors the two runs share and the shadow cannot see: the round-off of event
+  times (`1e3·ε·(T0 + t)`, `T0 = sqrt(R/g)`, or `100·ε·(1 + |φ|)` over an impact's approach
+  speed, or the start's round-off as the chain amplifies it, below), from a summed chatter on the summation's own error (`1e-8·T0`,
   docs/MODEL.md), and a hundredth of what the tolerance asks, `1e-2·rtol·(T0 + t)` (a run and its
   shadow of one method that agree far better than asked may share a bias);
 - `stats.state_error` is the largest difference of the final states (φ, and φ̇ times `T0`);
@@ -281,12 +282,30 @@ closed, one collision of three pellets or thirty of alternating pairs; its outco
   close on at one instant, whose order (and with it their outcome) is decided below the contact
   radius.
 
-Why this mechanism: the shadow's error is several times smaller than the run's, so the difference estimates
-the run's error without a model of how errors propagate through impacts, sticking and chatter
-(the variational equations with saltation would need one per event kind, and would still not see
-a sequence that changes: a grazing impact, a stick test at its threshold). The shadow sees both.
-Its blind spot is an error the run and its shadow share: the same method's bias on an
-ill-conditioned decision. The differential tests below count how often that happens. Why a
+Why this mechanism: the shadow's error is several times smaller than the run's, so the
+difference estimates the run's error through impacts, sticking and chatter, and sees a sequence
+that changes (a grazing impact, a stick test at its threshold), which no propagation of errors
+along one path can. Where a single shadow is blind, the variational equations with saltation
+(the machinery of the Floquet multipliers, docs/ORBITS.md) see along its path, at a small cost:
+how far its own start 64 ulps ahead moved each instant, and how far a few ulps of every angle
+move it (`instant_shifts` in core/monodromy.h: DOPRI5 at rtol 1e-4 over each interval, steps of
+up to two radians of a swing or a forcing; the saltation at each instant; the instant's time
+moved by `−∇h·δy / (∇h·f + ∂h/∂t)` of its first crossing; within a few percent of central
+differences of plain runs). A chain that amplifies errors amplifies the shadow's start as it
+amplifies the run's own error, and where the two were alike the shadow landed on the run: Radau
+IIA at rtol 1e-8 put the 20th event of seed 20 scene 657 6.39e-9 s early, its shadow's start put
+the shadow's 6.35e-9 s early, and the two agreed to 5e-13 s. Each shadow time is therefore taken
+as it is and less its start's shift (then 6.36e-9 s from the run). Where nothing moves, the
+shadow starts where the run does and shares the round-off a chain amplifies: the estimate is
+never below the start's round-off as the chain amplifies it (every angle `4ε·(1 + |φ|)` on, the
+resting pellets' too, every other pellet's back). Two resting pellets 1e-6 rad apart at
+φ ≈ −6.56, one forced, collide 112 times, and round-off scatters the last collision by 3e-9 s
+over every tolerance from 1e-8 to 1e-13, where DOP853 at rtol 1e-9 and its shadow agreed to
+3e-10 s (seed 28, scene 859; now estimated at 1.6e-8 s). Where the shadow's path holds pellets
+moving together (which the saltations do not cover), and past its first 20,000 instants, the
+shadow is taken as it is. The remaining blind spot is an error the run and its shadow share
+there: the same method's bias on an ill-conditioned decision. The differential tests below
+count how often that happens. Why a
 hundredth: a tolerance divided by `q` costs `q^(1/(p+1))` times the steps of a method of order p
 (1.67× for DOP853; DOP853 at a hundredth of DOPRI5's tolerance takes fewer steps than DOPRI5
 itself), events cost the same in both, and the estimate errs by a few percent where the error
@@ -369,21 +388,31 @@ What remains: the trust check's blind spot, an error that a run and its shadow s
 (near misses and near-simultaneous impacts end the trust; the trust ends ten errors before the
 runs part; event times have the steps' accuracy; the shadow runs at a hundredth of the tolerance
 with its longest step halved, with another method where one method errs alike, a round-off
-ahead (speeds 64 ulps faster, moving pellets 64 ulps on) so that the two never round alike; a
-spacing the two put apart ends the trust) but not removed. Over trust scans of 32,000 scenes × 20
-runs (seeds 1–32: `trust_scan --count 1000 --seed S --jobs 2 --out runs.csv --dump DIR`, which
-writes each flagged scene as scene JSON; `trust_scan --seed S --show I:METHOD:RTOL` prints one
-run beside its shadow, the reference and its alternates, event by event), 8 estimates fell more
-than ten times short of a true error above 1 % of what the tolerance asks (45 with the check and
-event core as they were before 2026-11-24, 21 at the start of the session of 2026-11-24 (later),
-13 at its end against the scan's earlier references), and 2 runs vouched for events that the
-references list otherwise, both in one scene. The runs whose true error within their trust
-exceeds what their tolerance asks went from 24,860 to 7,532 (the event times on the steps'
-accuracy and their polish), the share trusted to their end from 98.39 % to 98.49 %, and the
-median over-estimate is 2.42 (1.05 before: the runs are more accurate, their shadows'
-differences less so; DOP853 at rtol 1e-6 over-estimates by a median 75×, held up by the floor of
-a hundredth of what the tolerance asks). The check costs a median 2.25× the bare run for DOP853,
-2.24× for `auto`, 2.09× for DOPRI5, 1.31× for Radau IIA.
+ahead so that the two never round alike, its times taken less what that start moved them, and
+the start's round-off as a chain amplifies it counted in; a spacing the two put apart ends the
+trust) but not removed. Over trust scans of 32,000 scenes × 20 runs (seeds 1–32: `trust_scan
+--count 1000 --seed S --jobs 2 --out runs.csv --dump DIR`, which writes each flagged scene as
+scene JSON; `trust_scan --seed S --show I:METHOD:RTOL` prints one run beside its shadow, the
+reference and its alternates, event by event), no estimate fell more than ten times short of a
+true error above 1 % of what the tolerance asks, and no run vouched for events that the
+references list otherwise. Before, 45 estimates were short with the check and event core as
+they were before 2026-11-24, and 8 short with 2 runs vouching for wrong events (in one scene)
+before the last three changes, each judged by the full scan:
+
+| change | short | wrong events vouched for | trusted to the end | median estimate / truth |
+|---|---:|---:|---:|---:|
+| before | 8 | 2 | 98.49 % | 2.42 |
+| angles held to the tolerance by their distance from the bottom, not their turns (docs/MODEL.md) | 6 | 0 | 98.58 % | 2.47 |
+| the shadow's times also taken less what its start moved them | 2 | 0 | 98.58 % | 2.48 |
+| the start's round-off as the chain amplifies it counted in | 0 | 0 | 98.58 % | 2.48 |
+
+The runs whose true error within their trust exceeds what their tolerance asks went from 24,860
+to 7,404 (the event times on the steps' accuracy and their polish, and the angles' tolerance),
+and the median over-estimate is 2.48 (DOP853 at rtol 1e-6 over-estimates by a median 76×, held
+up by the floor of a hundredth of what the tolerance asks). The check costs a median 2.64× the
+bare run for DOP853, 2.61× for `auto`, 2.45× for DOPRI5 (2.89× at rtol 1e-6, where the bare run
+is cheapest), 1.40× for Radau IIA; the shifts add 0.3–0.4× of those (2.25×, 2.25×, 2.09×, 1.31×
+without them).
 
 The scan counts a true error net of the spread of the reference's alternates, each as valid as
 the reference: DOPRI5 at rtol 1e-13, and DOP853 with the moving pellets, then every pellet, an ulp
@@ -391,39 +420,20 @@ on. An error below that spread is not known: a chain of a thousand collisions 4e
 its round-off to 1.3e-7 s from the reference, where DOPRI5 happened to stay within 1.7e-8 s
 (seed 18, scene 598); pellets at rest 2e-9 rad apart, struck together at 1e-4 rad/s by a force
 at 5243 rad/s, collide where an ulp of their angles moves the tenth impact by 4e-7 s (seed 28,
-scene 416). With DOPRI5 alone as the alternate the same runs counted 13 short.
+scene 416).
 
-These ten runs (8 short, 2 vouching for wrong events) fall in two kinds:
-
-- *A perturbation as large as the run's error* (6 runs: seed 2 scene 654, DOP853 at rtol 1e-6;
-  seed 5 scene 425 and seed 10 scene 833, DOP853 and `auto` at 1e-10; seed 20 scene 657, Radau
-  IIA at 1e-8). The shadow starts 64 ulps ahead, and a chain that amplifies errors a
-  hundred-thousandfold amplifies that start as it amplifies the run's own error. Where the two
-  are alike in size and sign, the shadow lands where the run did: the reference DOP853 at rtol
-  1e-13 started 64 ulps ahead puts the 20th event of seed 20 scene 657 6.35e-9 s early, Radau
-  IIA at 1e-8 puts it 6.39e-9 s early, and the shadow agrees with the run to 5e-13 s. A single
-  perturbed shadow cannot tell these apart. Over the same scans (against the earlier
-  references, where 64 ulps counted 13 short and 2 wrong) a start 8 ulps ahead cleared them and
-  brought back the round-off chain the 64 ulps were for (14 short, 9 wrong events vouched for);
-  256 ulps moved the coincidence to Radau IIA at rtol 1e-10 (12 short, 2 wrong); 64 ulps behind
-  moved it elsewhere (15 short, 3 wrong); a start a thousandth of the tolerance ahead, a test of
-  the scene's conditioning rather than of the run, took the runs trusted to their end from
-  98.5 % to 87.6 %.
-- *Chains that start at rest* (4 runs: seed 11 scene 599, three pellets at rest near the top,
-  DOP853 and `auto` at rtol 1e-8 vouching for wrong events after 258 impacts with an estimate
-  three times short, Radau IIA at 1e-9; seed 16 scene 951, two resting pellets 2e-9 rad apart
-  that collide 8,000 times, DOPRI5 at 1e-6). Nothing moves at the start, so the shadow starts
-  where the run does, and the round-off that the chain amplifies (an ulp of the resting angles
-  moves the last collisions by 3e-7 s) is the two runs' alone. Moving the forcing's phase 64
-  ulps in the shadow cleared all four, but 1.2 % of the runs lost their trust (a reversal near a
-  tangency moved 8 ms under a phase 1e-13 rad on, where the references agreed with the run to
-  4e-14 s). Moving resting pellets' angles too cleared only Radau IIA's, and broke equilibria and
-  stick decisions (2.4 % of the runs lost their trust); moving only the resting pellets that
-  slide at once (outside their friction cone by a thousandth) kept the trust (98.48 %), cleared
-  none of the four and traded the coincidences above for others (9 short). In seed 16 scene 951 every run takes one step per flight, and the last of 8,073
-  collisions scatters by ±1.5e-6 s over every method and tolerance without converging (DOP853
-  at rtol 1e-12 lands 1e-6 s from the reference at 1e-13): the alternates' spread, 2.7e-7 s,
-  under-states what is unknown there, and its flag says more about the scan than the run.
+What these changes closed had resisted every variant of a single perturbed shadow tried
+before them. *A perturbation
+as large as the run's error* (seeds 2/654, 5/425, 10/833, 20/657): a start 8 ulps ahead brought
+back the round-off chain the 64 ulps were for (14 short, 9 wrong events vouched for), 256 ulps
+moved the coincidence to Radau IIA at rtol 1e-10 (12 short), 64 ulps behind moved it elsewhere
+(15 short, 3 wrong), and a start a thousandth of the tolerance ahead took the runs trusted to
+their end from 98.5 % to 87.6 %. *Chains that start at rest* (seeds 11/599, 16/951, 28/859):
+moving the forcing's phase 64 ulps in the shadow cost 1.2 % of the runs their trust (a reversal
+near a tangency moved 8 ms under a phase 1e-13 rad on, where the references agreed with the run
+to 4e-14 s), moving resting pellets' angles broke equilibria and stick decisions (2.4 % lost),
+and moving only the resting pellets that slide at once cleared none. The shifts move nothing:
+the shadow's sequence is the run's, and only the estimate learns what the start does.
 
 Tried over the same scans and not landed, earlier: a shadow started from a model perturbed by a
 tenth of the tolerance (R·(1 + rtol/10)), to show how a scene amplifies errors where run and

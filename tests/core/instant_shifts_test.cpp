@@ -100,6 +100,10 @@ TEST(InstantShifts, APathKeptToALimitEndsThere) {
   const InstantShifts b = instant_shifts(m, kept.path, delta, 1e-4);
   ASSERT_EQ(b.dt.rows(), 4);
   EXPECT_EQ(a.dt.topRows(4), b.dt);
+  // A spent budget (the run's deadline) leaves them unknown, without a failure.
+  const InstantShifts none = instant_shifts(m, whole.path, delta, 1e-4, -1.0);
+  EXPECT_EQ(none.dt.rows(), 0);
+  EXPECT_TRUE(none.unsupported.empty());
 }
 
 // Pellets moving together are outside what the saltations cover: no shifts, and the reason.
