@@ -139,7 +139,7 @@ class StartShifts {
       deltas(2 * i, 1) = on_a_limiter ? 0.0 : sign * ulps * (1.0 + std::abs(p.phi0));
       deltas(2 * i + 1, 1) = sign * ulps * p.dphi0;
     }
-    // A tenth of the shift is all the estimate needs: DOPRI5 at rtol 1e-4 put the shifts within
+    // A tenth of the shift is all the estimate needs: `auto` at rtol 1e-4 put the shifts within
     // 1 % of the difference of shadows started with and without the 64 ulps.
     const InstantShifts s = instant_shifts(model, shadow.path, deltas, 1e-4, budget_ms);
     for (Eigen::Index k = 0; k < s.dt.rows(); ++k)

@@ -288,7 +288,7 @@ that changes (a grazing impact, a stick test at its threshold), which no propaga
 along one path can. Where a single shadow is blind, the variational equations with saltation
 (the machinery of the Floquet multipliers, docs/ORBITS.md) see along its path, at a small cost:
 how far its own start 64 ulps ahead moved each instant, and how far a few ulps of every angle
-move it (`instant_shifts` in core/monodromy.h: DOPRI5 at rtol 1e-4 over each interval, steps of
+move it (`instant_shifts` in core/monodromy.h: `auto` at rtol 1e-4 over each interval, steps of
 up to two radians of a swing or a forcing; the saltation at each instant; the instant's time
 moved by `−∇h·δy / (∇h·f + ∂h/∂t)` of its first crossing; within a few percent of central
 differences of plain runs). A chain that amplifies errors amplifies the shadow's start as it
@@ -409,9 +409,9 @@ before the last three changes, each judged by the full scan:
 The runs whose true error within their trust exceeds what their tolerance asks went from 24,860
 to 7,404 (the event times on the steps' accuracy and their polish, and the angles' tolerance),
 and the median over-estimate is 2.48 (DOP853 at rtol 1e-6 over-estimates by a median 76×, held
-up by the floor of a hundredth of what the tolerance asks). The check costs a median 2.64× the
-bare run for DOP853, 2.61× for `auto`, 2.45× for DOPRI5 (2.89× at rtol 1e-6, where the bare run
-is cheapest), 1.40× for Radau IIA; the shifts add 0.3–0.4× of those (2.25×, 2.25×, 2.09×, 1.31×
+up by the floor of a hundredth of what the tolerance asks). The check costs a median 2.62× the
+bare run for DOP853, 2.61× for `auto`, 2.43× for DOPRI5 (2.93× at rtol 1e-6, where the bare
+run is cheapest), 1.40× for Radau IIA; the shifts add 0.3–0.4× of those (2.25×, 2.25×, 2.09×, 1.31×
 without them).
 
 The scan counts a true error net of the spread of the reference's alternates, each as valid as
