@@ -54,8 +54,9 @@ struct SlidingLaw {
     double phi, dphi;
   };
   Slopes slopes(double cos_phi, double sin_phi, double dphi, int s, int side) const {
-    return paper ? Slopes{-gR * (cos_phi - s * mu * sin_phi), -2.0 * s * mu * dphi}
-                 : Slopes{-gR * cos_phi + s * mu * side * gR * sin_phi, -2.0 * s * mu * side * dphi};
+    return paper
+               ? Slopes{-gR * (cos_phi - s * mu * sin_phi), -2.0 * s * mu * dphi}
+               : Slopes{-gR * cos_phi + s * mu * side * gR * sin_phi, -2.0 * s * mu * side * dphi};
   }
   bool paper;
   double R;   // m

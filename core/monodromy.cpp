@@ -274,8 +274,8 @@ InstantShifts instant_shifts(const Model& model, const std::vector<PathSegment>&
   const std::unique_ptr<Stepper> stepper =
       make_stepper(Method::automatic, StepperOptions{rtol, 1e-3 * rtol, 2.0 * longest_step(model)});
   for (std::size_t k = 0; k < path.size(); ++k) {
-    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count() >
-        budget_ms) {
+    if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
+            .count() > budget_ms) {
       out.dt.conservativeResize(static_cast<Eigen::Index>(k), deltas.cols());
       return out;
     }
@@ -284,7 +284,8 @@ InstantShifts instant_shifts(const Model& model, const std::vector<PathSegment>&
       out.dt.resize(0, deltas.cols());
       return out;
     };
-    const PathJacobian S = instant_saltation(model, path[k], k == 0 ? std::vector<int>{} : path[k - 1].normal_sides);
+    const PathJacobian S =
+        instant_saltation(model, path[k], k == 0 ? std::vector<int>{} : path[k - 1].normal_sides);
     if (!S.unsupported.empty()) return unsupported(S.unsupported);
     out.dt.row(static_cast<Eigen::Index>(k)) = S.time_row.transpose() * v;
     if (k + 1 == path.size()) break;  // no instant after the last interval

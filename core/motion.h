@@ -31,6 +31,8 @@ inline int work_index(int pellet) { return 3 * pellet + 2; }
 
 // An angle's distance from the nearest whole turn, that is from the bottom of the circle: the size
 // the tolerances hold it relative to (OdeSystem::period), whatever turns brought it there.
-inline double angle_size(double phi) { return std::abs(std::remainder(phi, 2.0 * std::numbers::pi)); }
+inline double angle_size(double phi) {
+  return std::abs(std::remainder(phi, 2.0 * std::numbers::pi));
+}
 
 }  // namespace vibro

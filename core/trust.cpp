@@ -111,12 +111,12 @@ struct StartShift {
   double start = 0.0;
   // Every angle a few ulps on (4ε·(1 + |φ|)), the resting pellets' too (not those exactly on a
   // limiter's angle), every other pellet's back: the round-off a run carries, as the chain
-  // amplifies it (pellets at one place moved alike would keep their gaps; 64 ulps over-stated
-  // the scatter of seed 28 scene 859 sixtyfold). The shadow cannot move resting
-  // pellets (it would break equilibria), and a chain from rest amplified round-off it did not
-  // see: two resting pellets 1e-6 rad apart, one forced, collided 112 times, and the last
-  // collision scattered by ±3e-9 s over every tolerance from 1e-8 to 1e-13 while a run and its
-  // shadow agreed to 1e-11 s (seed 28, scene 859).
+  // amplifies it. The shadow cannot move resting pellets (it would break equilibria), and a
+  // chain from rest amplified round-off it did not see: two resting pellets 1e-6 rad apart, one
+  // forced, collided 112 times, and the last collision scattered by ±3e-9 s over every
+  // tolerance from 1e-8 to 1e-13 while a run and its shadow agreed to 3e-10 s (seed 28, scene
+  // 859). Pellets at one place moved alike would keep their gaps; 64 ulps over-stated that
+  // scatter sixtyfold.
   double round_off = 0.0;
 };
 
@@ -364,7 +364,8 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     }
     // Errors the run and its shadow share, the shadow cannot see: the round-off of event times
     // (a thousand ulps of the time scale and the time run, or of the angles an impact is found
-    // at, or of the start as the chain amplifies it), from a summed chatter on, the summation's own error (chatter_time²/T0, docs/MODEL.md:
+    // at, or of the start as the chain amplifies it), from a summed chatter on, the summation's
+    // own error (chatter_time²/T0, docs/MODEL.md:
     // both sum the same way), and a bias of one method.
     summed = summed || a[k].kind == EventKind::chatter;
     const double chatter = summed ? tol.chatter_time * tol.chatter_time / time_scale : 0.0;

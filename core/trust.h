@@ -57,11 +57,11 @@ struct TrustReport {
 };
 
 // Compares a run with its shadow, instant by instant, the shadow's times taken as they are and
-// less what its start 64 ulps ahead moved them (from its path). The runs agree on an event when kind,
-// pellets and limiter are the same and the times differ by less than a tenth of the time to the neighbouring events;
-// trust ends ten errors before the first events that they do not (but not before the last
-// they list alike), or where either run stopped.
-// budget_ms (wall clock) bounds the shifts: past it the shadow's times are taken as they are.
+// less what its start 64 ulps ahead moved them (from its path, within budget_ms of wall clock).
+// The runs agree on an event when kind, pellets and limiter are the same and the times differ by
+// less than a tenth of the time to the neighbouring events; trust ends ten errors before the
+// first events that they do not (but not before the last they list alike), or where either run
+// stopped.
 TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow,
                          double budget_ms = std::numeric_limits<double>::infinity());
 

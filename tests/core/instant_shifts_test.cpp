@@ -49,7 +49,8 @@ void expect_shifts_match_differences(const Model& model, const Vec& delta, doubl
     if (e >= ahead.events.size() || e >= behind.events.size()) break;
     if (ahead.events[e].kind != first.kind || behind.events[e].kind != first.kind) break;
     const double differenced = 0.5 * (ahead.events[e].t - behind.events[e].t);
-    EXPECT_NEAR(shifts.dt(static_cast<Eigen::Index>(k), 0), differenced, 2e-2 * std::abs(differenced) + 1e-13)
+    EXPECT_NEAR(shifts.dt(static_cast<Eigen::Index>(k), 0), differenced,
+                2e-2 * std::abs(differenced) + 1e-13)
         << event_kind_name(first.kind) << " at t = " << first.t;
     ++compared;
   }

@@ -1,7 +1,11 @@
 // The regression corpus of tests/reference/corpus/: scenes the engine once got wrong, each with
 // the answer of the independent reference simulator (tests/reference/vibro_ref.py, written from
 // MODEL.md alone). Under every method at rtol 1e-12 the engine lists the same events at the same
-// times and ends in the same states. Regenerate the answers with
+// times, up to where its check stops vouching for them, and ends in the same states. That horizon
+// may fall only at the reference's last instant: a cascade's tail at its accumulation point (the
+// 25th impact of body-slides-through-its-limiter, 1.925908 s) is summed as chatter or resolved
+// impact by impact as round-off falls (Radau IIA built by clang at -O1 did the latter, and its
+// check said so). Regenerate the answers with
 // `/usr/bin/python3 tests/reference/make_corpus.py`.
 #include <gtest/gtest.h>
 
@@ -55,11 +59,20 @@ TEST_P(ReferenceCorpus, EveryScenesEventsAndEndAgreeWithTheReference) {
     o.method = GetParam();
     o.rtol = 1e-12;
     o.atol = 1e-14;
-    o.check = false;
     const RunResult run = simulate(scene.model, o);
     const json& events = expected["events"];
-    ASSERT_EQ(run.events.size(), events.size()) << name;
-    for (std::size_t k = 0; k < events.size(); ++k) {
+    std::size_t vouched = run.events.size();
+    if (run.stats.trusted_until < run.stats.t_reached) {
+      ASSERT_FALSE(events.empty()) << name;
+      EXPECT_GE(run.stats.trusted_until, events.back()["t"].get<double>() - 1e-6) << name;
+      vouched = 0;
+      while (vouched < run.events.size() && run.events[vouched].t < run.stats.trusted_until)
+        ++vouched;
+    } else {
+      ASSERT_EQ(run.events.size(), events.size()) << name;
+    }
+    ASSERT_LE(vouched, events.size()) << name;
+    for (std::size_t k = 0; k < vouched; ++k) {
       const Event& e = run.events[k];
       const json& r = events[k];
       ASSERT_EQ(std::string(event_kind_name(e.kind)), r["kind"].get<std::string>())

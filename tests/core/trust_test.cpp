@@ -363,11 +363,15 @@ TEST(Trust, AShadowsStartDoesNotHideTheRunsError) {
   model.limiters.resize(1);
   model.limiters[0].angle = 0.21564414294698597;
   model.limiters[0].k = 0.0;
-  model.pellets.push_back(Pellet{.m = 2.3276240818214298, .phi0 = 2.6699534824394853,
-                                 .force = {10.38757019961966, 10.502868917619864, 5.338181236492599}});
-  model.pellets.push_back(Pellet{.m = 0.3165216377812751, .phi0 = 2.6699534844394854,
-                                 .dphi0 = -0.1358685125895375,
-                                 .force = {8.672007695525208, 469.28976028734724, 3.8678906118664753}});
+  model.pellets.push_back(
+      Pellet{.m = 2.3276240818214298,
+             .phi0 = 2.6699534824394853,
+             .force = {10.38757019961966, 10.502868917619864, 5.338181236492599}});
+  model.pellets.push_back(
+      Pellet{.m = 0.3165216377812751,
+             .phi0 = 2.6699534844394854,
+             .dphi0 = -0.1358685125895375,
+             .force = {8.672007695525208, 469.28976028734724, 3.8678906118664753}});
   const Checked c = checked_against_reference(model, 0.2675627690885587, Method::radau5, 1e-8);
   ASSERT_EQ(c.run.events.size(), c.reference_events);
   EXPECT_EQ(c.run.stats.trusted_until, c.run.stats.t_reached);
@@ -385,9 +389,12 @@ TEST(Trust, AChainFromRestCarriesItsRoundOff) {
   Model model;
   model.R = 1.1508227890337257;
   model.alpha0 = 0.22369861602783203;
-  model.pellets.push_back(Pellet{.m = 0.07830599519919351, .phi0 = -6.556845082893403,
-                                 .force = {0.1831898416591117, 3.1065686846365335, 0.5044939237283429}});
-  model.pellets.push_back(Pellet{.m = 0.16127683179212465, .phi0 = -6.556844082893403, .force = {}});
+  model.pellets.push_back(
+      Pellet{.m = 0.07830599519919351,
+             .phi0 = -6.556845082893403,
+             .force = {0.1831898416591117, 3.1065686846365335, 0.5044939237283429}});
+  model.pellets.push_back(
+      Pellet{.m = 0.16127683179212465, .phi0 = -6.556844082893403, .force = {}});
   const double t_end = 1.1533740387219833;
   SimOptions o;
   o.t_end = t_end;
