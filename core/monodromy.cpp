@@ -273,17 +273,17 @@ InstantShifts instant_shifts(const Model& model, const std::vector<PathSegment>&
   // for stiff friction: DOPRI5 took the stiff-friction preset's shifts at 3.5 times its run.
   const std::unique_ptr<Stepper> stepper =
       make_stepper(Method::automatic, StepperOptions{rtol, 1e-3 * rtol, 2.0 * longest_step(model)});
+  auto unsupported = [&](const std::string& why) {
+    out.unsupported = why;
+    out.dt.resize(0, deltas.cols());
+    return out;
+  };
   for (std::size_t k = 0; k < path.size(); ++k) {
     if (std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
             .count() > budget_ms) {
       out.dt.conservativeResize(static_cast<Eigen::Index>(k), deltas.cols());
       return out;
     }
-    auto unsupported = [&](const std::string& why) {
-      out.unsupported = why;
-      out.dt.resize(0, deltas.cols());
-      return out;
-    };
     const PathJacobian S =
         instant_saltation(model, path[k], k == 0 ? std::vector<int>{} : path[k - 1].normal_sides);
     if (!S.unsupported.empty()) return unsupported(S.unsupported);
