@@ -109,8 +109,9 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
                                                   std::to_string(model.size()) + "), got " +
                                                   std::to_string(spec.guess.size())};
   for (std::size_t i = 0; i < spec.guess.size(); ++i)
-    if (!std::isfinite(spec.guess[i].phi) || !std::isfinite(spec.guess[i].dphi))
-      return FieldError{"periodic_orbit.guess[" + std::to_string(i) + "]", "expected finite numbers"};
+    if (auto e = validate_state("periodic_orbit.guess[" + std::to_string(i) + "]",
+                                spec.guess[i].phi, spec.guess[i].dphi))
+      return e;
   if (spec.max_iterations < 1 || spec.max_iterations > 1000)
     return FieldError{"periodic_orbit.max_iterations", "expected a whole number from 1 to 1000"};
   return std::nullopt;

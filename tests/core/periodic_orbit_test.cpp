@@ -228,6 +228,17 @@ TEST(PeriodicOrbit, BadRequestsNameTheirField) {
   EXPECT_FALSE(validate_orbit(impact_oscillator(5.0), {}));
 }
 
+// A guess is a starting state and is bounded as phi0 and dphi0 are: far past them an angle keeps
+// no digits below the turn (a guess of 1e17 rad once hung the search).
+TEST(PeriodicOrbit, GuessesAreBoundedLikeStartingStates) {
+  const Model m = impact_oscillator(5.0);
+  EXPECT_EQ(validate_orbit(m, from_guess(1e17, 1.0))->field, "periodic_orbit.guess[0].phi");
+  EXPECT_EQ(validate_orbit(m, from_guess(-1e4 - 1.0, 0.0))->field, "periodic_orbit.guess[0].phi");
+  EXPECT_EQ(validate_orbit(m, from_guess(0.1, 2e7))->field, "periodic_orbit.guess[0].dphi");
+  EXPECT_EQ(validate_orbit(m, from_guess(0.1, NAN))->field, "periodic_orbit.guess[0].dphi");
+  EXPECT_FALSE(validate_orbit(m, from_guess(1e4, -1e7)));
+}
+
 }  // namespace
 }  // namespace vibro
 
