@@ -1,0 +1,83 @@
+#include "server/connection_pool.h"
+
+#include <sys/socket.h>
+
+namespace vibro::server {
+namespace {
+
+// The slot of the connection thread running this code; none on other threads.
+thread_local std::size_t this_slot = static_cast<std::size_t>(-1);
+
+}  // namespace
+
+ConnectionPool::ConnectionPool(int threads)
+    : slots_(static_cast<std::size_t>(threads)), free_(slots_.size()) {
+  for (std::size_t k = 0; k < slots_.size(); ++k) threads_.emplace_back([this, k] { work(k); });
+}
+
+ConnectionPool::~ConnectionPool() {
+  if (!threads_.empty() && threads_.front().joinable()) shutdown();
+}
+
+void ConnectionPool::enqueue(std::function<void()> connection) {
+  std::lock_guard lock(mutex_);
+  waiting_.push_back(std::move(connection));
+  if (waiting_.size() > free_) close_idle();
+  wake_.notify_one();
+}
+
+void ConnectionPool::shutdown() {
+  {
+    std::lock_guard lock(mutex_);
+    shutdown_ = true;
+  }
+  wake_.notify_all();
+  for (std::thread& t : threads_) t.join();
+}
+
+bool ConnectionPool::crowded() const {
+  std::lock_guard lock(mutex_);
+  return waiting_.size() > free_;
+}
+
+void ConnectionPool::idle(const Connection& connection) {
+  if (this_slot >= slots_.size()) return;
+  const int fd = socket_of(connection);
+  std::lock_guard lock(mutex_);
+  slots_[this_slot] = {connection, fd};
+  if (waiting_.size() > free_) close_idle();
+}
+
+void ConnectionPool::busy() {
+  if (this_slot >= slots_.size()) return;
+  std::lock_guard lock(mutex_);
+  slots_[this_slot].fd = -1;
+}
+
+void ConnectionPool::close_idle() {
+  for (Slot& s : slots_) {
+    // The socket may have been closed and its number reused since it went idle: it is shut
+    // only while it is still the same connection.
+    if (s.fd >= 0 && is_connection(s.fd, s.connection)) ::shutdown(s.fd, SHUT_RD);
+    s.fd = -1;
+  }
+}
+
+void ConnectionPool::work(std::size_t slot) {
+  this_slot = slot;
+  std::unique_lock lock(mutex_);
+  for (;;) {
+    wake_.wait(lock, [this] { return shutdown_ || !waiting_.empty(); });
+    if (waiting_.empty()) return;  // shut down, nothing left
+    std::function<void()> connection = std::move(waiting_.front());
+    waiting_.pop_front();
+    --free_;
+    lock.unlock();
+    connection();
+    lock.lock();
+    slots_[slot].fd = -1;
+    ++free_;
+  }
+}
+
+}  // namespace vibro::server
