@@ -120,6 +120,50 @@ if "$vibro" preset paper | "$vibro" simulate - --t-end 0.5 --t-end 0.2 --method 
 import json; r = json.load(open("run.json")); assert r["stats"]["t_reached"] <= 0.2 + 1e-12, r["stats"]'
 then pass "simulate - with overrides"; else fail "simulate - with overrides"; fi
 
+# A scene that cannot be read is named with the reason, by every command that reads one.
+mkdir -p adir
+for command in simulate render work-precision sweep orbit; do
+  usage "$command of a directory" scene "adir is a directory, not a file" -- "$command" adir -o x.png
+  usage "$command of a missing file" scene "nothing.json does not exist" -- "$command" nothing.json
+done
+if (($(id -u) != 0)); then  # root reads any file
+  echo '{}' > secret.json && chmod 000 secret.json
+  usage "an unreadable scene" scene "secret.json cannot be opened: Permission denied" \
+    -- simulate secret.json
+fi
+
+# Output that cannot be written fails loudly, and the file it would replace stays whole. A file
+# size limit (ulimit -f, in KiB, its signal ignored) fails a write as a full disk does.
+limited() {  # limited KIB ARGS...: vibro ARGS with files limited to KIB
+  local kib="$1"
+  shift
+  (trap '' XFSZ; ulimit -f "$kib"; exec "$vibro" "$@")
+}
+# wont_write NAME FILE KIB ARGS...: vibro ARGS exits 1 naming -o, FILE keeps its bytes and no
+# temporary file is left beside it.
+wont_write() {
+  local name="$1" file="$2" kib="$3" status=0
+  shift 3
+  echo "the good result" > "$file"
+  limited "$kib" "$@" > out.txt 2> err.txt || status=$?
+  if ((status == 1)) && grep -q '"field":"-o"' err.txt && grep -q "cannot be written" err.txt \
+      && [[ "$(cat "$file")" == "the good result" ]] && ! ls -A | grep -q '\.tmp-'; then
+    pass "$name"; else fail "$name (exit $status)"; cat err.txt; ls -A; fi
+}
+wont_write "simulate -o on a full disk" run.json 1 simulate --preset paper -o run.json
+wont_write "simulate -o CSV on a full disk" run.csv 1 simulate --preset paper -o run.csv
+wont_write "render -o on a full disk" paper.png 1 render --preset paper --t-end 2 -o paper.png
+wont_write "orbit -o on a full disk" orbit.json 1 orbit --preset impact-oscillator -o orbit.json
+wont_write "work-precision -o on a full disk" wp.svg 1 work-precision --preset paper --t-end 1 \
+  --repeats 1 -o wp.svg
+status=0
+"$vibro" simulate --preset paper --t-end 1 > /dev/full 2> err.txt || status=$?
+if ((status == 1)) && grep -q '"field":"stdout"' err.txt; then pass "simulate > /dev/full fails"
+else fail "simulate > /dev/full fails (exit $status)"; cat err.txt; fi
+status=0
+"$vibro" presets > /dev/full 2> err.txt || status=$?
+if ((status == 1)); then pass "presets > /dev/full fails"; else fail "presets > /dev/full fails"; fi
+
 # The serve flags reach the config: the limits and workers the server reports.
 "$vibro" serve --port 0 --quiet --threads 3 --max-t-end 50 --deadline-ms 250 --max-pixels 1e6 \
   --cache-mib 8 > serve.out 2> serve.err &
