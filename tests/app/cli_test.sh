@@ -164,6 +164,41 @@ status=0
 "$vibro" presets > /dev/full 2> err.txt || status=$?
 if ((status == 1)); then pass "presets > /dev/full fails"; else fail "presets > /dev/full fails"; fi
 
+# A sweep on a full disk stops once its checkpoint cannot be written, keeps the old output and
+# the chains finished whole, and --resume completes it to the output of a run never stopped.
+"$vibro" preset impact-oscillator | python3 -c '
+import json, sys
+s = json.load(sys.stdin)
+s["sweep"].update(count=12, continuation="none", transient=5, record=20)
+json.dump(s, open("small.json", "w"))'
+"$vibro" sweep small.json -o fresh.csv --threads 2 2> err.txt || cat err.txt
+wont_write "sweep -o on a full disk" out.csv 8 sweep small.json -o out.csv --threads 2
+if grep -q "chains it holds whole are kept" err.txt && [[ -s out.csv.partial ]]; then
+  pass "the stopped sweep's checkpoint is kept"; else fail "the stopped sweep's checkpoint is kept"; fi
+cp out.csv.partial whole.partial
+
+# resume_refused NAME WHAT PYTHON: the checkpoint changed by PYTHON (on bytes b, its header line
+# h and records from r) makes --resume exit 2 naming --resume with WHAT in its message.
+resume_refused() {
+  cp whole.partial out.csv.partial
+  python3 -c "
+b = bytearray(open('out.csv.partial', 'rb').read()); r = b.index(b'\n') + 1
+$3
+open('out.csv.partial', 'wb').write(b)"
+  usage "$1" --resume -- sweep small.json -o out.csv --resume
+  grep -q "$2" err.txt || { fail "$1: the message says $2"; cat err.txt; }
+}
+resume_refused "--resume refuses a flipped bit" "record 1 (at byte .*) fails its checksum" \
+  "b[r + 40] ^= 1"
+resume_refused "--resume refuses a relabelled chain" "fails its checksum" "b[r + 20] ^= 3"
+resume_refused "--resume refuses another scene's checkpoint" "belongs to another scene" "b[r - 3] ^= 1"
+resume_refused "--resume refuses a duplicated record" "which an earlier record holds" \
+  "import struct; n = 8 + struct.unpack('=Q', bytes(b[r:r + 8]))[0] + 4; b += b[r:r + n]"
+cp whole.partial out.csv.partial
+if "$vibro" sweep small.json -o out.csv --resume --threads 2 2> err.txt && cmp -s out.csv fresh.csv \
+    && [[ ! -e out.csv.partial ]]; then pass "--resume completes the stopped sweep"
+else fail "--resume completes the stopped sweep"; cat err.txt; fi
+
 # The serve flags reach the config: the limits and workers the server reports.
 "$vibro" serve --port 0 --quiet --threads 3 --max-t-end 50 --deadline-ms 250 --max-pixels 1e6 \
   --cache-mib 8 > serve.out 2> serve.err &
