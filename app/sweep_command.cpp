@@ -5,7 +5,8 @@
 // map, or its largest Lyapunov exponents as a line or a map), and shows a progress bar with the
 // time left on stderr when that is a terminal. With -o, finished chains are kept in OUT.partial
 // as they finish, so a sweep that stops (a failed rank, a killed job, Ctrl-C) resumes with
-// --resume; OUT.partial goes once OUT is written.
+// --resume; OUT.partial goes once OUT is written. A checkpoint that cannot be written (a full
+// disk) stops the sweep; OUT is replaced only by a whole new file (io/whole_file.h).
 #include <unistd.h>
 
 #include <algorithm>
