@@ -6,8 +6,10 @@ set -uo pipefail
 vibro="$1"
 work="$(mktemp -d)"
 server=""
+disk=""
 cleanup() {
   [[ -n "$server" ]] && kill "$server" 2> /dev/null && wait "$server" 2> /dev/null
+  [[ -n "$disk" ]] && umount "$disk"
   rm -rf "$work"
 }
 trap cleanup EXIT
@@ -198,6 +200,21 @@ cp whole.partial out.csv.partial
 if "$vibro" sweep small.json -o out.csv --resume --threads 2 2> err.txt && cmp -s out.csv fresh.csv \
     && [[ ! -e out.csv.partial ]]; then pass "--resume completes the stopped sweep"
 else fail "--resume completes the stopped sweep"; cat err.txt; fi
+
+# A disk that is really full, where a tmpfs may be mounted (root, outside most containers' CI).
+mkdir -p small-disk
+if mount -t tmpfs -o size=64k tmpfs small-disk 2> /dev/null; then
+  disk="$work/small-disk"
+  cp fresh.csv small-disk/out.csv
+  head -c 100000 /dev/zero > small-disk/filler 2> /dev/null  # fills what is left
+  status=0
+  "$vibro" sweep small.json -o small-disk/out.csv 2> err.txt || status=$?
+  if ((status == 1)) && grep -q "No space left on device" err.txt && cmp -s small-disk/out.csv fresh.csv \
+      && [[ "$(ls -A small-disk)" == $'filler\nout.csv' ]]; then
+    pass "sweep -o on a full tmpfs keeps the old output"
+  else fail "sweep -o on a full tmpfs keeps the old output (exit $status)"; cat err.txt; ls -A small-disk; fi
+  umount small-disk && disk=""
+fi
 
 # The serve flags reach the config: the limits and workers the server reports.
 "$vibro" serve --port 0 --quiet --threads 3 --max-t-end 50 --deadline-ms 250 --max-pixels 1e6 \
