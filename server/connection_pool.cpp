@@ -13,16 +13,20 @@ thread_local std::size_t this_slot = static_cast<std::size_t>(-1);
 ConnectionPool::ConnectionPool(int threads)
     : slots_(static_cast<std::size_t>(threads)), free_(slots_.size()) {
   for (std::size_t k = 0; k < slots_.size(); ++k) threads_.emplace_back([this, k] { work(k); });
+  watcher_ = std::thread([this] { watch(); });
 }
 
 ConnectionPool::~ConnectionPool() {
-  if (!threads_.empty() && threads_.front().joinable()) shutdown();
+  if (watcher_.joinable()) shutdown();
 }
 
 void ConnectionPool::enqueue(std::function<void()> connection) {
   std::lock_guard lock(mutex_);
   waiting_.push_back(std::move(connection));
-  if (waiting_.size() > free_) close_idle();
+  if (waiting_.size() > free_) {
+    close_idle();
+    crowd_.notify_one();
+  }
   wake_.notify_one();
 }
 
@@ -32,7 +36,9 @@ void ConnectionPool::shutdown() {
     shutdown_ = true;
   }
   wake_.notify_all();
+  crowd_.notify_all();
   for (std::thread& t : threads_) t.join();
+  watcher_.join();
 }
 
 bool ConnectionPool::crowded() const {
@@ -44,8 +50,7 @@ void ConnectionPool::idle(const Connection& connection) {
   if (this_slot >= slots_.size()) return;
   const int fd = socket_of(connection);
   std::lock_guard lock(mutex_);
-  slots_[this_slot] = {connection, fd};
-  if (waiting_.size() > free_) close_idle();
+  slots_[this_slot] = {connection, fd, Clock::now()};
 }
 
 void ConnectionPool::busy() {
@@ -55,11 +60,25 @@ void ConnectionPool::busy() {
 }
 
 void ConnectionPool::close_idle() {
+  const Clock::time_point before = Clock::now() - kIdleGrace;
   for (Slot& s : slots_) {
+    if (s.fd < 0 || s.idle_since > before) continue;
     // The socket may have been closed and its number reused since it went idle: it is shut
     // only while it is still the same connection.
-    if (s.fd >= 0 && is_connection(s.fd, s.connection)) ::shutdown(s.fd, SHUT_RD);
+    if (is_connection(s.fd, s.connection)) ::shutdown(s.fd, SHUT_RD);
     s.fd = -1;
+  }
+}
+
+void ConnectionPool::watch() {
+  std::unique_lock lock(mutex_);
+  while (!shutdown_) {
+    if (waiting_.size() > free_) {
+      crowd_.wait_for(lock, kIdleGrace / 4);
+      close_idle();
+    } else {
+      crowd_.wait(lock);
+    }
   }
 }
 

@@ -105,3 +105,24 @@ TEST(NumericalFaults, ExtremeScenesEndCleanlyUnderEveryMethod) {
 
 }  // namespace
 }  // namespace vibro::robustness
+
+namespace vibro::robustness {
+namespace {
+
+// The start's speeds are the scene's own, not round-off: on a circle of 1e-300 m (v_eps
+// 3e137 rad/s) the pellets started at 50 and 6 rad/s were reported at rest when the run failed.
+TEST(NumericalFaults, ARunFailingAtItsStartReportsTheStartsSpeeds) {
+  const Scene scene = parsed(R"({"model": {"R": 1e-300, "pellets": [
+      {"m": 0.2, "phi0": 0.26, "dphi0": 50, "F0": 1.2, "Omega": 3.3},
+      {"m": 0.2, "phi0": -0.26, "dphi0": 6}]}, "t_end": 5})");
+  for (Method method : kMethods) {
+    SCOPED_TRACE(method_name(method));
+    const RunResult run = run_checked(scene, method);
+    ASSERT_EQ(run.summary.final.size(), 2u);
+    EXPECT_DOUBLE_EQ(run.summary.final[0].dphi, 50.0);
+    EXPECT_NEAR(run.summary.final[1].dphi, 6.0, 1e-12);
+  }
+}
+
+}  // namespace
+}  // namespace vibro::robustness
