@@ -46,9 +46,13 @@ bool ConnectionPool::crowded() const {
   return waiting_.size() > free_;
 }
 
-void ConnectionPool::idle(const Connection& connection) {
+void ConnectionPool::idle(const Connection& connection, bool closing) {
   if (this_slot >= slots_.size()) return;
   const int fd = socket_of(connection);
+  if (closing) {
+    if (fd >= 0) ::shutdown(fd, SHUT_RD);
+    return;
+  }
   std::lock_guard lock(mutex_);
   slots_[this_slot] = {connection, fd, Clock::now()};
 }

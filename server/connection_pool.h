@@ -35,8 +35,9 @@ class ConnectionPool : public httplib::TaskQueue {
   // Whether a connection waits for a thread.
   bool crowded() const;
   // On a connection thread: its connection has written a response and waits for the next
-  // request, which may not come.
-  void idle(const Connection& connection);
+  // request, which may not come; or, `closing` (the response said "Connection: close"), it is
+  // done, and its read side is shut at once so that its thread need not wait for the client.
+  void idle(const Connection& connection, bool closing = false);
   // On a connection thread: a request has come on its connection.
   void busy();
 

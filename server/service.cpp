@@ -88,6 +88,10 @@ std::optional<ApiError> check_header_lines(const Request& req) {
   return std::nullopt;
 }
 
+// Whether the response being written on this connection thread was told "Connection: close"
+// because connections wait for a thread (between the post-routing handler and the logger).
+thread_local bool crowded_close = false;
+
 // Errors cpp-httplib makes itself (a malformed request line, a body over the payload limit, a
 // target too long) get the same JSON shape as ours.
 httplib::Server::HandlerResponse json_error(const Request&, Response& res, std::size_t body_limit) {
@@ -205,7 +209,8 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
   // right before the second.
   // While a connection waits for a thread, this one is not kept alive for another request.
   http.set_post_routing_handler([&s](const Request& req, Response& res) {
-    if (s.pool.load()->crowded()) {
+    crowded_close = s.pool.load()->crowded() && !res.has_header("Connection");
+    if (crowded_close) {
       res.headers.erase("Keep-Alive");
       res.set_header("Connection", "close");
     }
@@ -213,7 +218,7 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
   });
   http.set_logger([&s](const Request& req, const Response& res) {
     release_held();
-    s.pool.load()->idle({req.remote_addr, req.remote_port, req.local_port});
+    s.pool.load()->idle({req.remote_addr, req.remote_port, req.local_port}, crowded_close);
     s.log.write(req, res);
   });
 }
