@@ -115,6 +115,12 @@ usage "render to .gif" -o -- render --preset paper -o paper.gif
 usage "preset without a name" preset -- preset
 echo '{"model":{"R":0.5,"alpah0":0.1,"pellets":[{"m":1,"phi0":0}]},"t_end":1}' > typo.json
 usage "a scene's unknown key" model.alpah0 -- simulate typo.json
+# An orbit guess far past any angle once hung `vibro orbit` (issue 31): refused, naming it.
+echo '{"model":{"R":0.5,"alpha0":0,"pellets":[{"m":0.1,"phi0":0.1,"F0":0.3,"Omega":5}],
+  "limiters":[{"angle":0,"k":0.8}]},"t_end":20,
+  "periodic_orbit":{"periods":1,"guess":[{"phi":1e17,"dphi":1}]}}' > far-guess.json
+usage "an orbit guess of 1e17 rad" "periodic_orbit.guess[0].phi" \
+  -- orbit far-guess.json --deadline-ms 500
 
 # Runs: a scene on stdin with overrides, the last of a repeated option counting.
 if "$vibro" preset paper | "$vibro" simulate - --t-end 0.5 --t-end 0.2 --method dopri5 \
