@@ -52,7 +52,10 @@ struct SweepSpec {
 };
 
 // Why a sweep cannot run, naming the field ("sweep.parameter", "sweep.count", ...), or a model
-// field that a swept value makes invalid.
+// field that a swept value makes invalid: every value (every pair of a 2-D sweep) must make a
+// model that passes validate_model, as a scene of its own would, and the message names the
+// value. The swept parameter's path is the field, unless the model's failing field is the
+// other axis's.
 std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& spec);
 
 // The period of the motion the sweep's counts are in, s, for this model.

@@ -217,6 +217,43 @@ TEST(Sweep, BadSweepsAreRefusedNamingTheField) {
   EXPECT_FALSE(validate_sweep(free, k));
 }
 
+// Each value of a sweep must make a model a scene of its own could hold, not only its ends: two
+// pellets swept through each other, limiters swept onto each other, and a pair of a 2-D sweep
+// inside the grid are refused, naming the swept field and the value.
+TEST(Sweep, EveryValueIsCheckedAsASceneOfItsOwn) {
+  Model two = impact_oscillator(5.0);
+  two.pellets.push_back(two.pellets[0]);
+  two.pellets[0].phi0 = 0.1;
+  two.pellets[1].phi0 = 0.5;
+  SweepSpec s = over_omega(3.0, 8.0, 3);
+  s.axis = {"model.pellets[1].phi0", 0.0, 0.2, 3};  // 0, 0.1, 0.2: the middle run coincides
+  auto e = validate_sweep(two, s);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->field, "model.pellets[1].phi0");
+  EXPECT_NE(e->message.find("model.pellets[1].phi0 = 0.1"), std::string::npos) << e->message;
+  s.axis.count = 2;  // 0 and 0.2 only
+  EXPECT_FALSE(validate_sweep(two, s));
+
+  // Limiters at 0 and 1 rad; the first swept over 0.5 … 1.5 meets the second at 1.
+  Model stops = impact_oscillator(5.0);
+  stops.limiters.push_back({1.0, 0.8, false, -1, {}});
+  s.axis = {"model.limiters[0].angle", 0.5, 1.5, 3};
+  e = validate_sweep(stops, s);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->field, "model.limiters[0].angle");  // the swept one, not the one it meets
+  EXPECT_NE(e->message.find("model.limiters[1].angle coincides"), std::string::npos) << e->message;
+  EXPECT_NE(e->message.find("= 1,"), std::string::npos) << e->message;
+
+  // A 2-D sweep whose four corners are good, and one pair inside where the pellets coincide.
+  s.axis = {"model.pellets[1].phi0", 0.0, 0.2, 2};
+  s.axis2 = SweepAxis{"model.pellets[0].phi0", 0.1, 0.3, 3};
+  e = validate_sweep(two, s);
+  ASSERT_TRUE(e);
+  EXPECT_NE(e->message.find("model.pellets[1].phi0 = 0.2, model.pellets[0].phi0 = 0.2"),
+            std::string::npos)
+      << e->message;
+}
+
 TEST(Parameter, PathsNameTheModelsNumericFields) {
   Model m = impact_oscillator(5.0);
   EXPECT_FALSE(set_parameter(m, "model.pellets[0].F0", 0.7));

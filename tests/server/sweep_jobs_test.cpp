@@ -149,5 +149,23 @@ TEST(SweepJobs, BadSweepsAreRefusedNamingTheField) {
   EXPECT_EQ(field(long_run), "sweep.record");
 }
 
+// Every value of a sweep is checked as a scene of its own: the middle run of two pellets swept
+// through each other would start with them coinciding.
+TEST(SweepJobs, EveryValueOfASweepIsChecked) {
+  TestServer server;
+  auto c = server.client();
+  json s = json::parse(sweep_scene(3));
+  s["model"]["pellets"][0]["phi0"] = 0.1;
+  s["model"]["pellets"].push_back({{"m", 0.1}, {"phi0", 0.5}});
+  s["sweep"]["parameter"] = "model.pellets[1].phi0";
+  s["sweep"]["from"] = 0.0;
+  s["sweep"]["to"] = 0.2;
+  auto res = c.Post("/api/sweep", s.dump(), "application/json");
+  ASSERT_EQ(res->status, 400) << res->body;
+  const json e = json::parse(res->body);
+  EXPECT_EQ(e["field"], "model.pellets[1].phi0");
+  EXPECT_NE(e["error"].get<std::string>().find("= 0.1"), std::string::npos) << e.dump();
+}
+
 }  // namespace
 }  // namespace vibro::testing
