@@ -4,6 +4,7 @@
 #include <charconv>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <random>
 #include <thread>
 #include <tuple>
@@ -167,6 +168,7 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
   SweepRun run;
   auto phase = [&](double t) { return kTwoPi * (t / T - std::floor(t / T)); };
   if (spec.section == SectionKind::stroboscopic) {
+    run.points.reserve(r.stops.size() * m.pellets.size());
     for (const StateAt& s : r.stops)
       for (int i = 0; i < m.size(); ++i) {
         run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase(s.t), -1,
@@ -186,6 +188,8 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
       run.points.push_back({e.pellets[0], e.t, e.phi, e.dphi_before[0], phase(e.t), e.limiter,
                             e.t <= r.stats.trusted_until});
   }
+  // A vector's growth leaves up to half of it spare: a sweep keeps exactly its points.
+  run.points.shrink_to_fit();
   run.impacts_per_period = static_cast<double>(impacts) / spec.record;
   run.at_rest = std::all_of(r.summary.final.begin(), r.summary.final.end(), held);
   run.termination = r.stats.termination;
@@ -242,6 +246,10 @@ double sweep_period(const Model& model) {
   return kTwoPi * std::sqrt(model.R / model.g);
 }
 
+long stroboscopic_points_per_run(const Model& model, const SweepSpec& spec) {
+  return (static_cast<long>(spec.record) + 1) * model.size();
+}
+
 long sweep_runs(const SweepSpec& spec) {
   const long per_start = static_cast<long>(spec.axis.count) * (spec.axis2 ? spec.axis2->count : 1);
   const long directions = spec.continuation == Continuation::both ? 2 : 1;
@@ -275,7 +283,8 @@ std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& opti
                                       const SweepSpec& spec, int c,
                                       const std::atomic<bool>* cancel,
                                       const std::function<void()>& run_done,
-                                      const std::function<void(double v, double v2)>& before_run) {
+                                      const std::function<void(double v, double v2)>& before_run,
+                                      const std::function<bool(const SweepRun&)>& admit) {
   const Chain chain = chain_at(spec, c);
   const int n = model.size();
   const double v2 = spec.axis2 ? spec.axis2->value(chain.j) : 0.0;
@@ -304,6 +313,7 @@ std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& opti
     run.value2 = v2;
     run.start = chain.start;
     run.direction = link.direction;
+    if (admit && !admit(run)) break;
     runs.push_back(std::move(run));
     state = std::move(last);
     if (run_done) run_done();
@@ -327,19 +337,54 @@ SweepResult run_sweep(const Model& model, const SimOptions& options, const Sweep
   const long total = sweep_runs(spec);
   std::atomic<int> next{0};
   std::atomic<long> done{0};
+  std::atomic<long> kept{0};  // section points of the runs kept
   std::atomic<bool> cancelled{false};
+  // Set when the sweep is cancelled or a bound is reached: no new run starts.
+  std::atomic<bool> halt{false};
+  std::mutex stop_mutex;
+  std::optional<FieldError> stopped;
+  auto stop = [&](FieldError why) {
+    const std::lock_guard lock(stop_mutex);
+    if (!stopped) stopped = std::move(why);
+    halt = true;
+  };
+  auto runs_done = [&] {
+    return " after " + std::to_string(done.load()) + " of " + std::to_string(total) + " runs";
+  };
+  // The bounds and the cancel flag, looked at between runs.
+  auto look = [&] {
+    if (control.cancel && control.cancel->load()) {
+      cancelled = true;
+      halt = true;
+    }
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (ms > control.budget_ms)
+      stop({"sweep.count", "the sweep ran past its wall-clock budget of " +
+                               shortest(control.budget_ms / 1000.0) + " s" + runs_done() +
+                               ": sweep fewer values, or record fewer periods"});
+    return !halt;
+  };
+  auto admit = [&](const SweepRun& run) {
+    if (control.max_points <= 0) return true;
+    const long n = static_cast<long>(run.points.size());
+    if (kept.fetch_add(n) + n <= control.max_points) return true;
+    kept -= n;
+    stop({"sweep.record", "the sweep's runs would keep more than its limit of " +
+                              std::to_string(control.max_points) + " section points" +
+                              runs_done() + ": record fewer periods, or sweep fewer values"});
+    return false;
+  };
   auto run_done = [&] {
     const long d = ++done;
     if (control.progress) control.progress(d, total);
+    look();
   };
   auto work = [&] {
-    for (int c = next++; c < chains; c = next++) {
+    for (int c = next++; c < chains && look(); c = next++) {
       if (control.skip && control.skip(c)) continue;
-      done_chains[c] = run_sweep_chain(model, options, spec, c, control.cancel, run_done);
-      if (control.cancel && control.cancel->load()) {
-        cancelled = true;
-        return;
-      }
+      done_chains[c] = run_sweep_chain(model, options, spec, c, &halt, run_done, {}, admit);
+      if (halt) return;  // a chain cut short is not whole: no checkpoint keeps it
       if (control.chain_done) control.chain_done(c, done_chains[c]);
     }
   };
@@ -356,6 +401,7 @@ SweepResult run_sweep(const Model& model, const SimOptions& options, const Sweep
   order_sweep_runs(result.runs);
   result.threads = threads;
   result.cancelled = cancelled;
+  result.stopped = std::move(stopped);
   result.wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;

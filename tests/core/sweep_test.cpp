@@ -254,6 +254,53 @@ TEST(Sweep, EveryValueIsCheckedAsASceneOfItsOwn) {
       << e->message;
 }
 
+// The points a sweep may keep: an impact section of a pellet rattling between two elastic stops
+// stops at the bound, keeps no more than it, and names the field.
+TEST(Sweep, ABoundOnThePointsStopsTheSweepNamingTheField) {
+  Model m = impact_oscillator(5.0);
+  m.pellets[0].force = {};
+  m.pellets[0].phi0 = 0.0;
+  m.pellets[0].dphi0 = 1.5;
+  m.limiters = {{-0.05, 1.0, false, -1, {}}, {0.05, 1.0, false, -1, {}}};
+  SweepSpec spec;
+  spec.axis = {"model.pellets[0].dphi0", 1.0, 2.0, 6};
+  spec.transient = 0;
+  spec.record = 4;
+  spec.section = SectionKind::impact;
+  ASSERT_FALSE(validate_sweep(m, spec));
+  SweepControl all;
+  const SweepResult whole = run_sweep(m, options(1e-8), spec, all);
+  ASSERT_EQ(whole.runs.size(), 6u);
+  EXPECT_FALSE(whole.stopped);
+  const long each = static_cast<long>(whole.runs[0].points.size());
+  ASSERT_GT(each, 20);
+  for (int threads : {1, 2}) {
+    SweepControl bounded;
+    bounded.threads = threads;
+    bounded.max_points = 2 * each + each / 2;
+    const SweepResult r = run_sweep(m, options(1e-8), spec, bounded);
+    ASSERT_TRUE(r.stopped);
+    EXPECT_EQ(r.stopped->field, "sweep.record");
+    EXPECT_NE(r.stopped->message.find(std::to_string(bounded.max_points)), std::string::npos);
+    EXPECT_LT(r.runs.size(), 6u);
+    long kept = 0;
+    for (const SweepRun& run : r.runs) kept += static_cast<long>(run.points.size());
+    EXPECT_LE(kept, bounded.max_points);
+  }
+}
+
+// A sweep's wall-clock budget: once spent, no run starts, and the result says so.
+TEST(Sweep, AWallClockBudgetStopsTheSweep) {
+  SweepControl c;
+  c.budget_ms = 0.0;
+  const SweepResult r = run_sweep(impact_oscillator(5.0), options(1e-8), over_omega(3.0, 8.0, 5, 5, 5), c);
+  ASSERT_TRUE(r.stopped);
+  EXPECT_EQ(r.stopped->field, "sweep.count");
+  EXPECT_NE(r.stopped->message.find("wall-clock budget"), std::string::npos);
+  EXPECT_LE(r.runs.size(), 1u);
+  EXPECT_FALSE(r.cancelled);
+}
+
 TEST(Parameter, PathsNameTheModelsNumericFields) {
   Model m = impact_oscillator(5.0);
   EXPECT_FALSE(set_parameter(m, "model.pellets[0].F0", 0.7));
