@@ -27,6 +27,14 @@ struct Limits {
   int limiters = 16;
   int plots = 8;
   double sweep_periods = 1e6;  // a sweep's runs × (transient + record) periods
+  // Section points one sweep may keep (40 bytes each): a stroboscopic sweep over it is refused
+  // up front, an impact-section sweep stops when it reaches it (docs/ROBUSTNESS.md, "Sweeps and
+  // memory"). Finished sweeps hold at most 4 × this many in all; the oldest go first.
+  long sweep_points = 1'000'000;
+  // Wall clock of one sweep job, s: its runs share it (each run's deadline is at most its share),
+  // a sweep that would leave a run less than 10 ms is refused up front, and one that runs past
+  // it fails.
+  double sweep_seconds = 300.0;
 };
 
 struct ServerConfig {

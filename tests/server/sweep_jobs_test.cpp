@@ -24,6 +24,19 @@ std::string sweep_scene(int count, int record = 20) {
   return s.dump();
 }
 
+// A pellet rattling elastically between stops at ±0.05 rad, swept over its starting speed: an
+// impact section of some 20 points per period, known only as it runs.
+json rattle_scene(int count, int record) {
+  return {{"model",
+           {{"R", 0.5},
+            {"pellets", {{{"m", 0.1}, {"phi0", 0.0}, {"dphi0", 1.5}}}},
+            {"limiters", {{{"angle", -0.05}, {"k", 1.0}}, {{"angle", 0.05}, {"k", 1.0}}}}}},
+          {"t_end", 10},
+          {"sweep",
+           {{"parameter", "model.pellets[0].dphi0"}, {"from", 1.0}, {"to", 2.0}, {"count", count},
+            {"transient", 0}, {"record", record}, {"section", "impact"}}}};
+}
+
 json status_of(httplib::Client& c, const std::string& location) {
   auto res = c.Get(location.c_str());
   if (!res || res->status != 200) return {};
@@ -147,6 +160,83 @@ TEST(SweepJobs, BadSweepsAreRefusedNamingTheField) {
   long_run["sweep"]["record"] = 5000;  // 5020 periods of 1.2 s: over the 1000 s limit
   long_run["sweep"]["count"] = 2;
   EXPECT_EQ(field(long_run), "sweep.record");
+}
+
+// The points and runs columns are written to the connection as they are formatted (chunked), not
+// built whole on a connection thread first.
+TEST(SweepJobs, TheResultIsStreamedNotBuiltWhole) {
+  TestServer server;
+  auto c = server.client();
+  auto res = c.Post("/api/sweep", sweep_scene(12), "application/json");
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  ASSERT_EQ(wait_until_ended(c, location)["status"], "done");
+  for (const char* format : {"json", "csv"}) {
+    auto got = c.Get((location + "/result?format=" + format).c_str());
+    ASSERT_EQ(got->status, 200);
+    EXPECT_EQ(got->get_header_value("Transfer-Encoding"), "chunked") << format;
+    EXPECT_FALSE(got->has_header("Content-Length")) << format;
+    EXPECT_EQ(got->get_header_value("Cache-Control"), "no-store");
+    if (std::string(format) == "json")
+      EXPECT_EQ(json::parse(got->body)["points"]["phi"].size(), 12u * 21u);
+    else
+      EXPECT_EQ(std::count(got->body.begin(), got->body.end(), '\n'), 1 + 12 * 21);
+  }
+}
+
+// The section points a sweep may keep are bounded: a stroboscopic sweep over the bound is refused
+// up front, an impact-section sweep that reaches it while it runs fails, naming the field, and
+// keeps nothing.
+TEST(SweepJobs, ThePointsASweepKeepsAreBounded) {
+  server::ServerConfig config;
+  config.limits.sweep_points = 1000;
+  TestServer server(config);
+  auto c = server.client();
+  auto over = c.Post("/api/sweep", sweep_scene(50, 20), "application/json");  // 50 × 21 points
+  ASSERT_EQ(over->status, 400) << over->body;
+  EXPECT_EQ(json::parse(over->body)["field"], "sweep.record");
+  EXPECT_NE(json::parse(over->body)["error"].get<std::string>().find("1050"), std::string::npos);
+  EXPECT_EQ(c.Post("/api/sweep", sweep_scene(47, 20), "application/json")->status, 202);
+
+  auto res = c.Post("/api/sweep", rattle_scene(10, 20).dump(), "application/json");
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  const json ended = wait_until_ended(c, location);
+  ASSERT_EQ(ended["status"], "failed") << ended.dump();
+  EXPECT_EQ(ended["field"], "sweep.record");
+  EXPECT_NE(ended["error"].get<std::string>().find("1000 section points"), std::string::npos);
+  EXPECT_LT(ended["progress"]["done"].get<long>(), 10);
+  auto result = c.Get((location + "/result").c_str());
+  EXPECT_EQ(result->status, 409);
+  EXPECT_EQ(json::parse(result->body)["field"], "sweep.record");
+}
+
+// One sweep cannot hold the sweep thread for long: its runs share a wall-clock budget. A sweep
+// whose runs would each be left less than 10 ms of it is refused up front; 40 runs of some 1.4 s
+// each (56 s with the deadline of one simulation alone) end within it.
+TEST(SweepJobs, ASweepIsBoundedByItsWallClockBudget) {
+  server::ServerConfig config;
+  config.limits.sweep_seconds = 2.0;
+  TestServer server(config);
+  auto c = server.client();
+  auto over = c.Post("/api/sweep", sweep_scene(400, 1), "application/json");
+  ASSERT_EQ(over->status, 400) << over->body;
+  EXPECT_EQ(json::parse(over->body)["field"], "sweep.count");
+
+  // The impact oscillator on a 1 nm circle from 10^7 rad/s: some 1.4 s a run alone.
+  json slow = json::parse(sweep_scene(40, 1));
+  slow["model"]["R"] = 1e-9;
+  slow["model"]["pellets"][0]["dphi0"] = 1e7;
+  slow["sweep"]["transient"] = 0;
+  slow["sweep"]["section"] = "impact";
+  auto res = c.Post("/api/sweep", slow.dump(), "application/json");
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  const auto t0 = std::chrono::steady_clock::now();
+  const json ended = wait_until_ended(c, location);  // gives up after 30 s
+  ASSERT_FALSE(ended.is_null()) << "still running after "
+                                << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s";
+  EXPECT_TRUE(ended["status"] == "done" || ended["status"] == "failed") << ended.dump();
 }
 
 // Every value of a sweep is checked as a scene of its own: the middle run of two pellets swept
