@@ -1,7 +1,6 @@
 #include "core/sweep.h"
 
 #include <algorithm>
-#include <charconv>
 #include <chrono>
 #include <cmath>
 #include <mutex>
@@ -45,12 +44,6 @@ std::optional<FieldError> check_axis(const Model& model, const SweepAxis& axis,
   return std::nullopt;
 }
 
-// The shortest text that reads back as x.
-std::string shortest(double x) {
-  char text[32];
-  return {text, std::to_chars(text, text + sizeof text, x).ptr};
-}
-
 // Why the model at one value (pair) of the sweep is not one a scene of its own could hold: the
 // model's error, named by the swept parameter's path (the first axis's, unless the failing field
 // is the second's) and with the values in its message; or a stroboscopic section without forcing.
@@ -66,8 +59,8 @@ std::optional<FieldError> check_value(const Model& m, const SweepSpec& spec, dou
     else
       return std::nullopt;
   }
-  std::string at = spec.axis.parameter + " = " + shortest(v);
-  if (spec.axis2) at += ", " + spec.axis2->parameter + " = " + shortest(v2);
+  std::string at = spec.axis.parameter + " = " + shortest_text(v);
+  if (spec.axis2) at += ", " + spec.axis2->parameter + " = " + shortest_text(v2);
   const bool named = e->field == spec.axis.parameter || e->field == "sweep.section" ||
                      (spec.axis2 && e->field == spec.axis2->parameter);
   if (!named) {
@@ -361,7 +354,7 @@ SweepResult run_sweep(const Model& model, const SimOptions& options, const Sweep
         std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
     if (ms > control.budget_ms)
       stop({"sweep.count", "the sweep ran past its wall-clock budget of " +
-                               shortest(control.budget_ms / 1000.0) + " s" + runs_done() +
+                               shortest_text(control.budget_ms / 1000.0) + " s" + runs_done() +
                                ": sweep fewer values, or record fewer periods"});
     return !halt;
   };

@@ -45,6 +45,8 @@ ItemField limiter_field(int i, const char* name) { return {"limiters", i, name};
 
 }  // namespace
 
+std::string shortest_text(double x) { return fmt(x); }
+
 std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits) {
   if (auto e = check_range("model.g", m.g, 0.0, 1e4)) return e;
   if (auto e = check_range("model.R", m.R, 0.0, 1e6, true)) return e;

@@ -15,6 +15,9 @@ struct FieldError {
   std::string message;  // what was expected
 };
 
+// The shortest text that reads back as x, for messages: a value just past a bound shows how far.
+std::string shortest_text(double x);
+
 std::optional<FieldError> validate_model(const Model& model, const SimLimits& limits = {});
 std::optional<FieldError> validate_options(const SimOptions& options, int pellets,
                                            const SimLimits& limits = {});

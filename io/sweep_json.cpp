@@ -141,6 +141,17 @@ constexpr RunColumn kRunColumns[] = {
     {"value2", [](Pieces& o, Run r) { o.number(r.value2); }},
 };
 
+// What `write` writes to a sink, as one string.
+template <class Write>
+std::string whole_text(const Write& write) {
+  std::string text;
+  write([&text](std::string_view piece) {
+    text += piece;
+    return true;
+  });
+  return text;
+}
+
 // One column of every point, as a JSON array.
 bool write_point_column(Pieces& out, const PointColumn& column, const SweepResult& result) {
   out.text("[");
@@ -260,12 +271,9 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
 }
 
 json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
-  std::string text;
-  write_sweep_result_json(spec, result, [&text](std::string_view piece) {
-    text += piece;
-    return true;
-  });
-  return json::parse(text);
+  return json::parse(whole_text([&](const TextSink& sink) {
+    return write_sweep_result_json(spec, result, sink);
+  }));
 }
 
 std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {
@@ -315,12 +323,7 @@ bool write_sweep_result_csv(const SweepResult& result, const TextSink& sink) {
 }
 
 std::string sweep_result_csv(const SweepResult& result) {
-  std::string text;
-  write_sweep_result_csv(result, [&text](std::string_view piece) {
-    text += piece;
-    return true;
-  });
-  return text;
+  return whole_text([&](const TextSink& sink) { return write_sweep_result_csv(result, sink); });
 }
 
 }  // namespace vibro

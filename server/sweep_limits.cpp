@@ -1,18 +1,12 @@
 #include "server/sweep_limits.h"
 
 #include <algorithm>
-#include <charconv>
 #include <string>
 
 #include "core/sweep.h"
 
 namespace vibro::server {
 namespace {
-
-std::string shortest(double x) {
-  char text[32];
-  return {text, std::to_chars(text, text + sizeof text, x).ptr};
-}
 
 // The runs made one after another: a chain's runs in order, and the chains `threads` at a time.
 long serial_runs(const SweepSpec& spec, int threads) {
@@ -46,9 +40,9 @@ std::optional<ApiError> check_sweep_cost(const Scene& scene, const Limits& limit
                     "the sweep's " + std::to_string(runs) + " runs (" + std::to_string(serial) +
                         " one after another on the server's " + std::to_string(threads) +
                         " sweep thread" + (threads == 1 ? "" : "s") + ") would leave each " +
-                        shortest(share_ms) + " ms of the server's wall-clock budget of " +
-                        shortest(limits.sweep_seconds) + " s for a sweep; a run needs at least " +
-                        shortest(kMinSweepRunMs) + " ms: sweep fewer values"};
+                        shortest_text(share_ms) + " ms of the server's wall-clock budget of " +
+                        shortest_text(limits.sweep_seconds) + " s for a sweep; a run needs at least " +
+                        shortest_text(kMinSweepRunMs) + " ms: sweep fewer values"};
   return std::nullopt;
 }
 

@@ -239,6 +239,23 @@ TEST(SweepJobs, ASweepIsBoundedByItsWallClockBudget) {
   EXPECT_TRUE(ended["status"] == "done" || ended["status"] == "failed") << ended.dump();
 }
 
+// Finished sweeps hold at most 4 × limits.sweep_points in all: past it the oldest is forgotten.
+TEST(SweepJobs, FinishedSweepsHoldBoundedPoints) {
+  server::ServerConfig config;
+  config.limits.sweep_points = 300;  // finished ones: 1200 in all
+  TestServer server(config);
+  auto c = server.client();
+  std::vector<std::string> jobs;
+  for (int k = 0; k < 5; ++k) {  // 252 points each
+    auto res = c.Post("/api/sweep", sweep_scene(12), "application/json");
+    ASSERT_EQ(res->status, 202) << res->body;
+    jobs.push_back(res->get_header_value("Location"));
+    ASSERT_EQ(wait_until_ended(c, jobs.back())["status"], "done");
+  }
+  EXPECT_EQ(c.Get(jobs[0].c_str())->status, 404);  // 5 × 252 > 1200
+  for (int k = 1; k < 5; ++k) EXPECT_EQ(c.Get((jobs[k] + "/result").c_str())->status, 200) << k;
+}
+
 // Every value of a sweep is checked as a scene of its own: the middle run of two pellets swept
 // through each other would start with them coinciding.
 TEST(SweepJobs, EveryValueOfASweepIsChecked) {
