@@ -360,22 +360,43 @@ void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Res
       return send_error(res, {400, "coordinate", "must be \"dphi\" or \"phi\""});
     plot.coordinate = c == "phi" ? SectionCoordinate::phi : SectionCoordinate::dphi;
   }
+  // A point plot in SVG or PDF keeps every point as a mark of its own (Limits::
+  // sweep_vector_points): a large sweep is drawn as PNG.
+  const long most = config_.limits.sweep_vector_points;
+  const bool marks_points = plot.kind == PlotKind::bifurcation || plot.kind == PlotKind::section ||
+                            plot.kind == PlotKind::impact_map;
+  if (*image_format != ImageFormat::png && marks_points && job.points > most)
+    return send_error(res, {400, "format",
+                            "the sweep's " + std::to_string(job.points) +
+                                " section points are more than the server draws as a vector "
+                                "image (" + std::to_string(most) + "): ask format=png"});
   FigureSpec figure;
   figure.width = job.scene.figure.width;
   figure.height = job.scene.figure.height;
   figure.plots = {plot};
-  const RenderResult image = render_figure(figure, job.scene.model, RunResult{}, *image_format,
-                                           {nullptr, &spec, job.sweep.get()});
-  if (!image.ok()) return send_error(res, ApiError::from(*image.error, 500));
-  // Where the parameter lies on the image, so that a click on it can name a value (the page).
-  if (const auto axis = parameter_axis(figure, spec)) {
-    std::ostringstream h;
-    h.precision(17);
-    h << axis->left << ',' << axis->top << ',' << axis->width << ',' << axis->height << ','
-      << axis->from << ',' << axis->to;
-    res.set_header("X-Vibro-Parameter-Axis", h.str());
-  }
-  res.set_content(std::string(image.bytes.begin(), image.bytes.end()), image.content_type);
+  // Drawn on a worker, not the connection's thread: as many drawings at once as workers.
+  auto draw = [figure, model = job.scene.model, spec, sweep = job.sweep,
+               format = *image_format]() -> JobResult {
+    const RenderResult image =
+        render_figure(figure, model, RunResult{}, format, {nullptr, &spec, sweep.get()});
+    if (!image.ok()) return ApiError::from(*image.error, 500);
+    Produced p{std::string(image.bytes.begin(), image.bytes.end()), image.content_type, {}};
+    // Where the parameter lies on the image, so that a click on it can name a value (the page).
+    if (const auto axis = parameter_axis(figure, spec)) {
+      std::ostringstream h;
+      h.precision(17);
+      h << axis->left << ',' << axis->top << ',' << axis->width << ',' << axis->height << ','
+        << axis->from << ',' << axis->to;
+      p.headers.emplace_back("X-Vibro-Parameter-Axis", h.str());
+    }
+    return p;
+  };
+  auto produced = run_on_worker(std::move(draw), res);
+  if (!produced) return;
+  if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
+  Produced& p = std::get<Produced>(*produced);
+  for (const auto& [name, value] : p.headers) res.set_header(name, value);
+  res.set_content(std::move(p.body), p.content_type);
 }
 
 void Api::job_delete(const httplib::Request& req, httplib::Response& res) {

@@ -35,6 +35,10 @@ struct Limits {
   // a sweep that would leave a run less than 10 ms is refused up front, and one that runs past
   // it fails.
   double sweep_seconds = 300.0;
+  // Section points a sweep's point plot (bifurcation, section, impact map) is drawn with as SVG
+  // or PDF: each point is a mark of its own there, some 1.4 KB of memory while drawn (10^6
+  // points: 1.5 GB, and 265 MB of SVG). PNG draws any number.
+  long sweep_vector_points = 100'000;
 };
 
 struct ServerConfig {

@@ -256,6 +256,31 @@ TEST(SweepJobs, FinishedSweepsHoldBoundedPoints) {
   for (int k = 1; k < 5; ++k) EXPECT_EQ(c.Get((jobs[k] + "/result").c_str())->status, 200) << k;
 }
 
+// A sweep's plot is drawn on a worker; as SVG or PDF only up to limits.sweep_vector_points
+// points (each is a mark of its own there), as PNG whatever its points.
+TEST(SweepJobs, ALargeSweepIsDrawnAsPngOnly) {
+  server::ServerConfig config;
+  config.limits.sweep_vector_points = 200;
+  TestServer server(config);
+  auto c = server.client();
+  auto res = c.Post("/api/sweep", sweep_scene(12), "application/json");  // 252 points
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  ASSERT_EQ(wait_until_ended(c, location)["status"], "done");
+  for (const char* format : {"svg", "pdf"}) {
+    auto refused = c.Get((location + "/result?format=" + format).c_str());
+    ASSERT_EQ(refused->status, 400) << format;
+    EXPECT_EQ(json::parse(refused->body)["field"], "format");
+    EXPECT_NE(json::parse(refused->body)["error"].get<std::string>().find("png"), std::string::npos);
+  }
+  auto png = c.Get((location + "/result?format=png").c_str());
+  ASSERT_EQ(png->status, 200);
+  EXPECT_EQ(png_size(png->body), (std::pair<int, int>{1200, 800}));
+  EXPECT_FALSE(png->get_header_value("X-Vibro-Parameter-Axis").empty());
+  // A regime map draws a cell per run, not a mark per point.
+  EXPECT_EQ(c.Get((location + "/result?format=svg&plot=regime_map").c_str())->status, 200);
+}
+
 // Every value of a sweep is checked as a scene of its own: the middle run of two pellets swept
 // through each other would start with them coinciding.
 TEST(SweepJobs, EveryValueOfASweepIsChecked) {
