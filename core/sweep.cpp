@@ -273,8 +273,7 @@ int sweep_chain_count(const SweepSpec& spec) {
 }
 
 std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& options,
-                                      const SweepSpec& spec, int c,
-                                      const std::atomic<bool>* cancel,
+                                      const SweepSpec& spec, int c, const std::atomic<bool>* cancel,
                                       const std::function<void()>& run_done,
                                       const std::function<void(double v, double v2)>& before_run,
                                       const std::function<bool(const SweepRun&)>& admit) {
@@ -364,8 +363,8 @@ SweepResult run_sweep(const Model& model, const SimOptions& options, const Sweep
     if (kept.fetch_add(n) + n <= control.max_points) return true;
     kept -= n;
     stop({"sweep.record", "the sweep's runs would keep more than its limit of " +
-                              std::to_string(control.max_points) + " section points" +
-                              runs_done() + ": record fewer periods, or sweep fewer values"});
+                              std::to_string(control.max_points) + " section points" + runs_done() +
+                              ": record fewer periods, or sweep fewer values"});
     return false;
   };
   auto run_done = [&] {

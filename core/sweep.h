@@ -76,9 +76,9 @@ struct SectionPoint {
         limiter(static_cast<std::int16_t>(limiter)),
         trusted(trusted) {}
   double t = 0.0;
-  double phi = 0.0;    // unwrapped
-  double dphi = 0.0;   // before the impact, for the impact section
-  double phase = 0.0;  // of the period at t, rad in [0, 2π)
+  double phi = 0.0;           // unwrapped
+  double dphi = 0.0;          // before the impact, for the impact section
+  double phase = 0.0;         // of the period at t, rad in [0, 2π)
   std::int16_t pellet = 0;    // fewer than 2^15 pellets (SimLimits::max_pellets)
   std::int16_t limiter = -1;  // impact section: the limiter struck
   bool trusted = true;        // before the run's stats.trusted_until
@@ -154,12 +154,11 @@ int sweep_chain_count(const SweepSpec& spec);
 // Runs chain c; stops before the next run once `cancel` is set. `before_run` is called with
 // each run's value (pair) before it starts, `run_done` after it. `admit`, when given, is asked
 // for each finished run before it is kept: false drops it and ends the chain.
-std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& options,
-                                      const SweepSpec& spec, int c,
-                                      const std::atomic<bool>* cancel = nullptr,
-                                      const std::function<void()>& run_done = {},
-                                      const std::function<void(double v, double v2)>& before_run = {},
-                                      const std::function<bool(const SweepRun&)>& admit = {});
+std::vector<SweepRun> run_sweep_chain(
+    const Model& model, const SimOptions& options, const SweepSpec& spec, int c,
+    const std::atomic<bool>* cancel = nullptr, const std::function<void()>& run_done = {},
+    const std::function<void(double v, double v2)>& before_run = {},
+    const std::function<bool(const SweepRun&)>& admit = {});
 
 // Puts runs in a sweep result's fixed order: start, value2, direction, value.
 void order_sweep_runs(std::vector<SweepRun>& runs);

@@ -134,7 +134,8 @@ constexpr RunColumn kRunColumns[] = {
     {"period", [](Pieces& o, Run r) { o.integer(r.period); }},
     {"start", [](Pieces& o, Run r) { o.integer(r.start); }},
     {"sticks", [](Pieces& o, Run r) { o.boolean(r.sticks); }},
-    {"termination", [](Pieces& o, Run r) { o.string(std::string(termination_name(r.termination))); }},
+    {"termination",
+     [](Pieces& o, Run r) { o.string(std::string(termination_name(r.termination))); }},
     {"trusted", [](Pieces& o, Run r) { o.boolean(r.trusted); }},
     {"trusted_until", [](Pieces& o, Run r) { o.number(r.trusted_until); }},
     {"value", [](Pieces& o, Run r) { o.number(r.value); }},
@@ -271,9 +272,8 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
 }
 
 json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
-  return json::parse(whole_text([&](const TextSink& sink) {
-    return write_sweep_result_json(spec, result, sink);
-  }));
+  return json::parse(whole_text(
+      [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink); }));
 }
 
 std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {
@@ -289,8 +289,9 @@ std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec
 
 bool write_sweep_result_csv(const SweepResult& result, const TextSink& sink) {
   Pieces out(sink);
-  out.text("value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
-           "impacts_per_period,lyapunov\n");
+  out.text(
+      "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
+      "impacts_per_period,lyapunov\n");
   for (const SweepRun& run : result.runs) {
     if (!out.ok()) return false;
     for (const SectionPoint& p : run.points) {

@@ -27,7 +27,8 @@ using TextSink = std::function<bool(std::string_view piece)>;
 // in sorted order, numbers as their shortest text that reads back to the bit.
 // Written to `sink` as it is formatted: memory for one piece, whatever the points. Whether the
 // sink took all of it.
-bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, const TextSink& sink);
+bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
+                             const TextSink& sink);
 nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& result);
 // The points as CSV with a header row, one line per point, each run's classification on it; the
 // Lyapunov exponent last, empty without one and "-inf" where every perturbation dies. Numbers

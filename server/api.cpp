@@ -213,7 +213,7 @@ namespace {
 // piece at a time, not the document. The result lives as long as the writing.
 void stream_sweep_result(const Job& job, bool csv, httplib::Response& res) {
   auto write = [result = job.sweep, spec = *job.scene.sweep, csv](std::size_t,
-                                                                   httplib::DataSink& sink) {
+                                                                  httplib::DataSink& sink) {
     const TextSink to_sink = [&sink](std::string_view piece) {
       return sink.write(piece.data(), piece.size());
     };
@@ -255,8 +255,9 @@ void Api::sweep_post(const httplib::Request& req, httplib::Response& res) {
   if (auto e = check_sweep_cost(scene, config_.limits, config_.sweep_threads))
     return send_error(res, *e);
   scene.sim = bounded_options(scene.sim, config_.limits);
-  scene.sim.deadline_ms = std::min(
-      scene.sim.deadline_ms, sweep_run_deadline_ms(*scene.sweep, config_.limits, config_.sweep_threads));
+  scene.sim.deadline_ms =
+      std::min(scene.sim.deadline_ms,
+               sweep_run_deadline_ms(*scene.sweep, config_.limits, config_.sweep_threads));
   submit(JobKind::sweep, std::move(scene), res);
 }
 
@@ -313,7 +314,8 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
     const auto status = jobs_.status(id);
     if (!status) return send_error(res, {404, "id", "no job \"" + id + "\""});
     if (status->error)
-      return send_error(res, {409, status->error->field, "the job failed: " + status->error->message});
+      return send_error(res,
+                        {409, status->error->field, "the job failed: " + status->error->message});
     return send_error(res, {409, "id", "the job is " + std::string(job_state_name(status->state)) +
                                            ", not done: its result is not ready"});
   }
@@ -369,7 +371,8 @@ void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Res
     return send_error(res, {400, "format",
                             "the sweep's " + std::to_string(job.points) +
                                 " section points are more than the server draws as a vector "
-                                "image (" + std::to_string(most) + "): ask format=png"});
+                                "image (" +
+                                std::to_string(most) + "): ask format=png"});
   FigureSpec figure;
   figure.width = job.scene.figure.width;
   figure.height = job.scene.figure.height;

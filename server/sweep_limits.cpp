@@ -41,8 +41,9 @@ std::optional<ApiError> check_sweep_cost(const Scene& scene, const Limits& limit
                         " one after another on the server's " + std::to_string(threads) +
                         " sweep thread" + (threads == 1 ? "" : "s") + ") would leave each " +
                         shortest_text(share_ms) + " ms of the server's wall-clock budget of " +
-                        shortest_text(limits.sweep_seconds) + " s for a sweep; a run needs at least " +
-                        shortest_text(kMinSweepRunMs) + " ms: sweep fewer values"};
+                        shortest_text(limits.sweep_seconds) +
+                        " s for a sweep; a run needs at least " + shortest_text(kMinSweepRunMs) +
+                        " ms: sweep fewer values"};
   return std::nullopt;
 }
 

@@ -293,7 +293,8 @@ TEST(Sweep, ABoundOnThePointsStopsTheSweepNamingTheField) {
 TEST(Sweep, AWallClockBudgetStopsTheSweep) {
   SweepControl c;
   c.budget_ms = 0.0;
-  const SweepResult r = run_sweep(impact_oscillator(5.0), options(1e-8), over_omega(3.0, 8.0, 5, 5, 5), c);
+  const SweepResult r =
+      run_sweep(impact_oscillator(5.0), options(1e-8), over_omega(3.0, 8.0, 5, 5, 5), c);
   ASSERT_TRUE(r.stopped);
   EXPECT_EQ(r.stopped->field, "sweep.count");
   EXPECT_NE(r.stopped->message.find("wall-clock budget"), std::string::npos);

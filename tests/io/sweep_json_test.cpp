@@ -99,7 +99,8 @@ SweepResult many_points(int runs, int points) {
     run.value = 0.1 * k;
     run.message = k == 1 ? "stopped at t = 1 s: \"quoted\"" : "";
     for (int i = 0; i < points; ++i)
-      run.points.push_back({i % 3, i * 0.1, 1.0 / (i + 1), i == 7 ? NAN : -0.5 * i, 1e-300 * i, i % 2, i % 5 != 0});
+      run.points.push_back(
+          {i % 3, i * 0.1, 1.0 / (i + 1), i == 7 ? NAN : -0.5 * i, 1e-300 * i, i % 2, i % 5 != 0});
     result.runs.push_back(std::move(run));
   }
   return result;
@@ -123,8 +124,9 @@ TEST(SweepJson, TheResultIsWrittenInPiecesAndStopsWhenTheReaderGoesAway) {
   for (std::size_t n : sizes) EXPECT_LE(n, 70u * 1024u);
   const json j = json::parse(text);
   EXPECT_EQ(j, sweep_result_json(spec, result));
-  const std::vector<std::string> point_keys = {"direction", "dphi", "limiter", "pellet", "phase", "phi",
-                                               "run", "start", "t", "trusted", "value", "value2"};
+  const std::vector<std::string> point_keys = {"direction", "dphi",    "limiter", "pellet",
+                                               "phase",     "phi",     "run",     "start",
+                                               "t",         "trusted", "value",   "value2"};
   for (const std::string& key : point_keys) EXPECT_EQ(j["points"][key].size(), 32000u) << key;
   EXPECT_EQ(j["points"].size(), point_keys.size());
   EXPECT_EQ(j["runs"].size(), 14u);
@@ -145,7 +147,8 @@ TEST(SweepJson, TheResultIsWrittenInPiecesAndStopsWhenTheReaderGoesAway) {
   EXPECT_TRUE(j["points"]["value"][0].is_number_float());  // 0.0 stays a double
 
   int calls = 0;
-  EXPECT_FALSE(write_sweep_result_json(spec, result, [&](std::string_view) { return ++calls > 1 && false; }));
+  EXPECT_FALSE(write_sweep_result_json(spec, result,
+                                       [&](std::string_view) { return ++calls > 1 && false; }));
   EXPECT_EQ(calls, 1);
   calls = 0;
   std::string csv;
@@ -158,7 +161,8 @@ TEST(SweepJson, TheResultIsWrittenInPiecesAndStopsWhenTheReaderGoesAway) {
   EXPECT_EQ(csv, sweep_result_csv(result));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 32000);
   calls = 0;
-  EXPECT_FALSE(write_sweep_result_csv(result, [&](std::string_view) { return ++calls > 1 && false; }));
+  EXPECT_FALSE(
+      write_sweep_result_csv(result, [&](std::string_view) { return ++calls > 1 && false; }));
   EXPECT_EQ(calls, 1);
 }
 

@@ -33,8 +33,13 @@ json rattle_scene(int count, int record) {
             {"limiters", {{{"angle", -0.05}, {"k", 1.0}}, {{"angle", 0.05}, {"k", 1.0}}}}}},
           {"t_end", 10},
           {"sweep",
-           {{"parameter", "model.pellets[0].dphi0"}, {"from", 1.0}, {"to", 2.0}, {"count", count},
-            {"transient", 0}, {"record", record}, {"section", "impact"}}}};
+           {{"parameter", "model.pellets[0].dphi0"},
+            {"from", 1.0},
+            {"to", 2.0},
+            {"count", count},
+            {"transient", 0},
+            {"record", record},
+            {"section", "impact"}}}};
 }
 
 json status_of(httplib::Client& c, const std::string& location) {
@@ -234,8 +239,9 @@ TEST(SweepJobs, ASweepIsBoundedByItsWallClockBudget) {
   const std::string location = res->get_header_value("Location");
   const auto t0 = std::chrono::steady_clock::now();
   const json ended = wait_until_ended(c, location);  // gives up after 30 s
-  ASSERT_FALSE(ended.is_null()) << "still running after "
-                                << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s";
+  ASSERT_FALSE(ended.is_null())
+      << "still running after "
+      << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s";
   EXPECT_TRUE(ended["status"] == "done" || ended["status"] == "failed") << ended.dump();
 }
 
@@ -271,7 +277,8 @@ TEST(SweepJobs, ALargeSweepIsDrawnAsPngOnly) {
     auto refused = c.Get((location + "/result?format=" + format).c_str());
     ASSERT_EQ(refused->status, 400) << format;
     EXPECT_EQ(json::parse(refused->body)["field"], "format");
-    EXPECT_NE(json::parse(refused->body)["error"].get<std::string>().find("png"), std::string::npos);
+    EXPECT_NE(json::parse(refused->body)["error"].get<std::string>().find("png"),
+              std::string::npos);
   }
   auto png = c.Get((location + "/result?format=png").c_str());
   ASSERT_EQ(png->status, 200);
