@@ -1,5 +1,8 @@
 // vibro: phase portraits of vibro-impact dynamics. `vibro --help` lists the subcommands;
 // `vibro COMMAND --help` (or `vibro help COMMAND`) lists a subcommand's options.
+#include <cerrno>
+#include <cstdio>
+#include <cstring>
 #include <iostream>
 #include <string>
 #include <vector>
@@ -7,7 +10,22 @@
 #include "app/commands.h"
 #include "app/usage.h"
 
-int main(int argc, char** argv) {
+namespace {
+
+// What the program wrote to stdout must have reached it (a full disk, a closed pipe, /dev/full
+// fail only when the buffer is flushed): a command's exit code, or 1 with a message when not.
+int with_stdout_checked(int code) {
+  std::cout.flush();
+  errno = 0;
+  const bool flushed = std::fflush(stdout) == 0;
+  if (flushed && std::cout.good() && !std::ferror(stdout)) return code;
+  const int error = errno;
+  vibro::print_error("stdout", std::string("the output could not be written") +
+                                   (error != 0 ? std::string(": ") + std::strerror(error) : ""));
+  return 1;
+}
+
+int run(int argc, char** argv) {
   using namespace vibro;
   CLI::App app("vibro: phase portraits of vibro-impact dynamics", "vibro");
   // A repeated option's last value counts, as it always has. Arguments nobody declared are left
@@ -66,3 +84,7 @@ int main(int argc, char** argv) {
   print_error(topic, "is not a command of `vibro` (see `vibro --help`)");
   return 2;
 }
+
+}  // namespace
+
+int main(int argc, char** argv) { return with_stdout_checked(run(argc, argv)); }

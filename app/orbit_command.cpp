@@ -10,7 +10,6 @@
 
 #include <algorithm>
 #include <cmath>
-#include <fstream>
 #include <functional>
 #include <iostream>
 #include <memory>
@@ -22,6 +21,7 @@
 #include "app/scene_options.h"
 #include "app/usage.h"
 #include "io/orbit_json.h"
+#include "io/whole_file.h"
 #include "render/orbit_figure.h"
 
 namespace vibro {
@@ -85,9 +85,9 @@ int orbit(const SceneOutput& o) {
     bytes = orbit_result_json(result).dump(2) + "\n";
   }
   if (out.empty()) {
-    std::cout << bytes;
-  } else if (!(std::ofstream(out, std::ios::binary) << bytes)) {
-    print_error("-o", "cannot write " + out);
+    std::cout << bytes;  // checked once the command ends (app/main.cpp)
+  } else if (const auto problem = write_whole_file(out, bytes)) {
+    print_error("-o", problem->message);
     return 1;
   }
   return result.orbit.converged ? 0 : 1;

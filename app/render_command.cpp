@@ -1,6 +1,5 @@
 // `vibro render SCENE | - | --preset NAME -o OUT.png|OUT.svg|OUT.pdf`: simulate what the scene's
 // plots need and draw them; prints the image's name and size, the answer and the run's stats.
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -11,6 +10,7 @@
 #include "core/simulate.h"
 #include "core/work_precision.h"
 #include "io/result_json.h"
+#include "io/whole_file.h"
 #include "render/figure.h"
 #include "render/run_plan.h"
 
@@ -42,11 +42,10 @@ int render(const SceneOutput& o) {
     print_error(image.error->field, image.error->message);
     return 1;
   }
-  std::ofstream file(out, std::ios::binary);
-  file.write(reinterpret_cast<const char*>(image.bytes.data()),
-             static_cast<std::streamsize>(image.bytes.size()));
-  if (!file) {
-    print_error(out, "cannot write the file");
+  const std::string_view bytes(reinterpret_cast<const char*>(image.bytes.data()),
+                               image.bytes.size());
+  if (const auto problem = write_whole_file(out, bytes)) {
+    print_error("-o", problem->message);
     return 1;
   }
   nlohmann::json j = result_to_json(run, scene.model);

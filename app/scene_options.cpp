@@ -1,25 +1,26 @@
 #include "app/scene_options.h"
 
-#include <fstream>
+#include <cstdio>
 #include <iostream>
 #include <iterator>
+#include <variant>
 
 #include "app/usage.h"
 #include "io/presets.h"
 #include "io/scene_json.h"
+#include "io/whole_file.h"
 
 namespace vibro {
 namespace {
 
 using nlohmann::json;
 
-std::optional<std::string> read_source(const std::string& source) {
-  if (source == "-") {
-    return std::string(std::istreambuf_iterator<char>(std::cin), {});
-  }
-  std::ifstream in(source, std::ios::binary);
-  if (!in) return std::nullopt;
-  return std::string(std::istreambuf_iterator<char>(in), {});
+// The scene's text from a file or, for "-", the standard input; else why it cannot be read.
+std::variant<std::string, FileProblem> read_source(const std::string& source) {
+  if (source != "-") return read_whole_file(source);
+  std::string text(std::istreambuf_iterator<char>(std::cin), {});
+  if (std::cin.bad() || std::ferror(stdin)) return FileProblem{"the standard input cannot be read"};
+  return text;
 }
 
 // An option whose number goes into the scene's JSON at `path` (checked there with the rest of
@@ -92,11 +93,12 @@ std::optional<Scene> load_scene(const SceneSource& source) {
     text = std::string(*preset);
     origin = source.preset;
   } else {
-    text = read_source(source.file);
-    if (!text) {
-      print_error("scene", "cannot read the file \"" + source.file + "\"");
+    auto read = read_source(source.file);
+    if (auto* problem = std::get_if<FileProblem>(&read)) {
+      print_error("scene", problem->message);
       return std::nullopt;
     }
+    text = std::get<std::string>(std::move(read));
     origin = source.file == "-" ? "the standard input" : source.file;
   }
   auto parsed_text = parse_scene_text(*text);

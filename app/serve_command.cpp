@@ -20,9 +20,11 @@ int serve(const server::ServerConfig& config) {
     std::cerr << "vibro serve: the paper scene does not render: " << error << "\n";
     return 1;
   }
-  const int port = service.bind();
+  std::string why;
+  const int port = service.bind(&why);
   if (port < 0) {
-    std::cerr << "vibro serve: cannot listen on " << config.host << ":" << config.port << "\n";
+    std::cerr << "vibro serve: cannot listen on " << config.host << ":" << config.port << ": "
+              << why << "\n";
     return 1;
   }
   server::StopOnSignals stop_on_signals([&service] { service.stop(); });

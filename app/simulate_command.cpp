@@ -1,6 +1,5 @@
 // `vibro simulate SCENE | - | --preset NAME [-o OUT.json|OUT.csv] [--what events|trajectory]`:
 // the run as JSON (events, summary, stats, warnings), or its events or samples as CSV.
-#include <fstream>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -12,6 +11,7 @@
 #include "core/simulate.h"
 #include "io/result_json.h"
 #include "io/run_csv.h"
+#include "io/whole_file.h"
 
 namespace vibro {
 namespace {
@@ -43,9 +43,9 @@ int simulate(const SimulateOptions& o) {
   const std::string text =
       table ? run_csv(run, *table) : result_to_json(run, scene->model).dump(2) + "\n";
   if (out.empty()) {
-    std::cout << text;
-  } else if (!(std::ofstream(out, std::ios::binary) << text)) {
-    print_error("-o", "cannot write " + out);
+    std::cout << text;  // checked once the command ends (app/main.cpp)
+  } else if (const auto problem = write_whole_file(out, text)) {
+    print_error("-o", problem->message);
     return 1;
   }
   return run.stats.termination == Termination::completed ? 0 : 1;

@@ -5,11 +5,13 @@
 // map, or its largest Lyapunov exponents as a line or a map), and shows a progress bar with the
 // time left on stderr when that is a terminal. With -o, finished chains are kept in OUT.partial
 // as they finish, so a sweep that stops (a failed rank, a killed job, Ctrl-C) resumes with
-// --resume; OUT.partial goes once OUT is written.
+// --resume; OUT.partial goes once OUT is written. A checkpoint that cannot be written (a full
+// disk) stops the sweep; OUT is replaced only by a whole new file (io/whole_file.h).
 #include <unistd.h>
 
 #include <algorithm>
-#include <fstream>
+#include <atomic>
+#include <filesystem>
 #include <iostream>
 #include <memory>
 #include <optional>
@@ -23,6 +25,7 @@
 #include "core/sweep.h"
 #include "io/sweep_checkpoint.h"
 #include "io/sweep_json.h"
+#include "io/whole_file.h"
 #include "render/figure.h"
 
 namespace vibro {
@@ -96,13 +99,13 @@ std::optional<SweepJob> prepare(const SweepOptions& o, bool root, int& code) {
   if (!root || job.out.empty()) return job;
   const std::string partial = checkpoint_path(job.out);
   if (o.resume) {
-    auto read = read_checkpoint(partial, scene_fingerprint(job.scene));
+    auto read = read_checkpoint(partial, job.scene);
     if (auto* why = std::get_if<std::string>(&read)) {
       print_error("--resume", *why);
       return std::nullopt;
     }
     job.resumed = std::move(std::get<Checkpoint>(read));
-  } else if (std::ifstream(partial)) {
+  } else if (std::error_code ec; std::filesystem::exists(partial, ec)) {
     print_error("-o", partial +
                           " holds the finished part of an earlier run of this sweep: "
                           "--resume continues it; remove it to start afresh");
@@ -131,16 +134,24 @@ int write_result(const SweepJob& job, const SweepResult& result) {
                                      : sweep_result_json(*job.scene.sweep, result).dump() + "\n";
   }
   if (job.out.empty()) {
-    std::cout << text;
+    std::cout << text;  // checked once the command ends (app/main.cpp)
     return 0;
   }
-  std::ofstream file(job.out, std::ios::binary);
-  file << text;
-  if (!file) {
-    print_error(job.out, "cannot write the file");
+  if (const auto problem = write_whole_file(job.out, text)) {
+    print_error("-o", problem->message + "; it is left as it was, and " + checkpoint_path(job.out) +
+                          " keeps the finished chains for --resume");
     return 1;
   }
   return 0;
+}
+
+// A checkpoint that could not be written stops the sweep: what it holds is all a stop would
+// keep. The message says so.
+int checkpoint_failed(const CheckpointWriter& checkpoint) {
+  print_error("-o", checkpoint.problem()->message + "; the sweep stopped, and the " +
+                        std::to_string(checkpoint.chains()) +
+                        " chains it holds whole are kept: --resume continues from them");
+  return 1;
 }
 
 // The sweep on this process's threads, or on every rank's under MPI; rank 0 writes the result.
@@ -157,19 +168,19 @@ int run_job(const SweepOptions& o, bool mpi, int rank) {
   if (rank == 0 && !job->out.empty()) {
     checkpoint.emplace(checkpoint_path(job->out), scene_fingerprint(job->scene),
                        job->resumed ? &*job->resumed : nullptr);
-    if (!checkpoint->ok()) {
-      print_error("-o", "cannot write " + checkpoint_path(job->out));
+    if (const auto problem = checkpoint->problem()) {
+      print_error("-o", problem->message);
       return 1;
     }
     done_before.assign(sweep_chain_count(spec), 0);
-    if (job->resumed)
-      for (const ChainRuns& c : job->resumed->chains)
-        if (c.chain >= 0 && c.chain < static_cast<int>(done_before.size()))
-          done_before[c.chain] = 1;
+    if (job->resumed)  // chains in range, each once: read_checkpoint checked them
+      for (const ChainRuns& c : job->resumed->chains) done_before[c.chain] = 1;
   }
   ProgressBar bar;
   SweepControl control;
+  std::atomic<bool> stop{false};
   control.threads = job->threads;
+  control.cancel = &stop;
   if (rank == 0 && isatty(STDERR_FILENO))
     control.progress = [&bar](long done, long total) {
       bar(static_cast<double>(done) / std::max(total, 1L),
@@ -177,8 +188,8 @@ int run_job(const SweepOptions& o, bool mpi, int rank) {
     };
   if (checkpoint) {
     control.skip = [&done_before](int c) { return done_before[c] != 0; };
-    control.chain_done = [&checkpoint](int c, const std::vector<SweepRun>& runs) {
-      checkpoint->add({c, runs});
+    control.chain_done = [&checkpoint, &stop](int c, const std::vector<SweepRun>& runs) {
+      if (!checkpoint->add({c, runs})) stop = true;
     };
   }
   std::optional<SweepResult> result;
@@ -187,6 +198,7 @@ int run_job(const SweepOptions& o, bool mpi, int rank) {
 #endif
   if (!mpi) result = run_sweep(job->scene.model, job->scene.sim, spec, control);
   if (rank != 0) return 0;
+  if (result->cancelled) return checkpoint_failed(*checkpoint);  // nothing else cancels
   if (job->resumed) {
     for (const ChainRuns& c : job->resumed->chains)
       result->runs.insert(result->runs.end(), c.runs.begin(), c.runs.end());

@@ -1,7 +1,6 @@
 // `vibro work-precision SCENE [-o wp.png|wp.svg|wp.pdf] [--repeats N]`: for each method and
 // tolerance from 1e-3 to 1e-12, the median run time and the true error; prints the table as JSON
 // and draws the diagram.
-#include <fstream>
 #include <iostream>
 #include <memory>
 
@@ -9,6 +8,7 @@
 #include "app/scene_options.h"
 #include "app/usage.h"
 #include "core/work_precision.h"
+#include "io/whole_file.h"
 #include "io/work_precision_json.h"
 #include "render/figure.h"
 
@@ -43,11 +43,10 @@ int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
       print_error(image.error->field, image.error->message);
       return 1;
     }
-    std::ofstream file(out, std::ios::binary);
-    file.write(reinterpret_cast<const char*>(image.bytes.data()),
-               static_cast<std::streamsize>(image.bytes.size()));
-    if (!file) {
-      print_error(out, "cannot write the file");
+    const std::string_view bytes(reinterpret_cast<const char*>(image.bytes.data()),
+                                 image.bytes.size());
+    if (const auto problem = write_whole_file(out, bytes)) {
+      print_error("-o", problem->message);
       return 1;
     }
   }

@@ -9,8 +9,14 @@ namespace vibro {
 
 EnergyBalance::EnergyBalance(const Model& model, const Vec& y0)
     : model_(model), energy0_(total_energy(y0)), scale_(0.0) {
-  for (const Pellet& p : model.pellets)
+  double forcing = 0.0;  // the work the forces can do over a turn, J
+  for (const Pellet& p : model.pellets) {
     scale_ += 0.5 * p.m * model.R * model.R * p.dphi0 * p.dphi0 + 2.0 * p.m * model.g * model.R;
+    forcing += kTwoPi * std::abs(p.force.F0) * model.R;
+  }
+  // Where gravity does not set the scene's scales, the forces' work does (the defect of a
+  // forced pellet on a horizontal circle was taken relative to 1e-300 J).
+  if (!gravity_sets_time_scale(model)) scale_ = std::max(scale_, forcing);
   scale_ = std::max(scale_, 1e-300);
 }
 

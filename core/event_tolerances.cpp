@@ -9,8 +9,7 @@ namespace vibro {
 
 EventTolerances event_tolerances(const Model& model) {
   EventTolerances tol;
-  tol.time_scale = std::sqrt(model.R / std::max(model.g, 1e-300));
-  if (!std::isfinite(tol.time_scale) || tol.time_scale <= 0.0) tol.time_scale = 1.0;
+  tol.time_scale = time_scale(model);
   tol.chatter_time = 1e-4 * tol.time_scale;
   double v_scale = 1.0 / tol.time_scale;
   for (const Pellet& p : model.pellets) v_scale = std::max(v_scale, std::abs(p.dphi0));

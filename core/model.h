@@ -64,6 +64,12 @@ double free_acceleration(const Model& model, int i, double t, double phi);
 double stick_capacity(const Model& model, double phi);
 // Kinetic + potential energy of pellet i, J: ½ m R² dphi² − m g R cos phi.
 double energy(const Model& model, int i, double phi, double dphi);
+// The scene's unit of time, s: gravity's sqrt(R/g), unless gravity is a thousand times slower
+// than the rest of the motion (g = 0 included); then the longest time of that motion: a start's
+// speed 1/|dphi0|, a force's push sqrt(m·R/|F0|) and its period 2π/|Omega|. 1 s if nothing moves.
+double time_scale(const Model& model);
+// Whether that unit is gravity's; where it is not, neither are the scene's energies (2mgR).
+bool gravity_sets_time_scale(const Model& model);
 // phi reduced to (−π, π].
 double wrap_angle(double phi);
 

@@ -5,6 +5,8 @@
 // eigenvalues are the Floquet multipliers (docs/ORBITS.md).
 #pragma once
 
+#include <chrono>
+
 #include <limits>
 #include <string>
 #include <vector>
@@ -25,6 +27,7 @@ struct PathJacobian {
   // Non-empty when the path holds what this does not differentiate (pellets moving together),
   // naming it; the matrix is then not set.
   std::string unsupported;
+  bool out_of_time = false;  // the deadline passed before the matrix was done
 };
 
 // The saltation matrix of one instant: perturbations of the state reaching it, to those of the
@@ -42,8 +45,10 @@ PathJacobian interval_transition(const Model& model, const PathSegment& segment,
 PathJacobian segment_jacobian(const Model& model, const std::vector<PathSegment>& path,
                               std::size_t k, double rtol);
 
-// The whole path's: the segments' in turn.
-PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol);
+// The whole path's: the segments' in turn, given up (out_of_time) once `deadline` has passed.
+PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol,
+                           std::chrono::steady_clock::time_point deadline =
+                               std::chrono::steady_clock::time_point::max());
 
 // How far each instant of a path moves, to first order, when its initial (phi, dphi) move by
 // each column of deltas (2N × m), integrated together: s, one row per segment, one column per

@@ -21,7 +21,7 @@ class ScaledMap {
   ScaledMap(const Model& model, const SimOptions& options, int periods, const std::string& parameter,
             double p0, double span)
       : model_(model), options_(options), periods_(periods), parameter_(parameter), p0_(p0),
-        span_(span), time_(std::sqrt(model.R / model.g)) {}
+        span_(span), time_(time_scale(model)) {}
 
   // A point on or near the branch: the map there, its residual and Jacobian in scaled unknowns.
   struct Point {
@@ -247,11 +247,11 @@ Clearance clearance(const RunResult& run, double span) {
   return c;
 }
 
-// How near the motion is to a grazing, rad (speeds times sqrt(R/g)): the slowest impact, or the
+// How near the motion is to a grazing, rad (speeds times the time scale): the slowest impact, or the
 // turn that comes nearest to a limiter. At zero an impact appears or vanishes, and the map has a
 // square root there that Newton's method cannot step across.
 double grazing_distance(const Model& model, const RunResult& run) {
-  const double time = std::sqrt(model.R / model.g);
+  const double time = time_scale(model);
   double d = INFINITY;
   for (const Event& e : run.events) {
     if (e.kind == EventKind::limiter) d = std::min(d, std::abs(e.dphi_before[0]) * time);

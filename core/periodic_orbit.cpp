@@ -44,18 +44,36 @@ RunResult map_run(const Model& model, const SimOptions& options, double t_end, c
   return simulate(started_at(model, x), o);
 }
 
+using Clock = std::chrono::steady_clock;
+
+// The moment `deadline_ms` from now; none for an infinite one.
+Clock::time_point deadline_in(double deadline_ms) {
+  if (!(deadline_ms < 1e12)) return Clock::time_point::max();
+  return Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                            std::chrono::duration<double, std::milli>(std::max(deadline_ms, 0.0)));
+}
+
+// The options with what is left until `deadline` as their deadline.
+SimOptions until(SimOptions options, Clock::time_point deadline) {
+  if (deadline != Clock::time_point::max())
+    options.deadline_ms = std::chrono::duration<double, std::milli>(deadline - Clock::now()).count();
+  return options;
+}
+
 // Central differences of the map, where the saltations do not reach: steps of 1e-6 rad and
-// 1e-6·sqrt(g/R) rad/s.
+// 1e-6 rad/s per unit of the scene's time scale. Its runs share options.deadline_ms.
 Mat differenced_jacobian(const Model& model, const SimOptions& options, double t_end, const Vec& x) {
-  const double speed = std::sqrt(model.g / model.R);
+  const Clock::time_point deadline = deadline_in(options.deadline_ms);
+  const double speed = 1.0 / time_scale(model);
   Mat J(x.size(), x.size());
   for (Eigen::Index k = 0; k < x.size(); ++k) {
     const double h = 1e-6 * (k % 2 ? speed : 1.0);
     Vec xp = x, xm = x;
     xp[k] += h;
     xm[k] -= h;
-    J.col(k) = (final_state(map_run(model, options, t_end, xp, false)) -
-                final_state(map_run(model, options, t_end, xm, false))) / (2.0 * h);
+    J.col(k) = (final_state(map_run(model, until(options, deadline), t_end, xp, false)) -
+                final_state(map_run(model, until(options, deadline), t_end, xm, false))) /
+               (2.0 * h);
   }
   return J;
 }
@@ -109,14 +127,16 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
                                                   std::to_string(model.size()) + "), got " +
                                                   std::to_string(spec.guess.size())};
   for (std::size_t i = 0; i < spec.guess.size(); ++i)
-    if (!std::isfinite(spec.guess[i].phi) || !std::isfinite(spec.guess[i].dphi))
-      return FieldError{"periodic_orbit.guess[" + std::to_string(i) + "]", "expected finite numbers"};
+    if (auto e = validate_state("periodic_orbit.guess[" + std::to_string(i) + "]",
+                                spec.guess[i].phi, spec.guess[i].dphi))
+      return e;
   if (spec.max_iterations < 1 || spec.max_iterations > 1000)
     return FieldError{"periodic_orbit.max_iterations", "expected a whole number from 1 to 1000"};
   return std::nullopt;
 }
 
 MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int periods, const Vec& x) {
+  const Clock::time_point deadline = deadline_in(options.deadline_ms);
   MapPoint p;
   const double t_end = periods * forcing_period(model);
   p.x = x;
@@ -124,14 +144,19 @@ MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int per
   p.ok = p.run.stats.termination == Termination::completed;
   p.image = final_state(p.run);
   if (!p.ok) return p;
-  const PathJacobian J = path_jacobian(started_at(model, x), p.run.path, options.rtol);
+  const PathJacobian J = path_jacobian(started_at(model, x), p.run.path, options.rtol, deadline);
   p.run.path.clear();
-  if (J.unsupported.empty()) {
+  if (J.out_of_time) {
+    p.ok = false;
+    p.run.stats.termination = Termination::deadline;
+    p.run.stats.message = "took longer than its deadline of " + number(options.deadline_ms) +
+                          " ms with its Jacobian";
+  } else if (J.unsupported.empty()) {
     p.jacobian = J.matrix;
   } else {
     p.exact = false;
     p.jacobian_note = "central differences of the map: the saltation matrices do not cover " + J.unsupported;
-    p.jacobian = differenced_jacobian(model, options, t_end, x);
+    p.jacobian = differenced_jacobian(model, until(options, deadline), t_end, x);
   }
   return p;
 }
@@ -143,7 +168,7 @@ Vec orbit_residual(const MapPoint& p) {
 }
 
 double residual_norm(const Model& model, const Vec& r) {
-  const double time = std::sqrt(model.R / model.g);
+  const double time = time_scale(model);
   double n = 0.0;
   for (Eigen::Index k = 0; k < r.size(); ++k) n = std::max(n, std::abs(r[k]) * (k % 2 ? time : 1.0));
   return n;

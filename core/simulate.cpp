@@ -26,6 +26,11 @@ namespace {
 
 using Clock = std::chrono::steady_clock;
 
+EventTolerances exact_speeds(EventTolerances tol) {
+  tol.v_eps = 0.0;
+  return tol;
+}
+
 Vec initial_state(const Model& model) {
   Vec y(3 * model.size());
   for (int i = 0; i < model.size(); ++i) {
@@ -44,6 +49,7 @@ class Simulation {
       : model_(model),
         opt_(options),
         tol_(event_tolerances(model)),
+        start_tol_(exact_speeds(tol_)),
         law_(model),
         y_(initial_state(model)),
         armed_(model.limiters.size(), true),
@@ -63,8 +69,9 @@ class Simulation {
   RunResult run();
 
  private:
+  // `at_start`: the instant at t = 0, where the speeds are the scene's own.
   std::vector<Body> instant(double t, const std::vector<Body>& before,
-                            const InstantContacts& contacts);
+                            const InstantContacts& contacts, bool at_start = false);
   double step_limit() const;
   void keep_stops(double t, const std::vector<Body>& bodies);
   void open_interval(double t, std::vector<Body> bodies);
@@ -78,6 +85,9 @@ class Simulation {
   const Model& model_;
   const SimOptions& opt_;
   const EventTolerances tol_;
+  // At the start the speeds are given, not computed: none is round-off to snap to rest (a pellet
+  // started at 50 rad/s on a circle of 1e-300 m, where v_eps is 3e137 rad/s, was put at rest).
+  const EventTolerances start_tol_;
   const SlidingLaw law_;  // for the rates of the watches of the motion, when polishing a root
   Vec y_;
   std::vector<bool> armed_;
@@ -160,7 +170,7 @@ bool Simulation::over_budget(double t) {
 
 // Resolves an instant at t and keeps what it reports; returns the next interval's bodies.
 std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
-                                      const InstantContacts& contacts) {
+                                      const InstantContacts& contacts, bool at_start) {
   if (keeps_path()) {
     if (!path_.empty()) {
       path_.back().t_end = t;
@@ -169,7 +179,8 @@ std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
     path_full_ = path_.size() >= opt_.path_limit;
     if (!path_full_) path_.push_back({t, before, to_vector(y_), {}, {}, {}, {}, t});
   }
-  InstantOutcome out = resolve_instant(model_, tol_, t, before, contacts, y_, armed_);
+  InstantOutcome out =
+      resolve_instant(model_, at_start ? start_tol_ : tol_, t, before, contacts, y_, armed_);
   smooth_ = only_reversals(out.events);
   if (out.unordered >= 0 && !unordered_)
     unordered_ = Graze{.of = Graze::Of::order, .pellet = out.unordered, .t = t, .earliest = t};
@@ -350,7 +361,7 @@ RunResult Simulation::run() {
   const auto t0 = Clock::now();
   double t = 0.0;
   const InstantContacts start = initial_contacts(model_, tol_, y_);
-  std::vector<Body> bodies = instant(0.0, initial_bodies(model_, y_), start);
+  std::vector<Body> bodies = instant(0.0, initial_bodies(model_, y_), start, true);
   keep_stops(0.0, bodies);
   std::vector<Crossing> found;
   while (!stopped_ && t < opt_.t_end) {

@@ -47,6 +47,11 @@ ItemField limiter_field(int i, const char* name) { return {"limiters", i, name};
 
 std::string shortest_text(double x) { return fmt(x); }
 
+std::optional<FieldError> validate_state(const std::string& field, double phi, double dphi) {
+  if (auto e = check_range(field + ".phi", phi, -kMaxStartAngle, kMaxStartAngle)) return e;
+  return check_range(field + ".dphi", dphi, -kMaxStartSpeed, kMaxStartSpeed);
+}
+
 std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits) {
   if (auto e = check_range("model.g", m.g, 0.0, 1e4)) return e;
   if (auto e = check_range("model.R", m.R, 0.0, 1e6, true)) return e;
@@ -70,8 +75,10 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
   for (int i = 0; i < n; ++i) {
     const Pellet& p = m.pellets[i];
     if (auto e = check_range(pellet_field(i, "m"), p.m, 0.0, 1e12, true)) return e;
-    if (auto e = check_range(pellet_field(i, "phi0"), p.phi0, -1e4, 1e4)) return e;
-    if (auto e = check_range(pellet_field(i, "dphi0"), p.dphi0, -1e7, 1e7)) return e;
+    if (auto e = check_range(pellet_field(i, "phi0"), p.phi0, -kMaxStartAngle, kMaxStartAngle))
+      return e;
+    if (auto e = check_range(pellet_field(i, "dphi0"), p.dphi0, -kMaxStartSpeed, kMaxStartSpeed))
+      return e;
     if (auto e = check_range(pellet_field(i, "F0"), p.force.F0, -1e12, 1e12)) return e;
     if (auto e = check_range(pellet_field(i, "Omega"), p.force.Omega, -1e9, 1e9)) return e;
     if (auto e = check_range(pellet_field(i, "psi"), p.force.psi, -1e4, 1e4)) return e;

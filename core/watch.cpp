@@ -217,8 +217,9 @@ namespace {
 // so a pellet that sits on the limiter never finds it again a hair ahead.
 template <class F>
 void for_each_limiter_angle(double theta, double phi, F f) {
+  // An integer counter: past 2^53 turns, k + 1.0 == k and a floating-point loop never ends.
   const double n = std::floor((phi - theta) / kTwoPi);
-  for (double k = n - 1.0; k <= n + 2.0; k += 1.0) f(theta + kTwoPi * k);
+  for (int j = -1; j <= 2; ++j) f(theta + kTwoPi * (n + j));
 }
 
 }  // namespace

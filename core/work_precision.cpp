@@ -1,6 +1,7 @@
 #include "core/work_precision.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 
 #include "core/simulate.h"
@@ -20,7 +21,7 @@ bool same_event(const Event& a, const Event& b) {
 // Error of a run against the reference (see WorkPrecisionPoint::error).
 double reference_error(const Model& model, const RunResult& run, const RunResult& ref,
                        bool& match) {
-  const double T = std::sqrt(model.R / std::max(model.g, 1e-300));
+  const double T = time_scale(model);
   const std::size_t n = std::min(run.events.size(), ref.events.size());
   double error = 0.0;
   match = run.events.size() == ref.events.size();
@@ -61,6 +62,13 @@ ErrorReference error_reference_for(const Model& model) {
 
 WorkPrecisionReport work_precision(const Model& model, const SimOptions& base,
                                    const WorkPrecisionOptions& options) {
+  const auto started = std::chrono::steady_clock::now();
+  // The deadline of the next run: its own, within what the whole measurement has left.
+  auto within = [&] {
+    const double spent =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+    return std::min(base.deadline_ms, options.deadline_ms - spent);
+  };
   WorkPrecisionReport report;
   report.reference = error_reference_for(model);
   SimOptions o = base;
@@ -73,8 +81,10 @@ WorkPrecisionReport work_precision(const Model& model, const SimOptions& base,
     o.rtol = 1e-13;
     o.atol = 1e-15;
     o.method = Method::dop853;
+    o.deadline_ms = within();
     ref_dop853 = simulate(model, o);
     o.method = Method::dopri5;
+    o.deadline_ms = within();
     ref_dopri5 = simulate(model, o);
     report.reference_description =
         "dop853 at rtol 1e-13 (dopri5 at rtol 1e-13 for dop853 itself)";
@@ -84,14 +94,22 @@ WorkPrecisionReport work_precision(const Model& model, const SimOptions& base,
                                        : "the exact first integral (unforced, paper law)";
   }
 
+  const std::size_t asked = options.methods.size() * options.rtols.size();
   for (Method method : options.methods) {
     for (double rtol : options.rtols) {
+      if (within() <= 0.0) {
+        report.message = "measured " + std::to_string(report.points.size()) + " of " +
+                         std::to_string(asked) + " points: the rest would pass the deadline of " +
+                         std::to_string(static_cast<long>(options.deadline_ms)) + " ms";
+        return report;
+      }
       o.method = method;
       o.rtol = rtol;
       o.atol = rtol * options.atol_per_rtol;
       std::vector<double> times;
       RunResult run;
-      for (int r = 0; r < std::max(options.repeats, 1); ++r) {
+      for (int r = 0; r < std::max(options.repeats, 1) && (r == 0 || within() > 0.0); ++r) {
+        o.deadline_ms = within();
         run = simulate(model, o);
         times.push_back(run.stats.wall_ms);
       }

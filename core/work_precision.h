@@ -4,6 +4,7 @@
 // otherwise against a reference run at the tightest tolerance with another method.
 #pragma once
 
+#include <limits>
 #include <string>
 #include <vector>
 
@@ -26,6 +27,9 @@ struct WorkPrecisionOptions {
   std::vector<double> rtols = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
   double atol_per_rtol = 1e-2;  // atol = rtol · this
   int repeats = 3;              // runs per point; the time is their median
+  // Wall clock for the whole measurement, ms: each run gets at most what is left of it (and at
+  // most its own deadline_ms); the points not reached by then are left out and said.
+  double deadline_ms = std::numeric_limits<double>::infinity();
 };
 
 struct WorkPrecisionPoint {
@@ -47,6 +51,7 @@ struct WorkPrecisionReport {
   ErrorReference reference = ErrorReference::reference_run;
   std::string reference_description;
   std::vector<WorkPrecisionPoint> points;  // by method, then by decreasing rtol
+  std::string message;  // why points are missing, if they are
 };
 
 // Which exact reference applies to a model.

@@ -271,34 +271,33 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
 
 namespace {
 
-// Follows the parser through the document to refuse a key given twice in one object (JSON
-// would silently keep the last value: a script that sets "R" twice means one of them), naming
-// it by its path.
+// A pass of the parser's events over the text (nlohmann's SAX interface, building nothing) that
+// refuses a key given twice in one object (JSON would silently keep the last value: a script
+// that sets "R" twice means one of them), naming it by its path. A pass of its own rather than
+// a callback of the parse that builds the tree: that parser looks through an array's items for
+// a discarded one after each object, quadratic in an array of objects (2·10^5 of them: 5 s).
 class DuplicateKeys {
  public:
-  bool operator()(int, json::parse_event_t event, json& parsed) {
-    switch (event) {
-      case json::parse_event_t::object_start:
-      case json::parse_event_t::array_start:
-        frames_.push_back({event == json::parse_event_t::object_start, {}, {}, 0});
-        break;
-      case json::parse_event_t::key: {
-        Frame& f = frames_.back();
-        std::string key = parsed.get<std::string>();
-        if (!f.keys.insert(key).second) throw FieldException(path() + key_name(key), "appears twice");
-        f.key = std::move(key);
-        break;
-      }
-      case json::parse_event_t::object_end:
-      case json::parse_event_t::array_end:
-        frames_.pop_back();
-        element_done();
-        break;
-      case json::parse_event_t::value:
-        element_done();
-        break;
-    }
+  bool null() { return element_done(); }
+  bool boolean(bool) { return element_done(); }
+  bool number_integer(json::number_integer_t) { return element_done(); }
+  bool number_unsigned(json::number_unsigned_t) { return element_done(); }
+  bool number_float(json::number_float_t, const json::string_t&) { return element_done(); }
+  bool string(json::string_t&) { return element_done(); }
+  bool binary(json::binary_t&) { return element_done(); }
+  bool start_object(std::size_t) { return start(true); }
+  bool start_array(std::size_t) { return start(false); }
+  bool end_object() { return end(); }
+  bool end_array() { return end(); }
+  bool key(json::string_t& key) {
+    Frame& f = frames_.back();
+    if (!f.keys.insert(key).second) throw FieldException(path() + key_name(key), "appears twice");
+    f.key = key;
     return true;
+  }
+  // Not JSON: the parse that builds the tree says where and why.
+  bool parse_error(std::size_t, const std::string&, const nlohmann::detail::exception&) {
+    return false;
   }
 
  private:
@@ -309,8 +308,17 @@ class DuplicateKeys {
     std::size_t index;  // array: the element being read
   };
 
-  void element_done() {
+  bool start(bool object) {
+    frames_.push_back({object, {}, {}, 0});
+    return true;
+  }
+  bool end() {
+    frames_.pop_back();
+    return element_done();
+  }
+  bool element_done() {
     if (!frames_.empty() && !frames_.back().object) ++frames_.back().index;
+    return true;
   }
 
   // The path of the innermost object, ready for a key to be appended ("model.pellets[1].").
@@ -342,7 +350,9 @@ std::variant<json, FieldError> parse_scene_text(std::string_view text, const Sce
     return why;
   };
   try {
-    return json::parse(text, DuplicateKeys());
+    DuplicateKeys duplicates;
+    json::sax_parse(text, &duplicates);
+    return json::parse(text);
   } catch (const FieldException& e) {
     return FieldError{e.field, e.what()};
   } catch (const json::parse_error& e) {

@@ -20,9 +20,11 @@ nlohmann::json work_precision_to_json(const WorkPrecisionReport& report) {
                     {"events_match", p.events_match},
                     {"completed", p.completed}});
   }
-  return {{"error_reference", error_reference_name(report.reference)},
-          {"reference", report.reference_description},
-          {"points", rows}};
+  nlohmann::json out = {{"error_reference", error_reference_name(report.reference)},
+                        {"reference", report.reference_description},
+                        {"points", rows}};
+  if (!report.message.empty()) out["message"] = report.message;
+  return out;
 }
 
 }  // namespace vibro

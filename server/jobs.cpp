@@ -77,12 +77,14 @@ std::optional<JobStatus> Jobs::cancel(const std::string& id) {
   const std::lock_guard lock(mutex_);
   const auto it = jobs_.find(id);
   if (it == jobs_.end()) return std::nullopt;
-  Job& job = *it->second;
+  const std::shared_ptr<Job> held = it->second;  // forget_old() may drop it from jobs_
+  Job& job = *held;
   job.cancel = true;
   if (job.state == JobState::queued) {
-    std::erase(waiting_, it->second);
+    std::erase(waiting_, held);
     job.state = JobState::cancelled;
     job.finished = std::chrono::steady_clock::now();
+    forget_old();
   }
   return snapshot(job);
 }
@@ -154,7 +156,10 @@ void Jobs::work() {
     const std::lock_guard lock(mutex_);
     job->state = ended;
     job->finished = std::chrono::steady_clock::now();
-    forget_old();  // a finished sweep's points count against the bound at once
+    // Here as well as on submit: the jobs queued behind the last submit end after it, and
+    // would otherwise all be kept on top of `kept`; and a finished sweep's points count
+    // against the bound at once.
+    forget_old();
   }
 }
 

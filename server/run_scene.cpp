@@ -201,10 +201,11 @@ JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> im
                                const Limits& limits) {
   WorkPrecisionOptions sweep;
   sweep.repeats = 1;
-  // About 44 runs (4 methods × 10 tolerances and 2 references): each gets a share of the
-  // deadline, so the whole sweep ends within a few deadlines.
+  // About 42 runs (4 methods × 10 tolerances and 2 references), each given a share of the
+  // deadline and the whole measurement the deadline of one simulation.
   SimOptions options = bounded(scene.sim, limits);
   options.deadline_ms = limits.deadline_ms / 16.0;
+  sweep.deadline_ms = limits.deadline_ms;
   const WorkPrecisionReport report = work_precision(scene.model, options, sweep);
   if (!image) return Produced{work_precision_to_json(report).dump(), "application/json", {}};
   FigureSpec figure;

@@ -3,15 +3,22 @@
 #include <malloc.h>
 #include <sys/socket.h>
 
+#include <algorithm>
 #include <atomic>
+#include <cctype>
+#include <cerrno>
+#include <cstring>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <optional>
+#include <string_view>
 #include <thread>
 
 #include "server/access_log.h"
 #include "server/api.h"
 #include "server/api_error.h"
+#include "server/connection_pool.h"
 #include "server/http.h"
 #include "server/router.h"
 #include "server/whole_response.h"
@@ -61,6 +68,30 @@ std::vector<Route> api_routes(Api& api) {
   };
 }
 
+// Whether every header name is an HTTP token and no value holds a control character. cpp-httplib
+// keeps a folded continuation line (obs-fold) as a header whose name starts with a space, and a
+// NUL inside a value; both are refused, as nginx refuses them. A line without a colon it drops
+// before any handler sees it.
+std::optional<ApiError> check_header_lines(const Request& req) {
+  auto token_char = [](unsigned char c) {
+    return std::isalnum(c) || std::string_view("!#$%&'*+-.^_`|~").find(c) != std::string_view::npos;
+  };
+  for (const auto& [name, value] : req.headers) {
+    if (name.empty() || !std::all_of(name.begin(), name.end(), token_char))
+      return ApiError{400, "headers", "a header line is not \"Name: value\" (folded or malformed)"};
+    if (std::any_of(value.begin(), value.end(),
+                    [](unsigned char c) { return c < 0x20 && c != '\t'; }))
+      return ApiError{400, "headers", "the header " + name + " holds a control character"};
+  }
+  if (req.version == "HTTP/1.1" && !req.has_header("Host"))
+    return ApiError{400, "Host", "an HTTP/1.1 request must say its Host"};
+  return std::nullopt;
+}
+
+// Whether the response being written on this connection thread was told "Connection: close"
+// because connections wait for a thread (between the post-routing handler and the logger).
+thread_local bool crowded_close = false;
+
 // Errors cpp-httplib makes itself (a malformed request line, a body over the payload limit, a
 // target too long) get the same JSON shape as ours.
 httplib::Server::HandlerResponse json_error(const Request&, Response& res, std::size_t body_limit) {
@@ -99,6 +130,7 @@ struct Service::State {
   Api api;
   const Router router;
   HttpServer http;
+  std::atomic<ConnectionPool*> pool{nullptr};  // cpp-httplib's, while it serves
   std::atomic<bool> stop_requested{false};
   std::atomic<bool> serving{false};
   std::atomic<bool> served{false};
@@ -109,7 +141,16 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
   std::signal(SIGPIPE, SIG_IGN);
   State& s = *state_;
   httplib::Server& http = s.http;
-  http.new_task_queue = [n = config.connection_threads] { return new httplib::ThreadPool(n); };
+  http.new_task_queue = [&s, n = config.connection_threads] {
+    s.pool = new ConnectionPool(n);
+    return s.pool.load();
+  };
+  // Only SO_REUSEADDR: cpp-httplib's default adds SO_REUSEPORT, with which a second server on
+  // the same port starts and takes half of the connections (and of the job polls).
+  http.set_socket_options([](socket_t sock) {
+    const int yes = 1;
+    ::setsockopt(sock, SOL_SOCKET, SO_REUSEADDR, &yes, sizeof yes);
+  });
   http.set_payload_max_length(config.limits.body_bytes);
   http.set_read_timeout(config.read_timeout_s);
   http.set_write_timeout(config.write_timeout_s);
@@ -120,6 +161,7 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
   http.set_tcp_nodelay(true);
   http.set_pre_routing_handler([&s](const Request& req, Response& res) {
     s.log.start();
+    s.pool.load()->busy();
     // cpp-httplib 0.11 reads and keeps any number of header lines (10^6 of them: 200 MB), with
     // no setting to stop it; the most this server can do is refuse such a request and give the
     // memory back. A front door (scripts/deploy.sh) refuses it after 33 KiB instead.
@@ -128,6 +170,10 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
       malloc_trim(0);
       send_error(res, {431, "headers", "more than " + std::to_string(kMaxHeaderLines) + " header lines"},
                  true);
+      return httplib::Server::HandlerResponse::Handled;
+    }
+    if (auto error = check_header_lines(req)) {
+      send_error(res, *error, true);
       return httplib::Server::HandlerResponse::Handled;
     }
     // cpp-httplib 0.11 compresses JSON and SVG answers on every response, with brotli at its
@@ -161,23 +207,32 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
   });
   // Around the writing of a response: its headers are written right after the first, its body
   // right before the second.
-  http.set_post_routing_handler([](const Request& req, Response& res) {
+  // While a connection waits for a thread, this one is not kept alive for another request.
+  http.set_post_routing_handler([&s](const Request& req, Response& res) {
+    crowded_close = s.pool.load()->crowded() && !res.has_header("Connection");
+    if (crowded_close) {
+      res.headers.erase("Keep-Alive");
+      res.set_header("Connection", "close");
+    }
     hold_if_whole({req.remote_addr, req.remote_port, req.local_port}, wire_bytes(res));
   });
   http.set_logger([&s](const Request& req, const Response& res) {
     release_held();
+    s.pool.load()->idle({req.remote_addr, req.remote_port, req.local_port}, crowded_close);
     s.log.write(req, res);
   });
 }
 
 Service::~Service() = default;
 
-int Service::bind() {
+int Service::bind(std::string* why) {
   const ServerConfig& c = state_->config;
+  errno = 0;
   const int port = c.port == 0 ? state_->http.bind_to_any_port(c.host)
                    : state_->http.bind_to_port(c.host, c.port) ? c.port
                                                                : -1;
   if (port > 0) state_->http.widen_backlog();
+  if (port < 0 && why) *why = errno == EADDRINUSE ? "address in use" : errno ? std::strerror(errno) : "no such address";
   return port;
 }
 

@@ -16,8 +16,9 @@ class Service {
   Service(const Service&) = delete;
   Service& operator=(const Service&) = delete;
 
-  // Binds config.host:config.port; returns the port (the one picked for port 0), or -1.
-  int bind();
+  // Binds config.host:config.port, which no other server may share; returns the port (the one
+  // picked for port 0), or -1 with the reason in `why` ("address in use").
+  int bind(std::string* why = nullptr);
   // Serves on the bound port until stop(); then finishes the requests under way.
   bool serve();
   // Safe from any thread (not from a signal handler).

@@ -9,16 +9,10 @@
 #pragma once
 
 #include <cstddef>
-#include <string>
+
+#include "server/connection.h"
 
 namespace vibro::server {
-
-// The connection a request came on, as cpp-httplib names it (it does not hand out its socket).
-struct Connection {
-  std::string remote_addr;
-  int remote_port = -1;
-  int local_port = -1;
-};
 
 // Before a response of about `bytes` (headers and body) is written on the connection.
 void hold_if_whole(const Connection& connection, std::size_t bytes);

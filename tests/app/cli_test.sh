@@ -6,8 +6,10 @@ set -uo pipefail
 vibro="$1"
 work="$(mktemp -d)"
 server=""
+disk=""
 cleanup() {
   [[ -n "$server" ]] && kill "$server" 2> /dev/null && wait "$server" 2> /dev/null
+  [[ -n "$disk" ]] && umount "$disk"
   rm -rf "$work"
 }
 trap cleanup EXIT
@@ -119,6 +121,100 @@ if "$vibro" preset paper | "$vibro" simulate - --t-end 0.5 --t-end 0.2 --method 
     --rtol 1e-6 --no-check -o run.json && python3 -c '
 import json; r = json.load(open("run.json")); assert r["stats"]["t_reached"] <= 0.2 + 1e-12, r["stats"]'
 then pass "simulate - with overrides"; else fail "simulate - with overrides"; fi
+
+# A scene that cannot be read is named with the reason, by every command that reads one.
+mkdir -p adir
+for command in simulate render work-precision sweep orbit; do
+  usage "$command of a directory" scene "adir is a directory, not a file" -- "$command" adir -o x.png
+  usage "$command of a missing file" scene "nothing.json does not exist" -- "$command" nothing.json
+done
+if (($(id -u) != 0)); then  # root reads any file
+  echo '{}' > secret.json && chmod 000 secret.json
+  usage "an unreadable scene" scene "secret.json cannot be opened: Permission denied" \
+    -- simulate secret.json
+fi
+
+# Output that cannot be written fails loudly, and the file it would replace stays whole. A file
+# size limit (ulimit -f, in KiB, its signal ignored) fails a write as a full disk does.
+limited() {  # limited KIB ARGS...: vibro ARGS with files limited to KIB
+  local kib="$1"
+  shift
+  (trap '' XFSZ; ulimit -f "$kib"; exec "$vibro" "$@")
+}
+# wont_write NAME FILE KIB ARGS...: vibro ARGS exits 1 naming -o, FILE keeps its bytes and no
+# temporary file is left beside it.
+wont_write() {
+  local name="$1" file="$2" kib="$3" status=0
+  shift 3
+  echo "the good result" > "$file"
+  limited "$kib" "$@" > out.txt 2> err.txt || status=$?
+  if ((status == 1)) && grep -q '"field":"-o"' err.txt && grep -q "cannot be written" err.txt \
+      && [[ "$(cat "$file")" == "the good result" ]] && ! ls -A | grep -q '\.tmp-'; then
+    pass "$name"; else fail "$name (exit $status)"; cat err.txt; ls -A; fi
+}
+wont_write "simulate -o on a full disk" run.json 1 simulate --preset paper -o run.json
+wont_write "simulate -o CSV on a full disk" run.csv 1 simulate --preset paper -o run.csv
+wont_write "render -o on a full disk" paper.png 1 render --preset paper --t-end 2 -o paper.png
+wont_write "orbit -o on a full disk" orbit.json 1 orbit --preset impact-oscillator -o orbit.json
+wont_write "work-precision -o on a full disk" wp.svg 1 work-precision --preset paper --t-end 1 \
+  --repeats 1 -o wp.svg
+status=0
+"$vibro" simulate --preset paper --t-end 1 > /dev/full 2> err.txt || status=$?
+if ((status == 1)) && grep -q '"field":"stdout"' err.txt; then pass "simulate > /dev/full fails"
+else fail "simulate > /dev/full fails (exit $status)"; cat err.txt; fi
+status=0
+"$vibro" presets > /dev/full 2> err.txt || status=$?
+if ((status == 1)); then pass "presets > /dev/full fails"; else fail "presets > /dev/full fails"; fi
+
+# A sweep on a full disk stops once its checkpoint cannot be written, keeps the old output and
+# the chains finished whole, and --resume completes it to the output of a run never stopped.
+"$vibro" preset impact-oscillator | python3 -c '
+import json, sys
+s = json.load(sys.stdin)
+s["sweep"].update(count=12, continuation="none", transient=5, record=20)
+json.dump(s, open("small.json", "w"))'
+"$vibro" sweep small.json -o fresh.csv --threads 2 2> err.txt || cat err.txt
+wont_write "sweep -o on a full disk" out.csv 8 sweep small.json -o out.csv --threads 2
+if grep -q "chains it holds whole are kept" err.txt && [[ -s out.csv.partial ]]; then
+  pass "the stopped sweep's checkpoint is kept"; else fail "the stopped sweep's checkpoint is kept"; fi
+cp out.csv.partial whole.partial
+
+# resume_refused NAME WHAT PYTHON: the checkpoint changed by PYTHON (on bytes b, its header line
+# h and records from r) makes --resume exit 2 naming --resume with WHAT in its message.
+resume_refused() {
+  cp whole.partial out.csv.partial
+  python3 -c "
+b = bytearray(open('out.csv.partial', 'rb').read()); r = b.index(b'\n') + 1
+$3
+open('out.csv.partial', 'wb').write(b)"
+  usage "$1" --resume -- sweep small.json -o out.csv --resume
+  grep -q "$2" err.txt || { fail "$1: the message says $2"; cat err.txt; }
+}
+resume_refused "--resume refuses a flipped bit" "record 1 (at byte .*) fails its checksum" \
+  "b[r + 40] ^= 1"
+resume_refused "--resume refuses a relabelled chain" "fails its checksum" "b[r + 20] ^= 3"
+resume_refused "--resume refuses another scene's checkpoint" "belongs to another scene" "b[r - 3] ^= 1"
+resume_refused "--resume refuses a duplicated record" "which an earlier record holds" \
+  "import struct; n = 8 + struct.unpack('=Q', bytes(b[r:r + 8]))[0] + 4; b += b[r:r + n]"
+cp whole.partial out.csv.partial
+if "$vibro" sweep small.json -o out.csv --resume --threads 2 2> err.txt && cmp -s out.csv fresh.csv \
+    && [[ ! -e out.csv.partial ]]; then pass "--resume completes the stopped sweep"
+else fail "--resume completes the stopped sweep"; cat err.txt; fi
+
+# A disk that is really full, where a tmpfs may be mounted (root, outside most containers' CI).
+mkdir -p small-disk
+if mount -t tmpfs -o size=64k tmpfs small-disk 2> /dev/null; then
+  disk="$work/small-disk"
+  cp fresh.csv small-disk/out.csv
+  head -c 100000 /dev/zero > small-disk/filler 2> /dev/null  # fills what is left
+  status=0
+  "$vibro" sweep small.json -o small-disk/out.csv 2> err.txt || status=$?
+  if ((status == 1)) && grep -q "No space left on device" err.txt && cmp -s small-disk/out.csv fresh.csv \
+      && [[ "$(ls -A small-disk)" == $'filler\nout.csv' ]]; then
+    pass "sweep -o on a full tmpfs keeps the old output"
+  else fail "sweep -o on a full tmpfs keeps the old output (exit $status)"; cat err.txt; ls -A small-disk; fi
+  umount small-disk && disk=""
+fi
 
 # The serve flags reach the config: the limits and workers the server reports.
 "$vibro" serve --port 0 --quiet --threads 3 --max-t-end 50 --deadline-ms 250 --max-pixels 1e6 \

@@ -5,6 +5,7 @@
 #include <cmath>
 
 #include "core/simulate.h"
+#include "core/watch.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -38,6 +39,23 @@ TEST(Limiter, MobileLimiterLetsThePelletPassUntilItsPartnerRearmsIt) {
   auto impacts = testing::events_of(run, EventKind::limiter);
   ASSERT_GE(impacts.size(), 6u);
   for (std::size_t k = 0; k < impacts.size(); ++k) EXPECT_EQ(impacts[k]->limiter, static_cast<int>(k % 2));
+}
+
+// Past 2^53 turns k + 1.0 == k: a floating-point turn counter never ended here. (So far out an
+// angle has no digits below the turn, and whether it is on the limiter is round-off.)
+TEST(Limiter, TheNextLimiterIsFoundAtAnyAngle) {
+  for (double phi : {1e17, -1e17, 1e300}) {
+    on_limiter_angle(0.5, phi, 1e-12);
+    const Model m = testing::one_pellet(0.05, 0.0, 6.0);
+    Model with_limiter = m;
+    with_limiter.limiters = {{0.5, 0.7, false, -1, {}}};
+    Body body;
+    body.members = {0};
+    int limiter = -1;
+    double target = 0.0;
+    EXPECT_TRUE(next_limiter(with_limiter, {true}, body, phi, 1, 1e-12, limiter, target));
+    EXPECT_EQ(limiter, 0);
+  }
 }
 
 TEST(Limiter, AnglesMatchModuloTwoPi) {

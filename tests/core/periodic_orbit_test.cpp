@@ -6,6 +6,7 @@
 
 #include <Eigen/Eigenvalues>
 
+#include <chrono>
 #include <cmath>
 #include <complex>
 #include <map>
@@ -79,6 +80,29 @@ void expect_jacobian_matches_differences(const Model& m, std::vector<EventKind> 
   const double scale = std::max(1.0, fd.cwiseAbs().maxCoeff());
   EXPECT_LT((p.jacobian - fd).cwiseAbs().maxCoeff(), 1e-5 * scale)
       << "exact\n" << p.jacobian << "\ndifferenced\n" << fd;
+}
+
+// The saltations along a long path are not under the run's deadline unless given it: an orbit
+// search on a circle of 1e-9 m, 20,000 impacts a period, answered 0.4 s past its deadline.
+TEST(MapJacobian, GivesUpOnceTheDeadlineHasPassed) {
+  const Model m = impact_oscillator(5.0);
+  SimOptions o = tight();
+  o.t_end = 2 * forcing_period(m);
+  o.keep_path = true;
+  o.check = false;
+  const RunResult run = simulate(m, o);
+  ASSERT_GT(run.path.size(), 2u);
+  const auto past = std::chrono::steady_clock::now() - std::chrono::seconds(1);
+  const PathJacobian late = path_jacobian(m, run.path, o.rtol, past);
+  EXPECT_TRUE(late.out_of_time);
+  EXPECT_NE(late.unsupported.find("deadline"), std::string::npos) << late.unsupported;
+  const PathJacobian in_time = path_jacobian(m, run.path, o.rtol);
+  EXPECT_FALSE(in_time.out_of_time);
+  EXPECT_TRUE(in_time.unsupported.empty()) << in_time.unsupported;
+  SimOptions spent = tight();
+  spent.deadline_ms = 0.0;
+  const MapPoint p = stroboscopic_map(m, spent, 1, start_of(m));
+  EXPECT_FALSE(p.ok);
 }
 
 TEST(MapJacobian, LimiterImpactsMatchDifferences) {
@@ -226,6 +250,17 @@ TEST(PeriodicOrbit, BadRequestsNameTheirField) {
   mobile.limiters.push_back({1.0, 0.5, true, 0, {}});
   EXPECT_EQ(validate_orbit(mobile, {})->field, "model.limiters[1].mobile");
   EXPECT_FALSE(validate_orbit(impact_oscillator(5.0), {}));
+}
+
+// A guess is a starting state and is bounded as phi0 and dphi0 are: far past them an angle keeps
+// no digits below the turn (a guess of 1e17 rad once hung the search).
+TEST(PeriodicOrbit, GuessesAreBoundedLikeStartingStates) {
+  const Model m = impact_oscillator(5.0);
+  EXPECT_EQ(validate_orbit(m, from_guess(1e17, 1.0))->field, "periodic_orbit.guess[0].phi");
+  EXPECT_EQ(validate_orbit(m, from_guess(-1e4 - 1.0, 0.0))->field, "periodic_orbit.guess[0].phi");
+  EXPECT_EQ(validate_orbit(m, from_guess(0.1, 2e7))->field, "periodic_orbit.guess[0].dphi");
+  EXPECT_EQ(validate_orbit(m, from_guess(0.1, NAN))->field, "periodic_orbit.guess[0].dphi");
+  EXPECT_FALSE(validate_orbit(m, from_guess(1e4, -1e7)));
 }
 
 }  // namespace

@@ -77,6 +77,27 @@ TEST(Trust, TheEventTimeEstimateTracksTheTrueError) {
   }
 }
 
+// Without gravity (g = 0 is legal: a horizontal circle) the scene's time scale is its motion's,
+// not sqrt(R/g) = ∞: the estimate was 7e141 s. It stays above the true error and near it.
+TEST(Trust, WithoutGravityTheEstimateIsOnTheMotionsScale) {
+  for (const char* name : {"paper", "impact-oscillator", "mass-ratio"}) {
+    Model model = testing::preset(name).model;
+    model.g = 0.0;
+    const double t_end = testing::preset(name).sim.t_end;
+    const Checked c = checked_against_reference(model, t_end, Method::automatic, 1e-9);
+    ASSERT_EQ(c.run.events.size(), c.reference_events) << name;
+    EXPECT_EQ(c.run.stats.trusted_until, c.run.stats.t_reached) << name;
+    EXPECT_GE(c.run.stats.event_time_error, 0.1 * c.truth) << name;
+    EXPECT_LT(c.run.stats.event_time_error, 1e-8) << name;
+    EXPECT_LT(c.run.stats.error_estimate, 1e-6) << name;
+  }
+  Model still = testing::preset("paper").model;
+  still.g = 0.0;
+  for (Pellet& p : still.pellets) p.dphi0 = 0.0, p.force = {};
+  EXPECT_EQ(time_scale(still), 1.0);
+  EXPECT_EQ(time_scale(testing::preset("paper").model), std::sqrt(0.5 / 9.81));
+}
+
 // The grazing preset reaches its limiter with zero speed: whether it strikes or turns back
 // depends on round-off. The run says from when its events are not trusted, and why, whichever
 // it did: at rtol 1e-8 and 1e-10 it struck, at 2.5e-4 and 1.3e-5 rad/s, and its shadow alike,

@@ -55,3 +55,26 @@ TEST(WorkPrecision, FrictionlessAgainstTheEnergy) {
 
 }  // namespace
 }  // namespace vibro
+
+namespace vibro {
+namespace {
+
+// The whole measurement answers to its deadline: forced at 1e9 rad/s, each run needs far more
+// than its share, and 42 runs of a share each held a server worker for 5 s. The points not
+// reached are left out and said.
+TEST(WorkPrecision, TheWholeMeasurementAnswersToItsDeadline) {
+  Scene s = testing::preset("paper");
+  s.model.pellets[0].force.Omega = 1e9;
+  SimOptions o = s.sim;
+  o.deadline_ms = 20.0;
+  WorkPrecisionOptions w;
+  w.repeats = 1;
+  w.deadline_ms = 60.0;
+  const WorkPrecisionReport r = work_precision(s.model, o, w);
+  EXPECT_LT(r.points.size(), w.methods.size() * w.rtols.size());
+  EXPECT_NE(r.message.find("deadline of 60 ms"), std::string::npos) << r.message;
+  for (const WorkPrecisionPoint& p : r.points) EXPECT_FALSE(p.completed);
+}
+
+}  // namespace
+}  // namespace vibro

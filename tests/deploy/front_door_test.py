@@ -264,6 +264,30 @@ def test_pipelining_and_smuggling(door):
           repr(got[:40]))
 
 
+def test_errors_are_json(door):
+    """What nginx refuses itself comes back as the API's JSON, as a replica's refusals do."""
+    cases = {
+        400: b"NONSENSE\r\n\r\n",
+        413: b"POST /api/simulate HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+             b"Content-Length: 99999999\r\nConnection: close\r\n\r\n{",
+        414: b"GET /api/render?preset=" + b"p" * 9000 + b" HTTP/1.1\r\nHost: x\r\n\r\n",
+        431: b"GET /api/health HTTP/1.1\r\nHost: x\r\nX-Big: " + b"a" * 9000 + b"\r\n\r\n",
+        501: b"POST /api/simulate HTTP/1.1\r\nHost: x\r\nTransfer-Encoding: gzip\r\n"
+             b"Connection: close\r\n\r\n",
+        505: b"GET /api/health HTTP/2.7\r\nHost: x\r\n\r\n",
+    }
+    for status, request in cases.items():
+        got = raw(door, request)
+        head, _, body = got.partition(b"\r\n\r\n")
+        try:
+            fields = json.loads(body)
+        except ValueError:
+            fields = {}
+        check(f"nginx's {status} is JSON naming a field",
+              head.startswith(b"HTTP/1.1 %d" % status) and b"application/json" in head
+              and "error" in fields and "field" in fields, repr(got[:160]))
+
+
 def load(door, seconds, threads, make_request, results):
     """Requests from `threads` keep-alive clients for `seconds`; appends statuses to results."""
     def client(k):
@@ -357,6 +381,7 @@ def main():
         test_sweep_jobs(door)
         test_header_flood(door)
         test_pipelining_and_smuggling(door)
+        test_errors_are_json(door)
         test_slowloris(door)
         test_replica_killed(door)
         test_soak(door, args.soak)

@@ -144,8 +144,6 @@ RandomScene scene_at(std::uint64_t seed, long i) {
   return gen_scene()(rc::Random(z), rc::kNominalSize).value();
 }
 
-double time_scale(const Model& model) { return std::sqrt(model.R / model.g); }
-
 rc::Gen<RandomScene> gen_scene() {
   return rc::gen::exec([] {
     RandomScene s;

@@ -33,8 +33,7 @@ rc::Gen<RandomScene> gen_scene();
 // Thread-safe (RapidCheck's generation context is global: one scene is generated at a time).
 RandomScene scene_at(std::uint64_t seed, long i);
 
-// The scene's time scale sqrt(R/g), s: event-time tolerances and run lengths scale with it.
-double time_scale(const Model& model);
+// Event-time tolerances and run lengths scale with the scene's time scale (core/model.h).
 
 // The run options the instrument uses: the scene's t_end, the method and tolerances, and the
 // bounds on work (events, steps, wall clock) that keep a random run cheap.

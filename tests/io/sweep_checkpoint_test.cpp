@@ -1,19 +1,20 @@
 // A sweep's chains as bytes and in a checkpoint file: exact to the bit, a record cut off by a
 // crash left out, another scene's or another version's checkpoint or another file refused.
+#include "io/sweep_checkpoint.h"
+
 #include <gtest/gtest.h>
+#include <unistd.h>
 
 #include <cmath>
 #include <cstdio>
-#include <limits>
+#include <cstring>
 #include <filesystem>
 #include <fstream>
 #include <iterator>
-#include <unistd.h>
-#include <cstring>
+#include <limits>
 
 #include "io/presets.h"
 #include "io/scene_json.h"
-#include "io/sweep_checkpoint.h"
 
 namespace vibro {
 namespace {
@@ -24,7 +25,8 @@ SweepRun awkward_run(int k) {
   r.value2 = -std::nextafter(1.0, 2.0);
   r.start = k;
   r.direction = -1;
-  r.points = {{1, 2.5, 1e-300, -0.0, 6.283185307179586, 0, false}, {0, 3.0, 7.0, 8.0, 0.0, -1, true}};
+  r.points = {{1, 2.5, 1e-300, -0.0, 6.283185307179586, 0, false},
+              {0, 3.0, 7.0, 8.0, 0.0, -1, true}};
   r.period = 2;
   r.impacts_per_period = 1.0 / 7.0;
   r.at_rest = true;
@@ -101,8 +103,12 @@ TEST(SweepWire, ARecordCutOffIsLeftOutAndForeignBytesAreMalformed) {
   EXPECT_TRUE(read_chains("x,y\n1,2\n and more text than a record head").malformed);
 }
 
-Scene scene_of(const char* preset) {
-  return std::get<Scene>(scene_from_text(*preset_json(preset)));
+// The impact oscillator's sweep without continuation over 10 values: chains 0..9 of one run.
+Scene sweep_scene() {
+  Scene scene = std::get<Scene>(scene_from_text(*preset_json("impact-oscillator")));
+  scene.sweep->continuation = Continuation::none;
+  scene.sweep->axis.count = 10;
+  return scene;
 }
 
 std::string slurp(const std::string& path) {
@@ -110,26 +116,39 @@ std::string slurp(const std::string& path) {
   return {std::istreambuf_iterator<char>(f), std::istreambuf_iterator<char>()};
 }
 
+std::string temporary_path(const std::string& name) {
+  return (std::filesystem::temp_directory_path() /
+          ("vibro-" + std::to_string(::getpid()) + "-" + name))
+      .string();
+}
+
+// The refusal of reading `path` for `scene`, or "" when it was read.
+std::string refusal(const std::string& path, const Scene& scene) {
+  const auto read = read_checkpoint(path, scene);
+  const auto* why = std::get_if<std::string>(&read);
+  return why ? *why : "";
+}
+
 TEST(SweepCheckpoint, KeepsChainsForItsSceneOnlyAndResumesWhole) {
-  const std::string path = (std::filesystem::temp_directory_path() /
-                            ("vibro-checkpoint-" + std::to_string(::getpid()) + ".partial"))
-                               .string();
-  const Scene scene = scene_of("impact-oscillator");
+  const std::string path = temporary_path("checkpoint.partial");
+  const Scene scene = sweep_scene();
   const std::uint64_t fp = scene_fingerprint(scene);
   {
     CheckpointWriter w(path, fp, nullptr);
-    ASSERT_TRUE(w.ok());
-    w.add({2, {awkward_run(0)}});
-    w.add({5, {awkward_run(1), awkward_run(2)}});
+    ASSERT_FALSE(w.problem());
+    EXPECT_TRUE(w.add({2, {awkward_run(0)}}));
+    EXPECT_TRUE(w.add({5, {awkward_run(1)}}));
+    EXPECT_EQ(w.chains(), 2u);
   }
-  auto read = read_checkpoint(path, fp);
+  auto read = read_checkpoint(path, scene);
   ASSERT_TRUE(std::holds_alternative<Checkpoint>(read)) << std::get<std::string>(read);
   Checkpoint c = std::get<Checkpoint>(read);
   ASSERT_EQ(c.chains.size(), 2u);
-  EXPECT_EQ(c.runs, 3u);
+  EXPECT_EQ(c.runs, 2u);
+  EXPECT_EQ(c.chains[0].chain, 2);
+  EXPECT_EQ(c.chains[1].chain, 5);
   expect_same(c.chains[0].runs[0], awkward_run(0));
   expect_same(c.chains[1].runs[0], awkward_run(1));
-  expect_same(c.chains[1].runs[1], awkward_run(2));
 
   // What decides the runs decides the fingerprint; the figure does not.
   Scene drawn = scene;
@@ -138,23 +157,19 @@ TEST(SweepCheckpoint, KeepsChainsForItsSceneOnlyAndResumesWhole) {
   Scene other = scene;
   other.sweep->axis.count += 1;
   EXPECT_NE(scene_fingerprint(other), fp);
-  auto refused = read_checkpoint(path, scene_fingerprint(other));
-  ASSERT_TRUE(std::holds_alternative<std::string>(refused));
-  EXPECT_NE(std::get<std::string>(refused).find("another scene"), std::string::npos);
+  EXPECT_NE(refusal(path, other).find("another scene"), std::string::npos);
 
   // A crash mid-write leaves half a record: it is left out, and a resumed writer rewrites the
   // file whole before it adds.
   const std::string before = slurp(path);
-  std::string half;
-  append_chain(half, {9, {awkward_run(3)}});
-  {
-    std::ofstream f(path, std::ios::binary | std::ios::app);
-    f << half.substr(0, half.size() / 2);
+  const std::string half = checkpoint_record(fp, {9, {awkward_run(3)}});
+  for (std::size_t cut = 1; cut < half.size(); cut += 13) {
+    std::ofstream(path, std::ios::binary) << before << half.substr(0, cut);
+    read = read_checkpoint(path, scene);
+    ASSERT_TRUE(std::holds_alternative<Checkpoint>(read)) << cut << std::get<std::string>(read);
+    EXPECT_EQ(std::get<Checkpoint>(read).chains.size(), 2u) << cut;
   }
-  read = read_checkpoint(path, fp);
-  ASSERT_TRUE(std::holds_alternative<Checkpoint>(read));
   c = std::get<Checkpoint>(read);
-  EXPECT_EQ(c.chains.size(), 2u);
   {
     CheckpointWriter w(path, fp, &c);
     EXPECT_EQ(slurp(path), before);
@@ -163,23 +178,101 @@ TEST(SweepCheckpoint, KeepsChainsForItsSceneOnlyAndResumesWhole) {
     w.remove();
   }
   EXPECT_FALSE(std::filesystem::exists(path));
-  refused = read_checkpoint(path, fp);
-  ASSERT_TRUE(std::holds_alternative<std::string>(refused));
-  EXPECT_NE(std::get<std::string>(refused).find("does not exist"), std::string::npos);
+  EXPECT_NE(refusal(path, scene).find("does not exist"), std::string::npos);
 
   // A checkpoint of an earlier version, whose records do not carry what these do.
-  std::string v1 = before;
-  v1.replace(v1.find(" v2 "), 4, " v1 ");
-  std::ofstream(path, std::ios::binary) << v1;
-  refused = read_checkpoint(path, fp);
-  ASSERT_TRUE(std::holds_alternative<std::string>(refused));
-  EXPECT_NE(std::get<std::string>(refused).find("another version"), std::string::npos);
+  std::string v2 = before;
+  v2.replace(v2.find(" v3 "), 4, " v2 ");
+  std::ofstream(path, std::ios::binary) << v2;
+  EXPECT_NE(refusal(path, scene).find("another version"), std::string::npos);
 
   std::ofstream(path) << "x,y\n1,2\n";
-  refused = read_checkpoint(path, fp);
-  ASSERT_TRUE(std::holds_alternative<std::string>(refused));
-  EXPECT_NE(std::get<std::string>(refused).find("not a vibro sweep checkpoint"), std::string::npos);
+  EXPECT_NE(refusal(path, scene).find("not a vibro sweep checkpoint"), std::string::npos);
   std::filesystem::remove(path);
+}
+
+// A file of the scene's header and `records`, written as CheckpointWriter writes them (so that
+// every checksum holds unless a test changes the bytes after).
+std::string checkpoint_of(const Scene& scene, const std::vector<ChainRuns>& chains) {
+  const std::string path = temporary_path("made.partial");
+  {
+    CheckpointWriter w(path, scene_fingerprint(scene), nullptr);
+    for (const ChainRuns& c : chains) w.add(c);
+  }
+  std::string bytes = slurp(path);
+  std::filesystem::remove(path);
+  return bytes;
+}
+
+// Reading `bytes` as the scene's checkpoint is refused with a message holding each of `words`.
+void expect_refused(const Scene& scene, const std::string& bytes,
+                    const std::vector<std::string>& words) {
+  const std::string path = temporary_path("tampered.partial");
+  std::ofstream(path, std::ios::binary) << bytes;
+  const std::string why = refusal(path, scene);
+  std::filesystem::remove(path);
+  ASSERT_FALSE(why.empty()) << "read as a checkpoint";
+  for (const std::string& w : words) EXPECT_NE(why.find(w), std::string::npos) << why;
+}
+
+// Each tampering that once changed, lost or duplicated the rows of a resumed sweep is refused,
+// naming the record.
+TEST(SweepCheckpoint, RefusesDamagedAndInconsistentRecords) {
+  const Scene scene = sweep_scene();
+  const std::string good = checkpoint_of(scene, {{1, {awkward_run(0)}}, {4, {awkward_run(1)}}});
+  const std::size_t head = good.find('\n') + 1;
+  const std::size_t second = head + checkpoint_record(0, {1, {awkward_run(0)}}).size();
+
+  // Every single bit flipped in the records: no run changes silently.
+  for (std::size_t byte = head; byte < good.size(); ++byte) {
+    for (int bit : {0, 5}) {
+      std::string flipped = good;
+      flipped[byte] = static_cast<char>(flipped[byte] ^ (1 << bit));
+      const std::string path = temporary_path("flipped.partial");
+      std::ofstream(path, std::ios::binary) << flipped;
+      const auto read = read_checkpoint(path, scene);
+      std::filesystem::remove(path);
+      // A flipped length may make the last record look cut off (left out, run again); else
+      // the checksum fails. Never are the runs read changed.
+      if (const auto* c = std::get_if<Checkpoint>(&read)) {
+        ASSERT_EQ(c->chains.size(), byte < second ? 0u : 1u) << byte;
+        if (!c->chains.empty()) expect_same(c->chains[0].runs[0], awkward_run(0));
+      }
+    }
+  }
+  std::string flipped = good;
+  flipped[second - 9] ^= 1;  // a byte of the first record's runs
+  expect_refused(scene, flipped, {"record 1 (at byte " + std::to_string(head) + ")", "checksum"});
+
+  // Relabelled: the first record's chain index rewritten in place (the checksum covers it).
+  std::string relabelled = good;
+  const std::int32_t four = 4;
+  std::memcpy(relabelled.data() + head + 8 + 12, &four, sizeof four);  // length, mark, length
+  expect_refused(scene, relabelled, {"record 1", "checksum"});
+
+  // Records with good checksums that the sweep cannot have made.
+  expect_refused(scene, good + checkpoint_record(scene_fingerprint(scene), {4, {awkward_run(1)}}),
+                 {"record 3", "holds chain 4, which an earlier record holds"});
+  expect_refused(scene, checkpoint_of(scene, {{1000000, {awkward_run(0)}}}),
+                 {"record 1", "chain 1000000", "0..9"});
+  expect_refused(scene, checkpoint_of(scene, {{-5, {awkward_run(0)}}}),
+                 {"record 1", "chain -5", "0..9"});
+  expect_refused(scene, checkpoint_of(scene, {{1, {awkward_run(0)}}, {3, {}}}),
+                 {"record 2", "chain 3 with 0 runs", "has 1"});
+  expect_refused(scene, checkpoint_of(scene, {{3, {awkward_run(0), awkward_run(1)}}}),
+                 {"record 1", "with 2 runs"});
+
+  // Another scene's records after this scene's header: their checksums hold the other scene.
+  Scene other = scene;
+  other.sweep->axis.to += 1.0;
+  const std::string theirs = checkpoint_of(other, {{2, {awkward_run(2)}}});
+  expect_refused(scene, good + theirs.substr(theirs.find('\n') + 1), {"record 3", "checksum"});
+
+  // A checkpoint that is a directory, not a file.
+  const std::string dir = temporary_path("dir.partial");
+  std::filesystem::create_directory(dir);
+  EXPECT_NE(refusal(dir, scene).find("is a directory"), std::string::npos);
+  std::filesystem::remove(dir);
 }
 
 }  // namespace

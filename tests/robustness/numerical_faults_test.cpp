@@ -3,9 +3,11 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
 
+#include "io/presets.h"
 #include "io/result_json.h"
 #include "tests/robustness/scene_runs.h"
 
@@ -100,6 +102,30 @@ TEST(NumericalFaults, ExtremeScenesEndCleanlyUnderEveryMethod) {
       const RunResult run = run_checked(scene, method, 500.0);
       EXPECT_LT(run.stats.wall_ms, 5000.0);
     }
+  }
+}
+
+}  // namespace
+}  // namespace vibro::robustness
+
+namespace vibro::robustness {
+namespace {
+
+// The start's speeds are the scene's own, not round-off: on a circle of 1e-300 m (v_eps
+// 3e137 rad/s) the pellets started at 50 and 6 rad/s were reported at rest when the run failed.
+TEST(NumericalFaults, ARunFailingAtItsStartReportsTheStartsSpeeds) {
+  nlohmann::json paper = nlohmann::json::parse(*preset_json("paper"));
+  paper["model"]["R"] = 1e-300;
+  const Scene scene = parsed(paper.dump());
+  // DOPRI5 takes the first steps (the pellets reach 1e150 rad/s, strike and come to rest).
+  for (Method method : {Method::dop853, Method::radau5, Method::automatic}) {
+    SCOPED_TRACE(method_name(method));
+    const RunResult run = run_checked(scene, method);
+    EXPECT_EQ(run.stats.termination, Termination::numerical_failure);
+    EXPECT_EQ(run.stats.t_reached, 0.0);
+    ASSERT_EQ(run.summary.final.size(), 2u);
+    EXPECT_DOUBLE_EQ(run.summary.final[0].dphi, 50.0);
+    EXPECT_NEAR(run.summary.final[1].dphi, 6.0, 1e-12);
   }
 }
 

@@ -7,6 +7,8 @@
 #include <thread>
 
 #include "io/presets.h"
+#include "io/scene_json.h"
+#include "server/jobs.h"
 #include "tests/server/test_server.h"
 
 namespace vibro::testing {
@@ -128,6 +130,32 @@ TEST(SweepJobs, AJobIsCancelledAndAFullQueueAnswers503) {
   }
   EXPECT_EQ(c.Get("/api/jobs/s0000000000000000")->status, 404);
   EXPECT_EQ(c.Delete("/api/jobs/s0000000000000000")->status, 404);
+}
+
+// Finished jobs are kept up to JobOptions::kept however they end: those queued behind the last
+// submit end after it (the queue full, then quiet), and were once all kept on top of it:
+// 32 + 8 queued + 1 running = 41 by default.
+TEST(SweepJobs, AtMostKeptFinishedJobsAreKept) {
+  server::JobOptions options;
+  options.queue = 8;
+  options.kept = 2;
+  server::Jobs jobs(options);
+  const Scene scene = std::get<Scene>(scene_from_text(sweep_scene(3, 100)));
+  std::vector<std::string> ids;
+  for (int k = 0; k < 9; ++k)
+    if (const auto status = jobs.submit(server::JobKind::sweep, scene)) ids.push_back(status->id);
+  ASSERT_GT(ids.size(), options.kept + 1);
+  // Until the last ends (each job ends after the one before it: one runs at a time).
+  for (int k = 0; k < 1200; ++k) {
+    const auto last = jobs.status(ids.back());
+    if (last && last->state != server::JobState::queued && last->state != server::JobState::running)
+      break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  std::size_t kept = 0;
+  for (const std::string& id : ids) kept += jobs.status(id).has_value();
+  EXPECT_EQ(kept, options.kept);
+  EXPECT_TRUE(jobs.finished(ids.back())) << "the newest is kept";
 }
 
 TEST(SweepJobs, BadSweepsAreRefusedNamingTheField) {

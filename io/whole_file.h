@@ -1,0 +1,34 @@
+// Files read and written whole, for the command line: a file is read in full or refused with a
+// reason a person can act on (it does not exist, it is a directory, it cannot be read), and
+// written whole or not at all: the bytes go to a temporary file beside the target, which is
+// flushed, synced to the disk and renamed over the target only when every step succeeded; on
+// any failure (a full disk, a file size limit, a directory in the way) the target is left as it
+// was and the temporary file is removed.
+#pragma once
+
+#include <optional>
+#include <string>
+#include <string_view>
+#include <variant>
+
+namespace vibro {
+
+// Why a file could not be read or written: a sentence naming the file, such as
+// "out.csv cannot be written: No space left on device".
+struct FileProblem {
+  std::string message;
+  int error = 0;  // the errno: ENOENT when the file does not exist
+};
+
+std::variant<std::string, FileProblem> read_whole_file(const std::string& path);
+
+// Replaces `path` by `bytes` (atomically, as above). A target that is a symbolic link has the
+// file it points to replaced; an existing target keeps its permissions, a new one gets the
+// umask's.
+std::optional<FileProblem> write_whole_file(const std::string& path, std::string_view bytes);
+
+// Writes all of `bytes` to the open descriptor `fd`, through short writes and interruptions;
+// the errno of the failure, or 0.
+int write_all(int fd, std::string_view bytes);
+
+}  // namespace vibro
