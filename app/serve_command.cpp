@@ -98,6 +98,11 @@ void add_flags(CLI::App& serve, server::ServerConfig& c) {
                    256);
   add_integer_flag(serve, "--sweep-queue", "sweeps that may wait before 503 (default 8)",
                    c.sweep_queue, 0, 1000);
+  serve
+      .add_option("--max-sweep-s", l.sweep_seconds,
+                  "wall clock of one sweep job, s, shared by its runs (default 300)")
+      ->check(number_in(1, 86400))
+      ->type_name("S");
   add_integer_flag(serve, "--replica",
                    "behind scripts/deploy.sh: this replica's number, the prefix r<N>- of its "
                    "sweep job ids (default 0: none)",

@@ -80,6 +80,11 @@ std::optional<std::string> set_parameter(Model& model, const std::string& path, 
   return std::nullopt;
 }
 
+double* parameter_field(Model& model, const std::string& path) {
+  std::string why;
+  return field_of(model, path, why);
+}
+
 std::optional<double> get_parameter(const Model& model, const std::string& path) {
   Model copy = model;
   std::string why;

@@ -14,6 +14,10 @@ namespace vibro {
 // this model (an unknown name, or an index past the pellets or limiters).
 std::optional<std::string> set_parameter(Model& model, const std::string& path, double value);
 
+// The field at `path` in `model`, or null when the path names none: for setting it many times
+// (a sweep checking each of its values). Valid while the model's lists keep their sizes.
+double* parameter_field(Model& model, const std::string& path);
+
 // The field's value, if the path names one.
 std::optional<double> get_parameter(const Model& model, const std::string& path);
 

@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <chrono>
 #include <cmath>
+#include <mutex>
 #include <random>
 #include <thread>
 #include <tuple>
@@ -13,7 +14,9 @@
 namespace vibro {
 namespace {
 
-constexpr long kMaxRuns = 10000000;
+// Every value of a sweep is checked up front (validate_sweep): about 3 µs each for 8 pellets and
+// 16 limiters, so a million runs take some 3 s to check.
+constexpr long kMaxRuns = 1000000;
 constexpr int kMaxPeriods = 1000000;
 
 // The initial state a run starts from: the scene's, or the last state of the run before it.
@@ -38,6 +41,57 @@ std::optional<FieldError> check_axis(const Model& model, const SweepAxis& axis,
   if (!std::isfinite(axis.from)) return FieldError{at + "from", "must be a finite number"};
   if (!std::isfinite(axis.to)) return FieldError{at + "to", "must be a finite number"};
   if (axis.to < axis.from) return FieldError{at + "to", "must not be below " + at + "from"};
+  return std::nullopt;
+}
+
+// Why the model at one value (pair) of the sweep is not one a scene of its own could hold: the
+// model's error, named by the swept parameter's path (the first axis's, unless the failing field
+// is the second's) and with the values in its message; or a stroboscopic section without forcing.
+std::optional<FieldError> check_value(const Model& m, const SweepSpec& spec, double v, double v2) {
+  std::optional<FieldError> e = validate_model(m);
+  if (!e) {
+    if (spec.section == SectionKind::stroboscopic &&
+        std::none_of(m.pellets.begin(), m.pellets.end(),
+                     [](const Pellet& p) { return p.force.Omega > 0.0; }))
+      e = FieldError{"sweep.section",
+                     "a stroboscopic section needs a forced pellet (Omega > 0); without forcing "
+                     "use \"impact\""};
+    else
+      return std::nullopt;
+  }
+  std::string at = spec.axis.parameter + " = " + shortest_text(v);
+  if (spec.axis2) at += ", " + spec.axis2->parameter + " = " + shortest_text(v2);
+  const bool named = e->field == spec.axis.parameter || e->field == "sweep.section" ||
+                     (spec.axis2 && e->field == spec.axis2->parameter);
+  if (!named) {
+    e->message = e->field + " " + e->message;
+    e->field = spec.axis.parameter;
+  }
+  e->message += " (at " + at + ", a value of the sweep)";
+  return e;
+}
+
+// Every value (pair) of the sweep, each model checked as a scene of its own would be: the checks
+// are not all ranges (pellets and limiters must not coincide mod 2π, a stroboscopic section
+// needs forcing), so the ends alone do not vouch for the values between them.
+std::optional<FieldError> check_every_value(const Model& model, const SweepSpec& spec) {
+  const SweepAxis one{"", 0.0, 0.0, 1};
+  const SweepAxis& a2 = spec.axis2 ? *spec.axis2 : one;
+  // An axis from a value to itself has one value however many runs it makes.
+  const int n = spec.axis.from == spec.axis.to ? 1 : spec.axis.count;
+  const int n2 = a2.from == a2.to ? 1 : a2.count;
+  Model m = model;
+  double* x = parameter_field(m, spec.axis.parameter);  // check_axis found both
+  double* x2 = spec.axis2 ? parameter_field(m, a2.parameter) : nullptr;
+  for (int j = 0; j < n2; ++j) {
+    const double v2 = a2.value(j);
+    if (x2) *x2 = v2;
+    for (int i = 0; i < n; ++i) {
+      const double v = spec.axis.value(i);
+      *x = v;
+      if (auto e = check_value(m, spec, v, v2)) return e;
+    }
+  }
   return std::nullopt;
 }
 
@@ -107,6 +161,7 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
   SweepRun run;
   auto phase = [&](double t) { return kTwoPi * (t / T - std::floor(t / T)); };
   if (spec.section == SectionKind::stroboscopic) {
+    run.points.reserve(r.stops.size() * m.pellets.size());
     for (const StateAt& s : r.stops)
       for (int i = 0; i < m.size(); ++i) {
         run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase(s.t), -1,
@@ -126,6 +181,8 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
       run.points.push_back({e.pellets[0], e.t, e.phi, e.dphi_before[0], phase(e.t), e.limiter,
                             e.t <= r.stats.trusted_until});
   }
+  // A vector's growth leaves up to half of it spare: a sweep keeps exactly its points.
+  run.points.shrink_to_fit();
   run.impacts_per_period = static_cast<double>(impacts) / spec.record;
   run.at_rest = std::all_of(r.summary.final.begin(), r.summary.final.end(), held);
   run.termination = r.stats.termination;
@@ -182,6 +239,10 @@ double sweep_period(const Model& model) {
   return kTwoPi * std::sqrt(model.R / model.g);
 }
 
+long stroboscopic_points_per_run(const Model& model, const SweepSpec& spec) {
+  return (static_cast<long>(spec.record) + 1) * model.size();
+}
+
 long sweep_runs(const SweepSpec& spec) {
   const long per_start = static_cast<long>(spec.axis.count) * (spec.axis2 ? spec.axis2->count : 1);
   const long directions = spec.continuation == Continuation::both ? 2 : 1;
@@ -203,25 +264,7 @@ std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& sp
     return FieldError{"sweep.initial_states", "must be from 1 to 1000"};
   if (sweep_runs(spec) > kMaxRuns)
     return FieldError{"sweep.count", "the sweep would make more than " + std::to_string(kMaxRuns) + " runs"};
-  // Every model the sweep makes is valid when its corners are: the checks are ranges.
-  const SweepAxis one{"", 0.0, 0.0, 1};
-  const SweepAxis& a2 = spec.axis2 ? *spec.axis2 : one;
-  for (double v : {spec.axis.from, spec.axis.to})
-    for (double v2 : {a2.from, a2.to}) {
-      const Model m = with_values(model, spec, v, v2);
-      if (auto e = validate_model(m)) {
-        e->message += " (at sweep value " + std::to_string(v) +
-                      (spec.axis2 ? ", " + std::to_string(v2) : std::string()) + ")";
-        return e;
-      }
-      if (spec.section == SectionKind::stroboscopic &&
-          std::none_of(m.pellets.begin(), m.pellets.end(),
-                       [](const Pellet& p) { return p.force.Omega > 0.0; }))
-        return FieldError{"sweep.section",
-                          "a stroboscopic section needs a forced pellet (Omega > 0); without "
-                          "forcing use \"impact\""};
-    }
-  return std::nullopt;
+  return check_every_value(model, spec);
 }
 
 int sweep_chain_count(const SweepSpec& spec) {
@@ -230,10 +273,10 @@ int sweep_chain_count(const SweepSpec& spec) {
 }
 
 std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& options,
-                                      const SweepSpec& spec, int c,
-                                      const std::atomic<bool>* cancel,
+                                      const SweepSpec& spec, int c, const std::atomic<bool>* cancel,
                                       const std::function<void()>& run_done,
-                                      const std::function<void(double v, double v2)>& before_run) {
+                                      const std::function<void(double v, double v2)>& before_run,
+                                      const std::function<bool(const SweepRun&)>& admit) {
   const Chain chain = chain_at(spec, c);
   const int n = model.size();
   const double v2 = spec.axis2 ? spec.axis2->value(chain.j) : 0.0;
@@ -262,6 +305,7 @@ std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& opti
     run.value2 = v2;
     run.start = chain.start;
     run.direction = link.direction;
+    if (admit && !admit(run)) break;
     runs.push_back(std::move(run));
     state = std::move(last);
     if (run_done) run_done();
@@ -285,19 +329,54 @@ SweepResult run_sweep(const Model& model, const SimOptions& options, const Sweep
   const long total = sweep_runs(spec);
   std::atomic<int> next{0};
   std::atomic<long> done{0};
+  std::atomic<long> kept{0};  // section points of the runs kept
   std::atomic<bool> cancelled{false};
+  // Set when the sweep is cancelled or a bound is reached: no new run starts.
+  std::atomic<bool> halt{false};
+  std::mutex stop_mutex;
+  std::optional<FieldError> stopped;
+  auto stop = [&](FieldError why) {
+    const std::lock_guard lock(stop_mutex);
+    if (!stopped) stopped = std::move(why);
+    halt = true;
+  };
+  auto runs_done = [&] {
+    return " after " + std::to_string(done.load()) + " of " + std::to_string(total) + " runs";
+  };
+  // The bounds and the cancel flag, looked at between runs.
+  auto look = [&] {
+    if (control.cancel && control.cancel->load()) {
+      cancelled = true;
+      halt = true;
+    }
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (ms > control.budget_ms)
+      stop({"sweep.count", "the sweep ran past its wall-clock budget of " +
+                               shortest_text(control.budget_ms / 1000.0) + " s" + runs_done() +
+                               ": sweep fewer values, or record fewer periods"});
+    return !halt;
+  };
+  auto admit = [&](const SweepRun& run) {
+    if (control.max_points <= 0) return true;
+    const long n = static_cast<long>(run.points.size());
+    if (kept.fetch_add(n) + n <= control.max_points) return true;
+    kept -= n;
+    stop({"sweep.record", "the sweep's runs would keep more than its limit of " +
+                              std::to_string(control.max_points) + " section points" + runs_done() +
+                              ": record fewer periods, or sweep fewer values"});
+    return false;
+  };
   auto run_done = [&] {
     const long d = ++done;
     if (control.progress) control.progress(d, total);
+    look();
   };
   auto work = [&] {
-    for (int c = next++; c < chains; c = next++) {
+    for (int c = next++; c < chains && look(); c = next++) {
       if (control.skip && control.skip(c)) continue;
-      done_chains[c] = run_sweep_chain(model, options, spec, c, control.cancel, run_done);
-      if (control.cancel && control.cancel->load()) {
-        cancelled = true;
-        return;
-      }
+      done_chains[c] = run_sweep_chain(model, options, spec, c, &halt, run_done, {}, admit);
+      if (halt) return;  // a chain cut short is not whole: no checkpoint keeps it
       if (control.chain_done) control.chain_done(c, done_chains[c]);
     }
   };
@@ -314,6 +393,7 @@ SweepResult run_sweep(const Model& model, const SimOptions& options, const Sweep
   order_sweep_runs(result.runs);
   result.threads = threads;
   result.cancelled = cancelled;
+  result.stopped = std::move(stopped);
   result.wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;

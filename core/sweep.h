@@ -7,6 +7,7 @@
 #include <atomic>
 #include <cstdint>
 #include <functional>
+#include <limits>
 #include <optional>
 #include <string>
 #include <vector>
@@ -52,21 +53,37 @@ struct SweepSpec {
 };
 
 // Why a sweep cannot run, naming the field ("sweep.parameter", "sweep.count", ...), or a model
-// field that a swept value makes invalid.
+// field that a swept value makes invalid: every value (every pair of a 2-D sweep) must make a
+// model that passes validate_model, as a scene of its own would, and the message names the
+// value. The swept parameter's path is the field, unless the model's failing field is the
+// other axis's.
 std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& spec);
 
 // The period of the motion the sweep's counts are in, s, for this model.
 double sweep_period(const Model& model);
 
+// One point of a section, stored compactly (40 bytes: a sweep may keep a million of them): the
+// doubles first, then the small fields. Made as {pellet, t, phi, dphi, phase, limiter, trusted}.
 struct SectionPoint {
-  int pellet = 0;
+  SectionPoint() = default;
+  SectionPoint(int pellet, double t, double phi, double dphi, double phase, int limiter,
+               bool trusted)
+      : t(t),
+        phi(phi),
+        dphi(dphi),
+        phase(phase),
+        pellet(static_cast<std::int16_t>(pellet)),
+        limiter(static_cast<std::int16_t>(limiter)),
+        trusted(trusted) {}
   double t = 0.0;
-  double phi = 0.0;   // unwrapped
-  double dphi = 0.0;  // before the impact, for the impact section
-  double phase = 0.0; // of the period at t, rad in [0, 2π)
-  int limiter = -1;   // impact section: the limiter struck
-  bool trusted = true;  // before the run's stats.trusted_until
+  double phi = 0.0;           // unwrapped
+  double dphi = 0.0;          // before the impact, for the impact section
+  double phase = 0.0;         // of the period at t, rad in [0, 2π)
+  std::int16_t pellet = 0;    // fewer than 2^15 pellets (SimLimits::max_pellets)
+  std::int16_t limiter = -1;  // impact section: the limiter struck
+  bool trusted = true;        // before the run's stats.trusted_until
 };
+static_assert(sizeof(SectionPoint) <= 40);
 
 // One run: a value (pair), a start, a direction of continuation.
 struct SweepRun {
@@ -97,6 +114,10 @@ struct SweepResult {
   int threads = 1;
   double wall_ms = 0.0;
   bool cancelled = false;
+  // Why a bound of SweepControl ended the sweep before its last run (its runs are then not all
+  // here), naming the field to change: "sweep.record" for the points, "sweep.count" for the
+  // wall clock.
+  std::optional<FieldError> stopped;
 };
 
 struct SweepControl {
@@ -108,10 +129,21 @@ struct SweepControl {
   std::function<bool(int chain)> skip;
   // Called after every whole chain, from any thread (a checkpoint keeps them).
   std::function<void(int chain, const std::vector<SweepRun>& runs)> chain_done;
+  // The section points the sweep may keep in all, 0: no bound. A run whose points would take
+  // the sweep past it is dropped and no new run starts (SweepResult::stopped): memory stays
+  // within the bound plus the runs under way.
+  long max_points = 0;
+  // The sweep's wall clock, ms: no run starts after it (SweepResult::stopped). Each run is
+  // bounded by its own options.deadline_ms.
+  double budget_ms = std::numeric_limits<double>::infinity();
 };
 
 // The number of runs the sweep makes.
 long sweep_runs(const SweepSpec& spec);
+
+// The section points of one run of a stroboscopic sweep, (record + 1) × pellets; an impact
+// section's are not known before the run.
+long stroboscopic_points_per_run(const Model& model, const SweepSpec& spec);
 
 // A sweep's runs come in chains: one run per value without continuation; with it, the values of
 // a row in order, each from the last state of the one before. Chains are the units a sweep is
@@ -120,12 +152,13 @@ long sweep_runs(const SweepSpec& spec);
 int sweep_chain_count(const SweepSpec& spec);
 
 // Runs chain c; stops before the next run once `cancel` is set. `before_run` is called with
-// each run's value (pair) before it starts, `run_done` after it.
-std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& options,
-                                      const SweepSpec& spec, int c,
-                                      const std::atomic<bool>* cancel = nullptr,
-                                      const std::function<void()>& run_done = {},
-                                      const std::function<void(double v, double v2)>& before_run = {});
+// each run's value (pair) before it starts, `run_done` after it. `admit`, when given, is asked
+// for each finished run before it is kept: false drops it and ends the chain.
+std::vector<SweepRun> run_sweep_chain(
+    const Model& model, const SimOptions& options, const SweepSpec& spec, int c,
+    const std::atomic<bool>* cancel = nullptr, const std::function<void()>& run_done = {},
+    const std::function<void(double v, double v2)>& before_run = {},
+    const std::function<bool(const SweepRun&)>& admit = {});
 
 // Puts runs in a sweep result's fixed order: start, value2, direction, value.
 void order_sweep_runs(std::vector<SweepRun>& runs);

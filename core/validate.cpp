@@ -14,27 +14,38 @@ std::string fmt(double x) {
   return {text, std::to_chars(text, text + sizeof text, x).ptr};
 }
 
-// Checks lo <= x <= hi (or lo < x when open_lo) and finiteness; returns the error if any.
-std::optional<FieldError> check_range(const std::string& field, double x, double lo, double hi,
+// Checks lo <= x <= hi (or lo < x when open_lo) and finiteness; returns the error if any. The
+// field's name is made only for an error: a sweep checks the model at every one of its values.
+template <class Name>
+std::optional<FieldError> check_range(const Name& field, double x, double lo, double hi,
                                       bool open_lo = false, bool open_hi = false) {
-  if (!std::isfinite(x)) return FieldError{field, "must be a finite number"};
+  if (!std::isfinite(x)) return FieldError{std::string(field), "must be a finite number"};
   const bool low = open_lo ? x <= lo : x < lo;
   const bool high = open_hi ? x >= hi : x > hi;
   if (low || high) {
-    return FieldError{field, "must be in " + std::string(open_lo ? "(" : "[") + fmt(lo) + ", " +
-                                 fmt(hi) + (open_hi ? ")" : "]") + ", got " + fmt(x)};
+    return FieldError{std::string(field), "must be in " + std::string(open_lo ? "(" : "[") +
+                                              fmt(lo) + ", " + fmt(hi) + (open_hi ? ")" : "]") +
+                                              ", got " + fmt(x)};
   }
   return std::nullopt;
 }
 
-std::string pellet_field(int i, const char* name) {
-  return "model.pellets[" + std::to_string(i) + "]." + name;
-}
-std::string limiter_field(int i, const char* name) {
-  return "model.limiters[" + std::to_string(i) + "]." + name;
-}
+// "model.pellets[i].name", spelled out when it is read as a string.
+struct ItemField {
+  const char* list;
+  int i;
+  const char* name;
+  operator std::string() const {
+    return std::string("model.") + list + "[" + std::to_string(i) + "]." + name;
+  }
+};
+
+ItemField pellet_field(int i, const char* name) { return {"pellets", i, name}; }
+ItemField limiter_field(int i, const char* name) { return {"limiters", i, name}; }
 
 }  // namespace
+
+std::string shortest_text(double x) { return fmt(x); }
 
 std::optional<FieldError> validate_state(const std::string& field, double phi, double dphi) {
   if (auto e = check_range(field + ".phi", phi, -kMaxStartAngle, kMaxStartAngle)) return e;

@@ -15,6 +15,9 @@ struct FieldError {
   std::string message;  // what was expected
 };
 
+// The shortest text that reads back as x, for messages: a value just past a bound shows how far.
+std::string shortest_text(double x);
+
 // The largest angle (rad) and angular speed (rad/s) a pellet may start with: phi0 and dphi0, and
 // every state a search starts from or steps to. Past them an angle keeps too few digits below the
 // turn for its motion to mean anything (2π at 1e4 rad is resolved to 1e-12 rad).

@@ -1,7 +1,9 @@
 #include "io/sweep_json.h"
 
-#include <iomanip>
-#include <sstream>
+#include <algorithm>
+#include <charconv>
+#include <cmath>
+#include <vector>
 
 #include "io/json_fields.h"
 #include "io/result_json.h"
@@ -44,12 +46,135 @@ const char* continuation_name(Continuation c) {
   return "none";
 }
 
-// A CSV cell: empty without an exponent, "-inf" where every perturbation dies.
-std::string lyapunov_cell(const std::optional<double>& lyapunov) {
-  if (!lyapunov) return "";
-  std::ostringstream cell;
-  cell << std::setprecision(17) << *lyapunov;  // "-inf" for −infinity, as strtod reads it back
-  return cell.str();
+// Text formatted into a buffer that goes to the sink whenever it passes a piece's size.
+class Pieces {
+ public:
+  explicit Pieces(const TextSink& sink) : sink_(sink) { buffer_.reserve(kPiece + 512); }
+  void text(std::string_view s) {
+    buffer_ += s;
+    if (buffer_.size() >= kPiece) flush();
+  }
+  // A JSON string, escaped.
+  void string(const std::string& s) { text(json(s).dump()); }
+  // A JSON number: null when not finite (as every number of vibro's JSON), and ".0" on a whole
+  // one, so that it reads back as a double (as nlohmann::json writes it).
+  void number(double x) {
+    if (!std::isfinite(x)) return text("null");
+    char b[40];
+    const std::string_view v(b, std::to_chars(b, b + sizeof b, x).ptr - b);
+    text(v);
+    if (v.find_first_of(".e") == std::string_view::npos) text(".0");
+  }
+  // A CSV number: 17 significant digits ("inf", "-inf" and "nan" as they are).
+  void digits17(double x) {
+    char b[40];
+    text({b, static_cast<std::size_t>(
+                 std::to_chars(b, b + sizeof b, x, std::chars_format::general, 17).ptr - b)});
+  }
+  void integer(long x) {
+    char b[24];
+    text({b, static_cast<std::size_t>(std::to_chars(b, b + sizeof b, x).ptr - b)});
+  }
+  void boolean(bool x) { text(x ? "true" : "false"); }
+  // Whether the sink took everything so far; once it refuses, nothing more is sent.
+  bool ok() const { return ok_; }
+  bool finish() {
+    flush();
+    return ok_;
+  }
+
+ private:
+  static constexpr std::size_t kPiece = 64 * 1024;
+  void flush() {
+    if (ok_ && !buffer_.empty()) ok_ = sink_(buffer_);
+    buffer_.clear();
+  }
+  const TextSink& sink_;
+  std::string buffer_;
+  bool ok_ = true;
+};
+
+// A column of the result's JSON: its name and how one entry is written (a point's, with its run
+// and the run's index; or a run's).
+using Run = const SweepRun&;
+using Point = const SectionPoint&;
+struct PointColumn {
+  const char* name;
+  void (*write)(Pieces&, Run, std::size_t run, Point);
+};
+struct RunColumn {
+  const char* name;
+  void (*write)(Pieces&, Run);
+};
+
+// In sorted order, as a JSON object's keys are written.
+constexpr PointColumn kPointColumns[] = {
+    {"direction", [](Pieces& o, Run r, std::size_t, Point) { o.integer(r.direction); }},
+    {"dphi", [](Pieces& o, Run, std::size_t, Point p) { o.number(p.dphi); }},
+    {"limiter", [](Pieces& o, Run, std::size_t, Point p) { o.integer(p.limiter); }},
+    {"pellet", [](Pieces& o, Run, std::size_t, Point p) { o.integer(p.pellet); }},
+    {"phase", [](Pieces& o, Run, std::size_t, Point p) { o.number(p.phase); }},
+    {"phi", [](Pieces& o, Run, std::size_t, Point p) { o.number(p.phi); }},
+    {"run", [](Pieces& o, Run, std::size_t k, Point) { o.integer(static_cast<long>(k)); }},
+    {"start", [](Pieces& o, Run r, std::size_t, Point) { o.integer(r.start); }},
+    {"t", [](Pieces& o, Run, std::size_t, Point p) { o.number(p.t); }},
+    {"trusted", [](Pieces& o, Run, std::size_t, Point p) { o.boolean(p.trusted); }},
+    {"value", [](Pieces& o, Run r, std::size_t, Point) { o.number(r.value); }},
+    {"value2", [](Pieces& o, Run r, std::size_t, Point) { o.number(r.value2); }},
+};
+
+constexpr RunColumn kRunColumns[] = {
+    {"at_rest", [](Pieces& o, Run r) { o.boolean(r.at_rest); }},
+    {"direction", [](Pieces& o, Run r) { o.integer(r.direction); }},
+    {"error_estimate", [](Pieces& o, Run r) { o.number(r.error_estimate); }},
+    {"impacts_per_period", [](Pieces& o, Run r) { o.number(r.impacts_per_period); }},
+    // JSON has no −infinity: null, as for a run without an exponent (docs/SWEEPS.md).
+    {"lyapunov", [](Pieces& o, Run r) { r.lyapunov ? o.number(*r.lyapunov) : o.text("null"); }},
+    {"message", [](Pieces& o, Run r) { o.string(r.message); }},
+    {"period", [](Pieces& o, Run r) { o.integer(r.period); }},
+    {"start", [](Pieces& o, Run r) { o.integer(r.start); }},
+    {"sticks", [](Pieces& o, Run r) { o.boolean(r.sticks); }},
+    {"termination",
+     [](Pieces& o, Run r) { o.string(std::string(termination_name(r.termination))); }},
+    {"trusted", [](Pieces& o, Run r) { o.boolean(r.trusted); }},
+    {"trusted_until", [](Pieces& o, Run r) { o.number(r.trusted_until); }},
+    {"value", [](Pieces& o, Run r) { o.number(r.value); }},
+    {"value2", [](Pieces& o, Run r) { o.number(r.value2); }},
+};
+
+// What `write` writes to a sink, as one string.
+template <class Write>
+std::string whole_text(const Write& write) {
+  std::string text;
+  write([&text](std::string_view piece) {
+    text += piece;
+    return true;
+  });
+  return text;
+}
+
+// One column of every point, as a JSON array.
+bool write_point_column(Pieces& out, const PointColumn& column, const SweepResult& result) {
+  out.text("[");
+  bool first = true;
+  for (std::size_t r = 0; r < result.runs.size() && out.ok(); ++r)
+    for (const SectionPoint& p : result.runs[r].points) {
+      if (!first) out.text(",");
+      first = false;
+      column.write(out, result.runs[r], r, p);
+    }
+  out.text("]");
+  return out.ok();
+}
+
+bool write_run_column(Pieces& out, const RunColumn& column, const SweepResult& result) {
+  out.text("[");
+  for (std::size_t r = 0; r < result.runs.size() && out.ok(); ++r) {
+    if (r > 0) out.text(",");
+    column.write(out, result.runs[r]);
+  }
+  out.text("]");
+  return out.ok();
 }
 
 }  // namespace
@@ -105,64 +230,50 @@ json sweep_to_json(const SweepSpec& s) {
   return j;
 }
 
-json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
-  json value = json::array(), value2 = json::array(), start = json::array(),
-       direction = json::array(), pellet = json::array(), t = json::array(), phi = json::array(),
-       dphi = json::array(), phase = json::array(), limiter = json::array(), run_of = json::array(),
-       point_trusted = json::array();
-  json runs = {{"value", json::array()},          {"value2", json::array()},
-               {"start", json::array()},          {"direction", json::array()},
-               {"period", json::array()},         {"impacts_per_period", json::array()},
-               {"at_rest", json::array()},        {"sticks", json::array()},
-               {"trusted", json::array()},        {"trusted_until", json::array()},
-               {"termination", json::array()},    {"message", json::array()},
-               {"error_estimate", json::array()}, {"lyapunov", json::array()}};
-  for (std::size_t r = 0; r < result.runs.size(); ++r) {
-    const SweepRun& run = result.runs[r];
-    for (const SectionPoint& p : run.points) {
-      value.push_back(run.value);
-      value2.push_back(run.value2);
-      start.push_back(run.start);
-      direction.push_back(run.direction);
-      pellet.push_back(p.pellet);
-      t.push_back(finite_number(p.t));
-      phi.push_back(finite_number(p.phi));
-      dphi.push_back(finite_number(p.dphi));
-      phase.push_back(finite_number(p.phase));
-      limiter.push_back(p.limiter);
-      point_trusted.push_back(p.trusted);
-      run_of.push_back(r);
-    }
-    runs["value"].push_back(run.value);
-    runs["value2"].push_back(run.value2);
-    runs["start"].push_back(run.start);
-    runs["direction"].push_back(run.direction);
-    runs["period"].push_back(run.period);
-    runs["impacts_per_period"].push_back(finite_number(run.impacts_per_period));
-    runs["at_rest"].push_back(run.at_rest);
-    runs["sticks"].push_back(run.sticks);
-    runs["trusted"].push_back(run.trusted);
-    runs["trusted_until"].push_back(finite_number(run.trusted_until));
-    runs["termination"].push_back(termination_name(run.termination));
-    runs["message"].push_back(run.message);
-    runs["error_estimate"].push_back(finite_number(run.error_estimate));
-    // JSON has no −infinity: null, as for a run without an exponent (docs/SWEEPS.md).
-    runs["lyapunov"].push_back(run.lyapunov ? finite_number(*run.lyapunov) : json(nullptr));
+bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
+                             const TextSink& sink) {
+  Pieces out(sink);
+  out.text("{\"parameter\":");
+  out.string(spec.axis.parameter);
+  if (spec.axis2) {
+    out.text(",\"parameter2\":");
+    out.string(spec.axis2->parameter);
   }
-  json points = {{"value", value}, {"value2", value2}, {"start", start},   {"direction", direction},
-                 {"pellet", pellet}, {"t", t},          {"phi", phi},       {"dphi", dphi},
-                 {"phase", phase},   {"limiter", limiter}, {"trusted", point_trusted},
-                 {"run", run_of}};
-  json j = {{"parameter", spec.axis.parameter}, {"section", section_name(spec.section)},
-            {"points", points}, {"runs", runs},
-            {"stats",
-             {{"runs", result.runs.size()},
-              {"points", value.size()},
-              {"threads", result.threads},
-              {"wall_ms", result.wall_ms},
-              {"cancelled", result.cancelled}}}};
-  if (spec.axis2) j["parameter2"] = spec.axis2->parameter;
-  return j;
+  out.text(",\"points\":{");
+  for (const PointColumn& c : kPointColumns) {
+    if (&c != kPointColumns) out.text(",");
+    out.string(c.name);
+    out.text(":");
+    if (!write_point_column(out, c, result)) return false;
+  }
+  out.text("},\"runs\":{");
+  for (const RunColumn& c : kRunColumns) {
+    if (&c != kRunColumns) out.text(",");
+    out.string(c.name);
+    out.text(":");
+    if (!write_run_column(out, c, result)) return false;
+  }
+  long points = 0;
+  for (const SweepRun& run : result.runs) points += static_cast<long>(run.points.size());
+  out.text("},\"section\":");
+  out.string(section_name(spec.section));
+  out.text(",\"stats\":{\"cancelled\":");
+  out.boolean(result.cancelled);
+  out.text(",\"points\":");
+  out.integer(points);
+  out.text(",\"runs\":");
+  out.integer(static_cast<long>(result.runs.size()));
+  out.text(",\"threads\":");
+  out.integer(result.threads);
+  out.text(",\"wall_ms\":");
+  out.number(result.wall_ms);
+  out.text("}}");
+  return out.finish();
+}
+
+json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
+  return json::parse(whole_text(
+      [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink); }));
 }
 
 std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {
@@ -176,18 +287,44 @@ std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec
   return std::nullopt;
 }
 
+bool write_sweep_result_csv(const SweepResult& result, const TextSink& sink) {
+  Pieces out(sink);
+  out.text(
+      "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
+      "impacts_per_period,lyapunov\n");
+  for (const SweepRun& run : result.runs) {
+    if (!out.ok()) return false;
+    for (const SectionPoint& p : run.points) {
+      out.digits17(run.value);
+      out.text(",");
+      out.digits17(run.value2);
+      out.text(",");
+      out.integer(run.start);
+      out.text(",");
+      out.integer(run.direction);
+      out.text(",");
+      out.integer(p.pellet);
+      for (double x : {p.t, p.phi, p.dphi, p.phase}) {
+        out.text(",");
+        out.digits17(x);
+      }
+      out.text(",");
+      out.integer(p.limiter);
+      out.text(p.trusted ? ",1," : ",0,");
+      out.integer(run.period);
+      out.text(",");
+      out.digits17(run.impacts_per_period);
+      // Empty without an exponent, "-inf" where every perturbation dies (strtod reads it).
+      out.text(",");
+      if (run.lyapunov) out.digits17(*run.lyapunov);
+      out.text("\n");
+    }
+  }
+  return out.finish();
+}
+
 std::string sweep_result_csv(const SweepResult& result) {
-  std::ostringstream out;
-  out << std::setprecision(17);
-  out << "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
-         "impacts_per_period,lyapunov\n";
-  for (const SweepRun& run : result.runs)
-    for (const SectionPoint& p : run.points)
-      out << run.value << ',' << run.value2 << ',' << run.start << ',' << run.direction << ','
-          << p.pellet << ',' << p.t << ',' << p.phi << ',' << p.dphi << ',' << p.phase << ','
-          << p.limiter << ',' << (p.trusted ? 1 : 0) << ',' << run.period << ','
-          << run.impacts_per_period << ',' << lyapunov_cell(run.lyapunov) << '\n';
-  return out.str();
+  return whole_text([&](const TextSink& sink) { return write_sweep_result_csv(result, sink); });
 }
 
 }  // namespace vibro

@@ -2,9 +2,11 @@
 // and a sweep's result as JSON or CSV, the points as columns.
 #pragma once
 
+#include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
+#include <string_view>
 
 #include "core/sweep.h"
 #include "render/plot_spec.h"
@@ -15,12 +17,23 @@ namespace vibro {
 SweepSpec read_sweep(const nlohmann::json& json);
 nlohmann::json sweep_to_json(const SweepSpec& spec);
 
+// Takes the text of a document piece by piece (each some 64 KiB); false: stop writing (the
+// reader went away).
+using TextSink = std::function<bool(std::string_view piece)>;
+
 // {"parameter", "parameter2", "section", "points": {columns}, "runs": {columns}, "stats"}:
 // one entry per section point, and one per run with its period, impacts per period, trust and
-// largest Lyapunov exponent (null without one, and for −infinity, which JSON cannot hold).
+// largest Lyapunov exponent (null without one, and for −infinity, which JSON cannot hold). Keys
+// in sorted order, numbers as their shortest text that reads back to the bit.
+// Written to `sink` as it is formatted: memory for one piece, whatever the points. Whether the
+// sink took all of it.
+bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
+                             const TextSink& sink);
 nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& result);
 // The points as CSV with a header row, one line per point, each run's classification on it; the
-// Lyapunov exponent last, empty without one and "-inf" where every perturbation dies.
+// Lyapunov exponent last, empty without one and "-inf" where every perturbation dies. Numbers
+// to 17 significant digits.
+bool write_sweep_result_csv(const SweepResult& result, const TextSink& sink);
 std::string sweep_result_csv(const SweepResult& result);
 
 // The plot a sweep is drawn as: one of kSweepPlotNames; an empty name picks the regime map for a

@@ -1,5 +1,6 @@
 #include "server/api.h"
 
+#include <algorithm>
 #include <exception>
 #include <future>
 #include <memory>
@@ -15,6 +16,7 @@
 #include "server/api_error.h"
 #include "server/etag.h"
 #include "server/scene_request.h"
+#include "server/sweep_limits.h"
 
 namespace vibro::server {
 namespace {
@@ -111,7 +113,8 @@ Api::Api(const ServerConfig& config)
       web_(web_dir(config)),
       cache_(config.cache_bytes),
       jobs_({config.sweep_jobs, config.sweep_threads, config.sweep_queue, 600.0, 32,
-             job_id_prefix(config.replica)}),
+             job_id_prefix(config.replica), config.limits.sweep_points,
+             1000.0 * config.limits.sweep_seconds, 4 * config.limits.sweep_points}),
       workers_(worker_count(config), config.queue) {}
 
 void Api::health(const httplib::Request&, httplib::Response& res) const {
@@ -206,10 +209,32 @@ void Api::static_file(const httplib::Request& req, httplib::Response& res) const
 
 namespace {
 
+// A sweep's points, written to the connection as they are formatted (chunked): memory for one
+// piece at a time, not the document. The result lives as long as the writing.
+void stream_sweep_result(const Job& job, bool csv, httplib::Response& res) {
+  auto write = [result = job.sweep, spec = *job.scene.sweep, csv](std::size_t,
+                                                                  httplib::DataSink& sink) {
+    const TextSink to_sink = [&sink](std::string_view piece) {
+      return sink.write(piece.data(), piece.size());
+    };
+    const bool whole = csv ? write_sweep_result_csv(*result, to_sink)
+                           : write_sweep_result_json(spec, *result, to_sink);
+    if (whole) sink.done();
+    return whole;  // false: the client went away, the connection ends
+  };
+  res.set_chunked_content_provider(csv ? "text/csv" : "application/json", std::move(write));
+}
+
 json job_json(const JobStatus& s) {
-  return {{"id", s.id},
-          {"status", job_state_name(s.state)},
-          {"progress", {{"done", s.done}, {"total", s.total}}}};
+  json j = {{"id", s.id},
+            {"status", job_state_name(s.state)},
+            {"progress", {{"done", s.done}, {"total", s.total}}}};
+  // Why it failed, in the shape of an error answer.
+  if (s.error) {
+    j["error"] = s.error->message;
+    j["field"] = s.error->field;
+  }
+  return j;
 }
 
 void send_status(httplib::Response& res, const JobStatus& s) {
@@ -227,7 +252,12 @@ void Api::sweep_post(const httplib::Request& req, httplib::Response& res) {
   if (!scene.sweep)
     return send_error(res, {400, "sweep", "is required: the sweep to run (API.md, \"Sweeps\")"});
   if (auto e = check_sweep(scene, config_.limits)) return send_error(res, *e);
+  if (auto e = check_sweep_cost(scene, config_.limits, config_.sweep_threads))
+    return send_error(res, *e);
   scene.sim = bounded_options(scene.sim, config_.limits);
+  scene.sim.deadline_ms =
+      std::min(scene.sim.deadline_ms,
+               sweep_run_deadline_ms(*scene.sweep, config_.limits, config_.sweep_threads));
   submit(JobKind::sweep, std::move(scene), res);
 }
 
@@ -283,6 +313,9 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   if (!job) {
     const auto status = jobs_.status(id);
     if (!status) return send_error(res, {404, "id", "no job \"" + id + "\""});
+    if (status->error)
+      return send_error(res,
+                        {409, status->error->field, "the job failed: " + status->error->message});
     return send_error(res, {409, "id", "the job is " + std::string(job_state_name(status->state)) +
                                            ", not done: its result is not ready"});
   }
@@ -306,8 +339,7 @@ void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Res
   const SweepSpec& spec = *job.scene.sweep;
   const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
   res.set_header("Cache-Control", "no-store");
-  if (format == "json") return res.set_content(sweep_result_json(spec, *job.sweep).dump(), "application/json");
-  if (format == "csv") return res.set_content(sweep_result_csv(*job.sweep), "text/csv");
+  if (format == "json" || format == "csv") return stream_sweep_result(job, format == "csv", res);
   const auto image_format = image_format_named(format);
   if (!image_format)
     return send_error(res, {400, "format", "must be \"json\", \"csv\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
@@ -330,22 +362,44 @@ void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Res
       return send_error(res, {400, "coordinate", "must be \"dphi\" or \"phi\""});
     plot.coordinate = c == "phi" ? SectionCoordinate::phi : SectionCoordinate::dphi;
   }
+  // A point plot in SVG or PDF keeps every point as a mark of its own (Limits::
+  // sweep_vector_points): a large sweep is drawn as PNG.
+  const long most = config_.limits.sweep_vector_points;
+  const bool marks_points = plot.kind == PlotKind::bifurcation || plot.kind == PlotKind::section ||
+                            plot.kind == PlotKind::impact_map;
+  if (*image_format != ImageFormat::png && marks_points && job.points > most)
+    return send_error(res, {400, "format",
+                            "the sweep's " + std::to_string(job.points) +
+                                " section points are more than the server draws as a vector "
+                                "image (" +
+                                std::to_string(most) + "): ask format=png"});
   FigureSpec figure;
   figure.width = job.scene.figure.width;
   figure.height = job.scene.figure.height;
   figure.plots = {plot};
-  const RenderResult image = render_figure(figure, job.scene.model, RunResult{}, *image_format,
-                                           {nullptr, &spec, job.sweep.get()});
-  if (!image.ok()) return send_error(res, ApiError::from(*image.error, 500));
-  // Where the parameter lies on the image, so that a click on it can name a value (the page).
-  if (const auto axis = parameter_axis(figure, spec)) {
-    std::ostringstream h;
-    h.precision(17);
-    h << axis->left << ',' << axis->top << ',' << axis->width << ',' << axis->height << ','
-      << axis->from << ',' << axis->to;
-    res.set_header("X-Vibro-Parameter-Axis", h.str());
-  }
-  res.set_content(std::string(image.bytes.begin(), image.bytes.end()), image.content_type);
+  // Drawn on a worker, not the connection's thread: as many drawings at once as workers.
+  auto draw = [figure, model = job.scene.model, spec, sweep = job.sweep,
+               format = *image_format]() -> JobResult {
+    const RenderResult image =
+        render_figure(figure, model, RunResult{}, format, {nullptr, &spec, sweep.get()});
+    if (!image.ok()) return ApiError::from(*image.error, 500);
+    Produced p{std::string(image.bytes.begin(), image.bytes.end()), image.content_type, {}};
+    // Where the parameter lies on the image, so that a click on it can name a value (the page).
+    if (const auto axis = parameter_axis(figure, spec)) {
+      std::ostringstream h;
+      h.precision(17);
+      h << axis->left << ',' << axis->top << ',' << axis->width << ',' << axis->height << ','
+        << axis->from << ',' << axis->to;
+      p.headers.emplace_back("X-Vibro-Parameter-Axis", h.str());
+    }
+    return p;
+  };
+  auto produced = run_on_worker(std::move(draw), res);
+  if (!produced) return;
+  if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
+  Produced& p = std::get<Produced>(*produced);
+  for (const auto& [name, value] : p.headers) res.set_header(name, value);
+  res.set_content(std::move(p.body), p.content_type);
 }
 
 void Api::job_delete(const httplib::Request& req, httplib::Response& res) {

@@ -23,7 +23,10 @@ nlohmann::json limits_json(const Limits& limits) {
           {"width", limits.width},           {"height", limits.height},
           {"pixels", limits.pixels},         {"pellets", limits.pellets},
           {"limiters", limits.limiters},     {"plots", limits.plots},
-          {"sweep_periods", limits.sweep_periods}};
+          {"sweep_periods", limits.sweep_periods},
+          {"sweep_points", limits.sweep_points},
+          {"sweep_seconds", limits.sweep_seconds},
+          {"sweep_vector_points", limits.sweep_vector_points}};
 }
 
 int worker_count(const ServerConfig& config) {

@@ -27,6 +27,18 @@ struct Limits {
   int limiters = 16;
   int plots = 8;
   double sweep_periods = 1e6;  // a sweep's runs × (transient + record) periods
+  // Section points one sweep may keep (40 bytes each): a stroboscopic sweep over it is refused
+  // up front, an impact-section sweep stops when it reaches it (docs/ROBUSTNESS.md, "Sweeps and
+  // memory"). Finished sweeps hold at most 4 × this many in all; the oldest go first.
+  long sweep_points = 1'000'000;
+  // Wall clock of one sweep job, s: its runs share it (each run's deadline is at most its share),
+  // a sweep that would leave a run less than 10 ms is refused up front, and one that runs past
+  // it fails.
+  double sweep_seconds = 300.0;
+  // Section points a sweep's point plot (bifurcation, section, impact map) is drawn with as SVG
+  // or PDF: each point is a mark of its own there, some 1.4 KB of memory while drawn (10^6
+  // points: 1.5 GB, and 265 MB of SVG). PNG draws any number.
+  long sweep_vector_points = 100'000;
 };
 
 struct ServerConfig {

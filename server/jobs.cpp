@@ -35,7 +35,9 @@ Jobs::~Jobs() {
 }
 
 JobStatus Jobs::snapshot(const Job& job) const {
-  return {job.id, job.state, job.done.load(), job.total};
+  // The error is the job thread's until the state says it has ended.
+  const bool failed = job.state == JobState::failed;
+  return {job.id, job.state, job.done.load(), job.total, failed ? job.error : std::nullopt};
 }
 
 std::optional<JobStatus> Jobs::submit(JobKind kind, Scene scene) {
@@ -94,9 +96,15 @@ void Jobs::forget_old() {
     if (job->state != JobState::queued && job->state != JobState::running) ended.push_back(job);
   std::sort(ended.begin(), ended.end(),
             [](const auto& a, const auto& b) { return a->finished < b->finished; });
+  long points = 0;
+  for (const auto& job : ended) points += job->points;
   for (std::size_t k = 0; k < ended.size(); ++k) {
     const double age = std::chrono::duration<double>(now - ended[k]->finished).count();
-    if (age > options_.keep_s || ended.size() - k > options_.kept) jobs_.erase(ended[k]->id);
+    const bool too_many_points = options_.kept_points > 0 && points > options_.kept_points;
+    if (age > options_.keep_s || ended.size() - k > options_.kept || too_many_points) {
+      points -= ended[k]->points;
+      jobs_.erase(ended[k]->id);
+    }
   }
 }
 
@@ -112,11 +120,19 @@ JobState Jobs::run(Job& job) const {
   control.threads = options_.threads;
   control.cancel = &job.cancel;
   control.progress = [&job](long done, long) { job.done = done; };
+  control.max_points = options_.max_points;
+  control.budget_ms = options_.budget_ms;
   auto result =
       std::make_shared<SweepResult>(run_sweep(scene.model, scene.sim, *scene.sweep, control));
-  const bool cancelled = result->cancelled;
+  if (result->cancelled) return JobState::cancelled;
+  // A sweep a bound stopped has no whole result: it keeps nothing, and says why.
+  if (result->stopped) {
+    job.error = result->stopped;
+    return JobState::failed;
+  }
+  for (const SweepRun& r : result->runs) job.points += static_cast<long>(r.points.size());
   job.sweep = std::move(result);
-  return cancelled ? JobState::cancelled : JobState::done;
+  return JobState::done;
 }
 
 void Jobs::work() {
@@ -135,12 +151,14 @@ void Jobs::work() {
       ended = run(*job);
     } catch (const std::exception& e) {
       std::fprintf(stderr, "vibro: job %s failed: %s\n", job->id.c_str(), e.what());
+      job->error = FieldError{"server", "internal error"};
     }
     const std::lock_guard lock(mutex_);
     job->state = ended;
     job->finished = std::chrono::steady_clock::now();
     // Here as well as on submit: the jobs queued behind the last submit end after it, and
-    // would otherwise all be kept on top of `kept`.
+    // would otherwise all be kept on top of `kept`; and a finished sweep's points count
+    // against the bound at once.
     forget_old();
   }
 }

@@ -9,6 +9,7 @@
 #include <atomic>
 #include <condition_variable>
 #include <deque>
+#include <limits>
 #include <map>
 #include <memory>
 #include <mutex>
@@ -40,6 +41,8 @@ struct Job {
   // Written by the job's thread before its state ends, read only once it has (finished()):
   std::shared_ptr<const SweepResult> sweep;  // a sweep's
   std::shared_ptr<const OrbitResult> orbit;  // an orbit's
+  long points = 0;                           // the section points the sweep holds
+  std::optional<FieldError> error;           // why it failed, naming the field to change
   // Guarded by the store's mutex:
   JobState state = JobState::queued;
   std::chrono::steady_clock::time_point finished;
@@ -52,6 +55,12 @@ struct JobOptions {
   double keep_s = 600.0;   // a finished job's result is kept this long
   std::size_t kept = 32;   // and at most this many finished jobs
   std::string id_prefix;   // the ids' first characters ("r2-" for replica 2 of a front door)
+  // A sweep's bounds (SweepControl): the points it may keep and its wall clock, ms; past either
+  // it fails, naming the field, and keeps nothing.
+  long max_points = 0;
+  double budget_ms = std::numeric_limits<double>::infinity();
+  // The points finished sweeps hold in all, 0: no bound; past it the oldest are forgotten.
+  long kept_points = 0;
 };
 
 // A snapshot of a job, for the status answer.
@@ -60,6 +69,7 @@ struct JobStatus {
   JobState state = JobState::queued;
   long done = 0;
   long total = 0;
+  std::optional<FieldError> error;  // a failed job's reason, when it has one
 };
 
 class Jobs {
@@ -83,7 +93,9 @@ class Jobs {
   void work();
   // Runs the job to its end and keeps its result; the state it ended in.
   JobState run(Job& job) const;
-  void forget_old();  // under mutex_
+  // Forgets finished jobs past their time, their number or the points they hold (oldest
+  // first). Under mutex_.
+  void forget_old();
   JobStatus snapshot(const Job& job) const;
 
   const JobOptions options_;

@@ -217,6 +217,91 @@ TEST(Sweep, BadSweepsAreRefusedNamingTheField) {
   EXPECT_FALSE(validate_sweep(free, k));
 }
 
+// Each value of a sweep must make a model a scene of its own could hold, not only its ends: two
+// pellets swept through each other, limiters swept onto each other, and a pair of a 2-D sweep
+// inside the grid are refused, naming the swept field and the value.
+TEST(Sweep, EveryValueIsCheckedAsASceneOfItsOwn) {
+  Model two = impact_oscillator(5.0);
+  two.pellets.push_back(two.pellets[0]);
+  two.pellets[0].phi0 = 0.1;
+  two.pellets[1].phi0 = 0.5;
+  SweepSpec s = over_omega(3.0, 8.0, 3);
+  s.axis = {"model.pellets[1].phi0", 0.0, 0.2, 3};  // 0, 0.1, 0.2: the middle run coincides
+  auto e = validate_sweep(two, s);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->field, "model.pellets[1].phi0");
+  EXPECT_NE(e->message.find("model.pellets[1].phi0 = 0.1"), std::string::npos) << e->message;
+  s.axis.count = 2;  // 0 and 0.2 only
+  EXPECT_FALSE(validate_sweep(two, s));
+
+  // Limiters at 0 and 1 rad; the first swept over 0.5 … 1.5 meets the second at 1.
+  Model stops = impact_oscillator(5.0);
+  stops.limiters.push_back({1.0, 0.8, false, -1, {}});
+  s.axis = {"model.limiters[0].angle", 0.5, 1.5, 3};
+  e = validate_sweep(stops, s);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->field, "model.limiters[0].angle");  // the swept one, not the one it meets
+  EXPECT_NE(e->message.find("model.limiters[1].angle coincides"), std::string::npos) << e->message;
+  EXPECT_NE(e->message.find("= 1,"), std::string::npos) << e->message;
+
+  // A 2-D sweep whose four corners are good, and one pair inside where the pellets coincide.
+  s.axis = {"model.pellets[1].phi0", 0.0, 0.2, 2};
+  s.axis2 = SweepAxis{"model.pellets[0].phi0", 0.1, 0.3, 3};
+  e = validate_sweep(two, s);
+  ASSERT_TRUE(e);
+  EXPECT_NE(e->message.find("model.pellets[1].phi0 = 0.2, model.pellets[0].phi0 = 0.2"),
+            std::string::npos)
+      << e->message;
+}
+
+// The points a sweep may keep: an impact section of a pellet rattling between two elastic stops
+// stops at the bound, keeps no more than it, and names the field.
+TEST(Sweep, ABoundOnThePointsStopsTheSweepNamingTheField) {
+  Model m = impact_oscillator(5.0);
+  m.pellets[0].force = {};
+  m.pellets[0].phi0 = 0.0;
+  m.pellets[0].dphi0 = 1.5;
+  m.limiters = {{-0.05, 1.0, false, -1, {}}, {0.05, 1.0, false, -1, {}}};
+  SweepSpec spec;
+  spec.axis = {"model.pellets[0].dphi0", 1.0, 2.0, 6};
+  spec.transient = 0;
+  spec.record = 4;
+  spec.section = SectionKind::impact;
+  ASSERT_FALSE(validate_sweep(m, spec));
+  SweepControl all;
+  const SweepResult whole = run_sweep(m, options(1e-8), spec, all);
+  ASSERT_EQ(whole.runs.size(), 6u);
+  EXPECT_FALSE(whole.stopped);
+  const long each = static_cast<long>(whole.runs[0].points.size());
+  ASSERT_GT(each, 20);
+  for (int threads : {1, 2}) {
+    SweepControl bounded;
+    bounded.threads = threads;
+    bounded.max_points = 2 * each + each / 2;
+    const SweepResult r = run_sweep(m, options(1e-8), spec, bounded);
+    ASSERT_TRUE(r.stopped);
+    EXPECT_EQ(r.stopped->field, "sweep.record");
+    EXPECT_NE(r.stopped->message.find(std::to_string(bounded.max_points)), std::string::npos);
+    EXPECT_LT(r.runs.size(), 6u);
+    long kept = 0;
+    for (const SweepRun& run : r.runs) kept += static_cast<long>(run.points.size());
+    EXPECT_LE(kept, bounded.max_points);
+  }
+}
+
+// A sweep's wall-clock budget: once spent, no run starts, and the result says so.
+TEST(Sweep, AWallClockBudgetStopsTheSweep) {
+  SweepControl c;
+  c.budget_ms = 0.0;
+  const SweepResult r =
+      run_sweep(impact_oscillator(5.0), options(1e-8), over_omega(3.0, 8.0, 5, 5, 5), c);
+  ASSERT_TRUE(r.stopped);
+  EXPECT_EQ(r.stopped->field, "sweep.count");
+  EXPECT_NE(r.stopped->message.find("wall-clock budget"), std::string::npos);
+  EXPECT_LE(r.runs.size(), 1u);
+  EXPECT_FALSE(r.cancelled);
+}
+
 TEST(Parameter, PathsNameTheModelsNumericFields) {
   Model m = impact_oscillator(5.0);
   EXPECT_FALSE(set_parameter(m, "model.pellets[0].F0", 0.7));

@@ -5,6 +5,7 @@
 
 #include <gtest/gtest.h>
 
+#include <algorithm>
 #include <cmath>
 #include <cstdlib>
 #include <cstring>
@@ -88,6 +89,81 @@ TEST(SweepJson, TheCsvEndsWithTheExponentEmptyOrMinusInf) {
   EXPECT_EQ(last_cells[1], "");
   EXPECT_EQ(last_cells[2], "-inf");
   EXPECT_EQ(std::strtod(last_cells[2].c_str(), nullptr), -std::numeric_limits<double>::infinity());
+}
+
+// Many points, with numbers JSON cannot hold among them.
+SweepResult many_points(int runs, int points) {
+  SweepResult result;
+  for (int k = 0; k < runs; ++k) {
+    SweepRun run;
+    run.value = 0.1 * k;
+    run.message = k == 1 ? "stopped at t = 1 s: \"quoted\"" : "";
+    for (int i = 0; i < points; ++i)
+      run.points.push_back(
+          {i % 3, i * 0.1, 1.0 / (i + 1), i == 7 ? NAN : -0.5 * i, 1e-300 * i, i % 2, i % 5 != 0});
+    result.runs.push_back(std::move(run));
+  }
+  return result;
+}
+
+// The result goes out in pieces of some 64 KiB, never as one document: together they are the
+// document, every number reads back to the bit (NaN as null), and a reader that goes away stops
+// the writing at once.
+TEST(SweepJson, TheResultIsWrittenInPiecesAndStopsWhenTheReaderGoesAway) {
+  const SweepResult result = many_points(4, 8000);
+  SweepSpec spec;
+  spec.axis.parameter = "model.pellets[0].F0";
+  std::vector<std::size_t> sizes;
+  std::string text;
+  ASSERT_TRUE(write_sweep_result_json(spec, result, [&](std::string_view piece) {
+    sizes.push_back(piece.size());
+    text += piece;
+    return true;
+  }));
+  ASSERT_GT(sizes.size(), 10u);
+  for (std::size_t n : sizes) EXPECT_LE(n, 70u * 1024u);
+  const json j = json::parse(text);
+  EXPECT_EQ(j, sweep_result_json(spec, result));
+  const std::vector<std::string> point_keys = {"direction", "dphi",    "limiter", "pellet",
+                                               "phase",     "phi",     "run",     "start",
+                                               "t",         "trusted", "value",   "value2"};
+  for (const std::string& key : point_keys) EXPECT_EQ(j["points"][key].size(), 32000u) << key;
+  EXPECT_EQ(j["points"].size(), point_keys.size());
+  EXPECT_EQ(j["runs"].size(), 14u);
+  EXPECT_EQ(j["stats"]["points"], 32000);
+  EXPECT_EQ(j["runs"]["message"][1], "stopped at t = 1 s: \"quoted\"");
+  for (int i : {0, 3, 7, 7999}) {
+    const SectionPoint& p = result.runs[2].points[i];
+    const std::size_t at = 16000 + i;
+    EXPECT_EQ(j["points"]["phi"][at].get<double>(), p.phi);
+    EXPECT_EQ(j["points"]["phase"][at].get<double>(), p.phase);
+    EXPECT_EQ(j["points"]["pellet"][at], p.pellet);
+    EXPECT_EQ(j["points"]["limiter"][at], p.limiter);
+    EXPECT_EQ(j["points"]["trusted"][at], p.trusted);
+    EXPECT_EQ(j["points"]["run"][at], 2);
+    EXPECT_EQ(j["points"]["value"][at].get<double>(), 0.2);
+  }
+  EXPECT_TRUE(j["points"]["dphi"][16007].is_null());
+  EXPECT_TRUE(j["points"]["value"][0].is_number_float());  // 0.0 stays a double
+
+  int calls = 0;
+  EXPECT_FALSE(write_sweep_result_json(spec, result,
+                                       [&](std::string_view) { return ++calls > 1 && false; }));
+  EXPECT_EQ(calls, 1);
+  calls = 0;
+  std::string csv;
+  ASSERT_TRUE(write_sweep_result_csv(result, [&](std::string_view piece) {
+    ++calls;
+    csv += piece;
+    return true;
+  }));
+  EXPECT_GT(calls, 10);
+  EXPECT_EQ(csv, sweep_result_csv(result));
+  EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 32000);
+  calls = 0;
+  EXPECT_FALSE(
+      write_sweep_result_csv(result, [&](std::string_view) { return ++calls > 1 && false; }));
+  EXPECT_EQ(calls, 1);
 }
 
 TEST(SweepJson, TheLyapunovPlotsHaveNames) {

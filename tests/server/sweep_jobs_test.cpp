@@ -26,6 +26,24 @@ std::string sweep_scene(int count, int record = 20) {
   return s.dump();
 }
 
+// A pellet rattling elastically between stops at ±0.05 rad, swept over its starting speed: an
+// impact section of some 20 points per period, known only as it runs.
+json rattle_scene(int count, int record) {
+  return {{"model",
+           {{"R", 0.5},
+            {"pellets", {{{"m", 0.1}, {"phi0", 0.0}, {"dphi0", 1.5}}}},
+            {"limiters", {{{"angle", -0.05}, {"k", 1.0}}, {{"angle", 0.05}, {"k", 1.0}}}}}},
+          {"t_end", 10},
+          {"sweep",
+           {{"parameter", "model.pellets[0].dphi0"},
+            {"from", 1.0},
+            {"to", 2.0},
+            {"count", count},
+            {"transient", 0},
+            {"record", record},
+            {"section", "impact"}}}};
+}
+
 json status_of(httplib::Client& c, const std::string& location) {
   auto res = c.Get(location.c_str());
   if (!res || res->status != 200) return {};
@@ -175,6 +193,145 @@ TEST(SweepJobs, BadSweepsAreRefusedNamingTheField) {
   long_run["sweep"]["record"] = 5000;  // 5020 periods of 1.2 s: over the 1000 s limit
   long_run["sweep"]["count"] = 2;
   EXPECT_EQ(field(long_run), "sweep.record");
+}
+
+// The points and runs columns are written to the connection as they are formatted (chunked), not
+// built whole on a connection thread first.
+TEST(SweepJobs, TheResultIsStreamedNotBuiltWhole) {
+  TestServer server;
+  auto c = server.client();
+  auto res = c.Post("/api/sweep", sweep_scene(12), "application/json");
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  ASSERT_EQ(wait_until_ended(c, location)["status"], "done");
+  for (const char* format : {"json", "csv"}) {
+    auto got = c.Get((location + "/result?format=" + format).c_str());
+    ASSERT_EQ(got->status, 200);
+    EXPECT_EQ(got->get_header_value("Transfer-Encoding"), "chunked") << format;
+    EXPECT_FALSE(got->has_header("Content-Length")) << format;
+    EXPECT_EQ(got->get_header_value("Cache-Control"), "no-store");
+    if (std::string(format) == "json")
+      EXPECT_EQ(json::parse(got->body)["points"]["phi"].size(), 12u * 21u);
+    else
+      EXPECT_EQ(std::count(got->body.begin(), got->body.end(), '\n'), 1 + 12 * 21);
+  }
+}
+
+// The section points a sweep may keep are bounded: a stroboscopic sweep over the bound is refused
+// up front, an impact-section sweep that reaches it while it runs fails, naming the field, and
+// keeps nothing.
+TEST(SweepJobs, ThePointsASweepKeepsAreBounded) {
+  server::ServerConfig config;
+  config.limits.sweep_points = 1000;
+  TestServer server(config);
+  auto c = server.client();
+  auto over = c.Post("/api/sweep", sweep_scene(50, 20), "application/json");  // 50 × 21 points
+  ASSERT_EQ(over->status, 400) << over->body;
+  EXPECT_EQ(json::parse(over->body)["field"], "sweep.record");
+  EXPECT_NE(json::parse(over->body)["error"].get<std::string>().find("1050"), std::string::npos);
+  EXPECT_EQ(c.Post("/api/sweep", sweep_scene(47, 20), "application/json")->status, 202);
+
+  auto res = c.Post("/api/sweep", rattle_scene(10, 20).dump(), "application/json");
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  const json ended = wait_until_ended(c, location);
+  ASSERT_EQ(ended["status"], "failed") << ended.dump();
+  EXPECT_EQ(ended["field"], "sweep.record");
+  EXPECT_NE(ended["error"].get<std::string>().find("1000 section points"), std::string::npos);
+  EXPECT_LT(ended["progress"]["done"].get<long>(), 10);
+  auto result = c.Get((location + "/result").c_str());
+  EXPECT_EQ(result->status, 409);
+  EXPECT_EQ(json::parse(result->body)["field"], "sweep.record");
+}
+
+// One sweep cannot hold the sweep thread for long: its runs share a wall-clock budget. A sweep
+// whose runs would each be left less than 10 ms of it is refused up front; 40 runs of some 1.4 s
+// each (56 s with the deadline of one simulation alone) end within it.
+TEST(SweepJobs, ASweepIsBoundedByItsWallClockBudget) {
+  server::ServerConfig config;
+  config.limits.sweep_seconds = 2.0;
+  TestServer server(config);
+  auto c = server.client();
+  auto over = c.Post("/api/sweep", sweep_scene(400, 1), "application/json");
+  ASSERT_EQ(over->status, 400) << over->body;
+  EXPECT_EQ(json::parse(over->body)["field"], "sweep.count");
+
+  // The impact oscillator on a 1 nm circle from 10^7 rad/s: some 1.4 s a run alone.
+  json slow = json::parse(sweep_scene(40, 1));
+  slow["model"]["R"] = 1e-9;
+  slow["model"]["pellets"][0]["dphi0"] = 1e7;
+  slow["sweep"]["transient"] = 0;
+  slow["sweep"]["section"] = "impact";
+  auto res = c.Post("/api/sweep", slow.dump(), "application/json");
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  const auto t0 = std::chrono::steady_clock::now();
+  const json ended = wait_until_ended(c, location);  // gives up after 30 s
+  ASSERT_FALSE(ended.is_null())
+      << "still running after "
+      << std::chrono::duration<double>(std::chrono::steady_clock::now() - t0).count() << " s";
+  EXPECT_TRUE(ended["status"] == "done" || ended["status"] == "failed") << ended.dump();
+}
+
+// Finished sweeps hold at most 4 × limits.sweep_points in all: past it the oldest is forgotten.
+TEST(SweepJobs, FinishedSweepsHoldBoundedPoints) {
+  server::ServerConfig config;
+  config.limits.sweep_points = 300;  // finished ones: 1200 in all
+  TestServer server(config);
+  auto c = server.client();
+  std::vector<std::string> jobs;
+  for (int k = 0; k < 5; ++k) {  // 252 points each
+    auto res = c.Post("/api/sweep", sweep_scene(12), "application/json");
+    ASSERT_EQ(res->status, 202) << res->body;
+    jobs.push_back(res->get_header_value("Location"));
+    ASSERT_EQ(wait_until_ended(c, jobs.back())["status"], "done");
+  }
+  EXPECT_EQ(c.Get(jobs[0].c_str())->status, 404);  // 5 × 252 > 1200
+  for (int k = 1; k < 5; ++k) EXPECT_EQ(c.Get((jobs[k] + "/result").c_str())->status, 200) << k;
+}
+
+// A sweep's plot is drawn on a worker; as SVG or PDF only up to limits.sweep_vector_points
+// points (each is a mark of its own there), as PNG whatever its points.
+TEST(SweepJobs, ALargeSweepIsDrawnAsPngOnly) {
+  server::ServerConfig config;
+  config.limits.sweep_vector_points = 200;
+  TestServer server(config);
+  auto c = server.client();
+  auto res = c.Post("/api/sweep", sweep_scene(12), "application/json");  // 252 points
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  ASSERT_EQ(wait_until_ended(c, location)["status"], "done");
+  for (const char* format : {"svg", "pdf"}) {
+    auto refused = c.Get((location + "/result?format=" + format).c_str());
+    ASSERT_EQ(refused->status, 400) << format;
+    EXPECT_EQ(json::parse(refused->body)["field"], "format");
+    EXPECT_NE(json::parse(refused->body)["error"].get<std::string>().find("png"),
+              std::string::npos);
+  }
+  auto png = c.Get((location + "/result?format=png").c_str());
+  ASSERT_EQ(png->status, 200);
+  EXPECT_EQ(png_size(png->body), (std::pair<int, int>{1200, 800}));
+  EXPECT_FALSE(png->get_header_value("X-Vibro-Parameter-Axis").empty());
+  // A regime map draws a cell per run, not a mark per point.
+  EXPECT_EQ(c.Get((location + "/result?format=svg&plot=regime_map").c_str())->status, 200);
+}
+
+// Every value of a sweep is checked as a scene of its own: the middle run of two pellets swept
+// through each other would start with them coinciding.
+TEST(SweepJobs, EveryValueOfASweepIsChecked) {
+  TestServer server;
+  auto c = server.client();
+  json s = json::parse(sweep_scene(3));
+  s["model"]["pellets"][0]["phi0"] = 0.1;
+  s["model"]["pellets"].push_back({{"m", 0.1}, {"phi0", 0.5}});
+  s["sweep"]["parameter"] = "model.pellets[1].phi0";
+  s["sweep"]["from"] = 0.0;
+  s["sweep"]["to"] = 0.2;
+  auto res = c.Post("/api/sweep", s.dump(), "application/json");
+  ASSERT_EQ(res->status, 400) << res->body;
+  const json e = json::parse(res->body);
+  EXPECT_EQ(e["field"], "model.pellets[1].phi0");
+  EXPECT_NE(e["error"].get<std::string>().find("= 0.1"), std::string::npos) << e.dump();
 }
 
 }  // namespace
