@@ -51,6 +51,10 @@ double time_scale(const Model& model) {
   return motion > 0.0 ? motion : 1.0;
 }
 
+double speed_scale(const Model& model) {
+  return gravity_sets_time_scale(model) ? std::sqrt(model.g / model.R) : 1.0 / time_scale(model);
+}
+
 double wrap_angle(double phi) {
   double w = std::remainder(phi, kTwoPi);  // in [−π, π]
   if (w <= -std::numbers::pi) w += kTwoPi;

@@ -70,6 +70,9 @@ double energy(const Model& model, int i, double phi, double dphi);
 double time_scale(const Model& model);
 // Whether that unit is gravity's; where it is not, neither are the scene's energies (2mgR).
 bool gravity_sets_time_scale(const Model& model);
+// The scene's unit of angular speed, rad/s: sqrt(g/R), or 1/time_scale where gravity does not
+// set the time.
+double speed_scale(const Model& model);
 // phi reduced to (−π, π].
 double wrap_angle(double phi);
 

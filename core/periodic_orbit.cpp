@@ -64,7 +64,7 @@ SimOptions until(SimOptions options, Clock::time_point deadline) {
 // 1e-6 rad/s per unit of the scene's time scale. Its runs share options.deadline_ms.
 Mat differenced_jacobian(const Model& model, const SimOptions& options, double t_end, const Vec& x) {
   const Clock::time_point deadline = deadline_in(options.deadline_ms);
-  const double speed = 1.0 / time_scale(model);
+  const double speed = speed_scale(model);
   Mat J(x.size(), x.size());
   for (Eigen::Index k = 0; k < x.size(); ++k) {
     const double h = 1e-6 * (k % 2 ? speed : 1.0);

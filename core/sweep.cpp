@@ -168,7 +168,7 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
                               s.t <= r.stats.trusted_until});
         run.sticks = run.sticks || held(s.pellets[i]);
       }
-    run.period = section_period(r.stops, std::sqrt(m.g / m.R));
+    run.period = section_period(r.stops, speed_scale(m));
   }
   int impacts = 0;
   for (const Event& e : r.events) {
@@ -236,7 +236,7 @@ double SweepAxis::value(int i) const {
 double sweep_period(const Model& model) {
   for (const Pellet& p : model.pellets)
     if (p.force.Omega > 0.0) return kTwoPi / p.force.Omega;
-  return kTwoPi * std::sqrt(model.R / model.g);
+  return kTwoPi * time_scale(model);
 }
 
 long stroboscopic_points_per_run(const Model& model, const SweepSpec& spec) {
@@ -293,7 +293,7 @@ std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& opti
           chain.start > 0 ? seeded_speeds(spec.seed, chain.start, n) : std::vector<double>{};
       for (int p = 0; p < n; ++p) {
         state.phi.push_back(m.pellets[p].phi0);
-        state.dphi.push_back(chain.start > 0 ? 2.0 * std::sqrt(m.g / m.R) * speeds[p]
+        state.dphi.push_back(chain.start > 0 ? 2.0 * speed_scale(m) * speeds[p]
                                              : m.pellets[p].dphi0);
       }
       fresh = false;

@@ -8,6 +8,7 @@
 #include <cctype>
 #include <cerrno>
 #include <cstring>
+#include <limits>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
@@ -42,6 +43,8 @@ class HttpServer : public httplib::Server {
 
 // The bytes a response takes on the wire, headers and body, within a status line's margin.
 std::size_t wire_bytes(const Response& res) {
+  // A streamed body (a sweep's result) is written as it is made: never one segment.
+  if (res.content_provider_) return std::numeric_limits<std::size_t>::max();
   std::size_t n = 64 + res.body.size();
   for (const auto& [name, value] : res.headers) n += name.size() + value.size() + 4;
   return n;
