@@ -25,7 +25,6 @@ struct VisibleBranch {
   bool labelled = true;       // false on the shorter pieces of a branch cut by wrapping φ
 };
 
-
 constexpr double kPi = 0.5 * kTwoPi;
 
 // φ on one turn, [−π, π).
@@ -70,7 +69,6 @@ std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const Plot
   return branches;
 }
 
-
 // The first-integral curves through the point: the curve of direction s carries φ̇ of sign s
 // only, so a point with φ̇ ≠ 0 gets one curve and a point at rest both.
 std::vector<std::vector<Point>> first_integral_curves(const Model& model, PhasePoint through,
@@ -107,7 +105,6 @@ void draw_friction_zones(cairo_t* cr, const Transform& tr, double alpha0) {
   set_colour(cr, kFrictionZone);
   cairo_fill(cr);
 }
-
 
 std::string default_title(const PlotSpec& spec, double t_end) {
   std::string title = "Phase portrait, pellet " + std::to_string(spec.pellet + 1);
@@ -172,7 +169,7 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
     const int samples = std::max(400, static_cast<int>(area.w));
     for (const auto& curve :
          first_integral_curves(in.model, *spec.first_integral_through, x.range, samples)) {
-      avoid.lines.push_back(to_thinned_pixels(tr, curve, thin_tolerance(cr)));
+      avoid.lines.push_back(to_thinned_pixels(tr, curve));
       stroke_polyline(cr, avoid.lines.back());
     }
     cairo_set_dash(cr, nullptr, 0, 0.0);
@@ -194,7 +191,7 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
 
   cairo_set_line_width(cr, style.curve_width());
   for (VisibleBranch& b : branches) {
-    b.pixels = to_thinned_pixels(tr, b.data, thin_tolerance(cr));
+    b.pixels = to_thinned_pixels(tr, b.data);
     set_colour(cr, branch_colour(b.index));
     stroke_polyline(cr, b.pixels);
     avoid.lines.push_back(b.pixels);
@@ -210,7 +207,8 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
     for (const Jump& j : jumps)
       if (j.mark == mark) centres.push_back(tr.to_pixel(j.before.x, j.before.y));
     if (centres.empty()) continue;
-    for (const Point& c : centres) marker_boxes.push_back({c.x - reach, c.y - reach, 2 * reach, 2 * reach});
+    for (const Point& c : centres)
+      marker_boxes.push_back({c.x - reach, c.y - reach, 2 * reach, 2 * reach});
     draw_event_marks(cr, centres, *mark, style);
     marks_shown.push_back(mark);
   }

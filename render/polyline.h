@@ -15,11 +15,6 @@ namespace vibro::render {
 // Thinning tolerance: a quarter pixel does not change the antialiased line visibly.
 inline constexpr double kThinTolerancePx = 0.25;
 
-// The thinning tolerance for what `cr` draws on: kThinTolerancePx on vector surfaces, where a
-// reader zooms in; twice that on an image, whose fast antialiasing places an edge to a quarter
-// pixel anyway (render/polyline.cpp strokes with it).
-double thin_tolerance(cairo_t* cr);
-
 // Data points to pixels, thinned. Coordinates are clamped far outside the plot area so that
 // cairo's fixed-point arithmetic never overflows on curves that leave it.
 std::vector<Point> to_thinned_pixels(const Transform& tr, std::span<const Point> data,

@@ -91,7 +91,8 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
 
   // Upper (or only) plot: φ(t). A bottom strip is left free for the event marks.
   const Rect& top = plots.front();
-  Range phi_range = spec.phi_range ? Range{spec.phi_range->lo, spec.phi_range->hi} : padded(phi, 0.05);
+  Range phi_range =
+      spec.phi_range ? Range{spec.phi_range->lo, spec.phi_range->hi} : padded(phi, 0.05);
   phi_range.lo -= style.px(14.0) / top.h * phi_range.span();  // below the data, not over it
   const Axis y_phi = make_axis(phi_range, top.h, true, kPhiLabel, true);
   const Transform tr_phi(top, x.range, y_phi.range);
@@ -108,7 +109,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   draw_limiter_lines(cr, tr_phi, limiters, Orientation::horizontal, style);
   cairo_set_line_width(cr, style.curve_width());
   for (const PelletSeries& s : series) {
-    avoid.lines.push_back(to_thinned_pixels(tr_phi, s.phi, thin_tolerance(cr)));
+    avoid.lines.push_back(to_thinned_pixels(tr_phi, s.phi));
     set_colour(cr, series_colour(s.pellet));
     stroke_polyline(cr, avoid.lines.back());
     legend.push_back({"pellet " + std::to_string(s.pellet + 1), series_colour(s.pellet)});
@@ -134,7 +135,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
     cairo_set_line_width(cr, style.curve_width());
     for (const PelletSeries& s : series) {
       set_colour(cr, series_colour(s.pellet));
-      stroke_polyline(cr, to_thinned_pixels(tr_dphi, s.dphi, thin_tolerance(cr)));
+      stroke_polyline(cr, to_thinned_pixels(tr_dphi, s.dphi));
     }
     cairo_restore(cr);
     draw_frame(cr, tr_dphi, x, y_dphi, style);
