@@ -176,11 +176,13 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
     legend.push_back({"first integral (unforced)", kOverlay, Swatch::dashed_line});
   }
 
-  // Velocity jumps under the branches, thin and dashed: they are not motion.
+  // Velocity jumps under the branches, thin and dashed: they are not motion. Clamped near the
+  // area like the curves (a jump is vertical, so exactly): with a φ̇ range far narrower than the
+  // jumps, each would be dashed along millions of pixels, and an SVG or PDF keeps every dash.
   const double jump_dash[] = {style.px(3.0), style.px(3.0)};
   cairo_set_dash(cr, jump_dash, 2, 0.0);
   for (const Jump& j : jumps) {
-    const Point a = tr.to_pixel(j.before.x, j.before.y), b = tr.to_pixel(j.after.x, j.after.y);
+    const Point a = clamped_pixel(tr, j.before), b = clamped_pixel(tr, j.after);
     cairo_move_to(cr, a.x, a.y);
     cairo_line_to(cr, b.x, b.y);
   }
@@ -197,15 +199,19 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
     avoid.lines.push_back(b.pixels);
   }
 
-  // Impact markers at the state just before each impact, one fill per kind of mark.
+  // Impact markers at the state just before each impact, one fill per kind of mark; only those
+  // that show (far off the area a centre would be past cairo's fixed-point range, and wrap).
   std::vector<const EventMark*> marks_shown;
   std::vector<Rect> marker_boxes;  // numbers keep clear of them
   const double reach = style.px(5.0);
+  const Rect near{area.x - reach, area.y - reach, area.w + 2 * reach, area.h + 2 * reach};
   for (EventKind kind : {EventKind::limiter, EventKind::collision, EventKind::chatter}) {
     const EventMark* mark = event_mark(kind);
     std::vector<Point> centres;
-    for (const Jump& j : jumps)
-      if (j.mark == mark) centres.push_back(tr.to_pixel(j.before.x, j.before.y));
+    for (const Jump& j : jumps) {
+      const Point c = tr.to_pixel(j.before.x, j.before.y);
+      if (j.mark == mark && near.contains(c)) centres.push_back(c);
+    }
     if (centres.empty()) continue;
     for (const Point& c : centres)
       marker_boxes.push_back({c.x - reach, c.y - reach, 2 * reach, 2 * reach});

@@ -12,17 +12,21 @@ constexpr std::size_t kChunk = 256;
 
 }  // namespace
 
-std::vector<Point> to_thinned_pixels(const Transform& tr, std::span<const Point> data,
-                                     double tolerance_px) {
+Point clamped_pixel(const Transform& tr, Point data) {
   const Rect& a = tr.area();
   const double reach = 4.0 * std::max(a.w, a.h);
+  const Point q = tr.to_pixel(data.x, data.y);
+  return {std::clamp(q.x, a.x - reach, a.right() + reach),
+          std::clamp(q.y, a.y - reach, a.bottom() + reach)};
+}
+
+std::vector<Point> to_thinned_pixels(const Transform& tr, std::span<const Point> data,
+                                     double tolerance_px) {
   std::vector<Point> pixels;
   pixels.reserve(data.size());
   for (const Point& p : data) {
     const Point q = tr.to_pixel(p.x, p.y);
-    if (!std::isfinite(q.x) || !std::isfinite(q.y)) continue;
-    pixels.push_back({std::clamp(q.x, a.x - reach, a.right() + reach),
-                      std::clamp(q.y, a.y - reach, a.bottom() + reach)});
+    if (std::isfinite(q.x) && std::isfinite(q.y)) pixels.push_back(clamped_pixel(tr, p));
   }
   return thin_polyline(pixels, tolerance_px);
 }
