@@ -177,14 +177,14 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
   }
 
   // Velocity jumps under the branches, thin and dashed: they are not motion. Clamped near the
-  // area like the curves (a jump is vertical, so exactly): with a φ̇ range far narrower than the
-  // jumps, each would be dashed along millions of pixels, and an SVG or PDF keeps every dash.
+  // area like the curves (render/phase_jumps.h): with a φ̇ range far narrower than the jumps,
+  // each would be dashed along millions of pixels, and cairo's SVG and PDF surfaces work through
+  // every dash.
   const double jump_dash[] = {style.px(3.0), style.px(3.0)};
   cairo_set_dash(cr, jump_dash, 2, 0.0);
-  for (const Jump& j : jumps) {
-    const Point a = clamped_pixel(tr, j.before), b = clamped_pixel(tr, j.after);
-    cairo_move_to(cr, a.x, a.y);
-    cairo_line_to(cr, b.x, b.y);
+  for (const VerticalLine& l : jump_lines(jumps, tr)) {
+    cairo_move_to(cr, l.x, l.top);
+    cairo_line_to(cr, l.x, l.bottom);
   }
   set_colour(cr, kGuide);
   cairo_set_line_width(cr, style.thin_width());
