@@ -20,15 +20,18 @@ struct PelletSeries {
   std::vector<Point> dphi;  // (t, φ̇), joined: jumps show as vertical strokes
 };
 
+// The window cuts the joined curve, the gaps between branches included (a pellet at rest is
+// not sampled): cut branch by branch, a window starting in a rest began at the next sample.
 std::vector<PelletSeries> pellet_series(const PanelInput& in, const std::vector<int>& pellets) {
   std::vector<PelletSeries> series;
   for (int pellet : pellets) {
+    std::vector<Sample> joined;
+    for (const Branch& b : find_track(in.run, pellet)->branches)
+      joined.insert(joined.end(), b.samples.begin(), b.samples.end());
     PelletSeries s{pellet, {}, {}};
-    for (const Branch& b : find_track(in.run, pellet)->branches) {
-      for (const Sample& sample : clip_to_window(b.samples, in.spec.t_from, in.spec.t_to)) {
-        s.phi.push_back({sample.t, sample.phi});
-        s.dphi.push_back({sample.t, sample.dphi});
-      }
+    for (const Sample& sample : clip_to_window(joined, in.spec.t_from, in.spec.t_to)) {
+      s.phi.push_back({sample.t, sample.phi});
+      s.dphi.push_back({sample.t, sample.dphi});
     }
     series.push_back(std::move(s));
   }
@@ -87,7 +90,9 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   dphi = with_zero_if_near(dphi);
   const std::vector<Rect>& plots = in.layout.plots;
   const bool stacked = plots.size() > 1;
-  const Axis x = make_axis(t.empty() ? Range{0.0, 1.0} : t, plots.front().w, false, kTimeLabel);
+  // An instant (a window holding one sample) widened to an interval around it.
+  const Axis x =
+      make_axis(t.empty() ? Range{0.0, 1.0} : padded(t, 0.0), plots.front().w, false, kTimeLabel);
 
   // Upper (or only) plot: φ(t). A bottom strip is left free for the event marks.
   const Rect& top = plots.front();
