@@ -62,7 +62,10 @@ std::string axes_defect(const RenderResult& image, int width, int height) {
       return "a plot area (left " + std::to_string(a.left) + ", top " + std::to_string(a.top) +
              ", " + std::to_string(a.width) + " × " + std::to_string(a.height) +
              ") reaches past the " + size_text(width, height) + " image";
-    if (!(a.x_lo < a.x_hi) || !(a.y_lo < a.y_hi)) return "a plot's axis spans nothing";
+    if (!(a.x_lo < a.x_hi) || !(a.y_lo < a.y_hi))
+      return "a plot's axes span nothing: x " + std::to_string(a.x_lo) + " to " +
+             std::to_string(a.x_hi) + ", y " + std::to_string(a.y_lo) + " to " +
+             std::to_string(a.y_hi);
   }
   return {};
 }
