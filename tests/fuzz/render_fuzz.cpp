@@ -30,6 +30,8 @@
 #include "io/scene_json.h"
 #include "render/figure.h"
 #include "render/run_plan.h"
+#include "server/config.h"
+#include "server/run_scene.h"
 #include "tests/fuzz/image_checks.h"
 #include "tests/fuzz/render_scenes.h"
 #include "tests/robustness/run_invariants.h"
@@ -54,26 +56,9 @@ struct Options {
   std::string replay;
 };
 
-// What the server allows a request (server/config.h's Limits): the reader's bounds, and the
-// run's, which bounded() in server/run_scene.cpp applies.
-SceneLimits server_scene_limits() {
-  SceneLimits s;
-  s.sim.max_pellets = 8;
-  s.sim.max_limiters = 16;
-  s.sim.max_t_end = 1000.0;
-  s.max_plots = 8;
-  s.max_width = 4000;
-  s.max_height = 4000;
-  return s;
-}
-
-SimOptions server_bounded(SimOptions o) {
-  o.max_events = std::min(o.max_events, 20000L);
-  o.max_steps = std::min(o.max_steps, 2'000'000L);
-  o.deadline_ms = std::min(o.deadline_ms, 2000.0);
-  o.max_samples = 200'000;
-  return o;
-}
+// What the server allows a request, by default (server/config.h's Limits): the reader's bounds,
+// and the run's.
+const server::Limits kServerLimits;
 
 // Seconds a scene took in each stage: the run, and the drawing in each format.
 using Stages = std::map<std::string, double>;
@@ -119,7 +104,7 @@ std::string draw_defect(const Scene& scene, const RunResult& run, ImageFormat fo
 
 // Reads, runs and draws one scene; empty when every answer keeps its contract.
 std::string scene_defect(const std::string& text, Tally& tally) {
-  SceneOrError parsed = scene_from_text(text, server_scene_limits());
+  SceneOrError parsed = scene_from_text(text, server::scene_limits(kServerLimits));
   if (const auto* e = std::get_if<FieldError>(&parsed)) {
     ++tally.refused_by_reader;
     return refusal_defect(*e, "the reader", tally);
@@ -136,7 +121,7 @@ std::string scene_defect(const std::string& text, Tally& tally) {
   }
   if (formats.empty()) return {};
   const RunPlan plan = plan_run(scene.figure, scene.sim, scene.model.size());
-  const SimOptions options = server_bounded(plan.options);
+  const SimOptions options = server::bounded_options(plan.options, kServerLimits);
   const Clock::time_point t0 = Clock::now();
   const RunResult run = simulate(scene.model, options);
   tally.stages["run"] = seconds_since(t0);

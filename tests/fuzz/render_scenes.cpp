@@ -7,6 +7,7 @@
 
 #include "core/validate.h"
 #include "render/figure.h"
+#include "server/config.h"
 #include "tests/differential/scene_gen.h"
 
 namespace vibro::fuzz {
@@ -37,7 +38,7 @@ class Draw {
   std::uint64_t state_;
 };
 
-constexpr int kMaxPellets = 8;  // the server's limit
+const server::Limits kServer;  // the server's default limits
 
 Pellet extra_pellet(const Model& m, Draw& d) {
   Pellet p;
@@ -57,7 +58,7 @@ Pellet extra_pellet(const Model& m, Draw& d) {
 // validate with them.
 void add_pellets(Model& m, Draw& d) {
   if (d.chance(0.4)) return;
-  const int target = std::max(m.size(), d.between(2, kMaxPellets));
+  const int target = std::max(m.size(), d.between(2, kServer.pellets));
   const Model before = m;
   while (m.size() < target) {
     Pellet p = extra_pellet(m, d);
@@ -185,8 +186,8 @@ void size(FigureSpec& f, Draw& d) {
     f.width = d.between(kMinFigureSide, 200);
     f.height = d.between(kMinFigureSide, 200);
   } else {
-    f.width = d.between(1600, 4000);
-    f.height = std::min(4000, static_cast<int>(8'000'000 / f.width));
+    f.width = d.between(1600, kServer.width);
+    f.height = std::min(kServer.height, static_cast<int>(kServer.pixels / f.width));
     f.height = d.between(kMinFigureSide, f.height);
   }
 }

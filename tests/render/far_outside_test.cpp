@@ -1,7 +1,7 @@
 // What lies far outside a plot's axes is drawn near them or not at all (issue 31's render
 // fuzzer). A phase portrait whose φ̇ range was far narrower than its velocity jumps stroked each
 // jump, dashed, to points millions of pixels off the image: cairo's vector surfaces work through
-// every dash of such a line (a 64 KB scene asked for 0.9 GB and got "out of memory" for its SVG
+// every dash of such a line (a 780-byte scene asked for 0.9 GB and got "out of memory" for its SVG
 // and PDF), and past 2²³ px its fixed-point coordinates wrap, which can bring an impact marker
 // back into view at the wrong place.
 #include <gtest/gtest.h>
