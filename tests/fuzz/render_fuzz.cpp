@@ -79,10 +79,22 @@ const char* format_name(ImageFormat f) {
   return f == ImageFormat::png ? "png" : f == ImageFormat::svg ? "svg" : "pdf";
 }
 
+// The field without its indices: "plots[3].pellet" -> "plots[].pellet".
+std::string field_kind(const std::string& field) {
+  std::string kind;
+  bool in_index = false;
+  for (char c : field) {
+    if (c == ']') in_index = false;
+    if (!in_index) kind += c;
+    if (c == '[') in_index = true;
+  }
+  return kind;
+}
+
 // A refusal is an answer when it names its field.
 std::string refusal_defect(const FieldError& e, const std::string& where, Tally& tally) {
   if (e.field.empty()) return where + " refused without naming a field: " + e.message;
-  ++tally.refusal_fields[e.field.substr(0, e.field.find('['))];
+  ++tally.refusal_fields[field_kind(e.field)];
   return {};
 }
 

@@ -89,7 +89,7 @@ void ranges(PlotSpec& p, Draw& d) {
 
 std::string long_title(Draw& d) {
   std::string title;
-  while (title.size() < 190) title += d.chance(0.5) ? "φ̇ impact \u2014 " : "WWWWWWWW ";
+  while (title.size() < 180) title += d.chance(0.5) ? "φ̇ impact \u2014 " : "WWWWWWWW ";
   return title;
 }
 
