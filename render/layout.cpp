@@ -48,11 +48,16 @@ std::vector<Rect> grid_cells(int count, int width, int height) {
 PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double legend_column,
                          double legend_strip) {
   PanelLayout layout{cell, {cell.x + 0.5 * cell.w, cell.y + style.px(kTitleTop)}, {}};
-  const double left = cell.x + style.px(kLeft), top = cell.y + style.px(kTop + legend_strip);
-  const double width = std::max(1.0, cell.w - style.px(kLeft + kRight + legend_column));
-  const double height = std::max(1.0, cell.h - style.px(kTop + kBottom + legend_strip));
   const int n = std::max(1, stacked);
-  const double gap = style.px(kStackGap);
+  // The margins as the style asks, or what a cell too small for them leaves: each plot area
+  // keeps at least a pixel inside its cell (whole pixels: the cell's sides are).
+  const double left = std::min(cell.x + style.px(kLeft), cell.right() - 1.0);
+  const double top = std::min(cell.y + style.px(kTop + legend_strip), cell.bottom() - n);
+  const double width =
+      std::clamp(cell.w - style.px(kLeft + kRight + legend_column), 1.0, cell.right() - left);
+  const double height =
+      std::clamp(cell.h - style.px(kTop + kBottom + legend_strip), 1.0 * n, cell.bottom() - top);
+  const double gap = std::min(style.px(kStackGap), (height - n) / std::max(1, n - 1));
   const double each = std::max(1.0, (height - gap * (n - 1)) / n);
   for (int i = 0; i < n; ++i)
     layout.plots.push_back({std::round(left), std::round(top + i * (each + gap)), std::round(width),
@@ -69,10 +74,9 @@ std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
     const PlotSpec& plot = figure.plots[i];
     if (plot.kind == PlotKind::cylinder || plot.kind == PlotKind::mechanism) {
       const Rect& c = cells[i];
-      const double top = style.px(kTop);
-      layouts.push_back({c,
-                         {c.x + 0.5 * c.w, c.y + style.px(kTitleTop)},
-                         {{c.x, c.y + top, c.w, std::max(1.0, c.h - top)}}});
+      const double top = std::min(style.px(kTop), c.h - 1.0);
+      layouts.push_back(
+          {c, {c.x + 0.5 * c.w, c.y + style.px(kTitleTop)}, {{c.x, c.y + top, c.w, c.h - top}}});
     } else {
       const int stacked = plot.kind == PlotKind::time && plot.show_dphi ? 2 : 1;
       const bool map = plot.kind == PlotKind::regime_map || plot.kind == PlotKind::lyapunov_map;

@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <map>
 
+#include "render/polyline.h"
 #include "render/track_window.h"
 
 namespace vibro::render {
@@ -52,6 +54,26 @@ std::vector<Jump> velocity_jumps(const PelletTrack& track, std::span<const Event
     jumps.push_back({{e.phi, dphi}, {e.phi, 0.0}, event_mark(EventKind::chatter)});
   }
   return jumps;
+}
+
+std::vector<VerticalLine> jump_lines(std::span<const Jump> jumps, const Transform& tr) {
+  std::map<double, std::vector<VerticalLine>> columns;  // by quarter-pixel column
+  for (const Jump& j : jumps) {
+    const Point a = clamped_pixel(tr, j.before), b = clamped_pixel(tr, j.after);
+    columns[std::floor(4.0 * a.x)].push_back({a.x, std::min(a.y, b.y), std::max(a.y, b.y)});
+  }
+  std::vector<VerticalLine> lines;
+  for (auto& [column, in] : columns) {
+    std::sort(in.begin(), in.end(), [](const auto& p, const auto& q) { return p.top < q.top; });
+    lines.push_back(in.front());
+    for (const VerticalLine& l : in) {
+      if (l.top <= lines.back().bottom)
+        lines.back().bottom = std::max(lines.back().bottom, l.bottom);
+      else
+        lines.push_back(l);
+    }
+  }
+  return lines;
 }
 
 }  // namespace vibro::render

@@ -11,6 +11,7 @@
 #include "render/event_marks.h"
 #include "render/geometry.h"
 #include "render/plot_spec.h"
+#include "render/transform.h"
 
 namespace vibro::render {
 
@@ -23,5 +24,16 @@ struct Jump {
 // The jumps of one pellet's track inside the plot's window and branch selection.
 std::vector<Jump> velocity_jumps(const PelletTrack& track, std::span<const Event> events,
                                  const PlotSpec& spec);
+
+// A vertical segment in pixels, from y `top` down to `bottom` at `x`.
+struct VerticalLine {
+  double x, top, bottom;
+};
+
+// The lines that draw the jumps, in pixels (clamped near the plot: render/polyline.h): the jumps
+// in one quarter-pixel column merged where they overlap. Impacts at a limiter all jump at its
+// angle, and cairo strokes thousands of overlapping lines in a time that grows with the square
+// of their number (20 000 impacts took seconds); their union looks the same.
+std::vector<VerticalLine> jump_lines(std::span<const Jump> jumps, const Transform& tr);
 
 }  // namespace vibro::render

@@ -25,7 +25,6 @@ struct VisibleBranch {
   bool labelled = true;       // false on the shorter pieces of a branch cut by wrapping φ
 };
 
-
 constexpr double kPi = 0.5 * kTwoPi;
 
 // φ on one turn, [−π, π).
@@ -70,7 +69,6 @@ std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const Plot
   return branches;
 }
 
-
 // The first-integral curves through the point: the curve of direction s carries φ̇ of sign s
 // only, so a point with φ̇ ≠ 0 gets one curve and a point at rest both.
 std::vector<std::vector<Point>> first_integral_curves(const Model& model, PhasePoint through,
@@ -107,7 +105,6 @@ void draw_friction_zones(cairo_t* cr, const Transform& tr, double alpha0) {
   set_colour(cr, kFrictionZone);
   cairo_fill(cr);
 }
-
 
 std::string default_title(const PlotSpec& spec, double t_end) {
   std::string title = "Phase portrait, pellet " + std::to_string(spec.pellet + 1);
@@ -172,20 +169,22 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
     const int samples = std::max(400, static_cast<int>(area.w));
     for (const auto& curve :
          first_integral_curves(in.model, *spec.first_integral_through, x.range, samples)) {
-      avoid.lines.push_back(to_thinned_pixels(tr, curve, thin_tolerance(cr)));
+      avoid.lines.push_back(to_thinned_pixels(tr, curve));
       stroke_polyline(cr, avoid.lines.back());
     }
     cairo_set_dash(cr, nullptr, 0, 0.0);
     legend.push_back({"first integral (unforced)", kOverlay, Swatch::dashed_line});
   }
 
-  // Velocity jumps under the branches, thin and dashed: they are not motion.
+  // Velocity jumps under the branches, thin and dashed: they are not motion. Clamped near the
+  // area like the curves (render/phase_jumps.h): with a φ̇ range far narrower than the jumps,
+  // each would be dashed along millions of pixels, and cairo's SVG and PDF surfaces work through
+  // every dash.
   const double jump_dash[] = {style.px(3.0), style.px(3.0)};
   cairo_set_dash(cr, jump_dash, 2, 0.0);
-  for (const Jump& j : jumps) {
-    const Point a = tr.to_pixel(j.before.x, j.before.y), b = tr.to_pixel(j.after.x, j.after.y);
-    cairo_move_to(cr, a.x, a.y);
-    cairo_line_to(cr, b.x, b.y);
+  for (const VerticalLine& l : jump_lines(jumps, tr)) {
+    cairo_move_to(cr, l.x, l.top);
+    cairo_line_to(cr, l.x, l.bottom);
   }
   set_colour(cr, kGuide);
   cairo_set_line_width(cr, style.thin_width());
@@ -194,23 +193,28 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
 
   cairo_set_line_width(cr, style.curve_width());
   for (VisibleBranch& b : branches) {
-    b.pixels = to_thinned_pixels(tr, b.data, thin_tolerance(cr));
+    b.pixels = to_thinned_pixels(tr, b.data);
     set_colour(cr, branch_colour(b.index));
     stroke_polyline(cr, b.pixels);
     avoid.lines.push_back(b.pixels);
   }
 
-  // Impact markers at the state just before each impact, one fill per kind of mark.
+  // Impact markers at the state just before each impact, one fill per kind of mark; only those
+  // that show (far off the area a centre would be past cairo's fixed-point range, and wrap).
   std::vector<const EventMark*> marks_shown;
   std::vector<Rect> marker_boxes;  // numbers keep clear of them
   const double reach = style.px(5.0);
+  const Rect near{area.x - reach, area.y - reach, area.w + 2 * reach, area.h + 2 * reach};
   for (EventKind kind : {EventKind::limiter, EventKind::collision, EventKind::chatter}) {
     const EventMark* mark = event_mark(kind);
     std::vector<Point> centres;
-    for (const Jump& j : jumps)
-      if (j.mark == mark) centres.push_back(tr.to_pixel(j.before.x, j.before.y));
+    for (const Jump& j : jumps) {
+      const Point c = tr.to_pixel(j.before.x, j.before.y);
+      if (j.mark == mark && near.contains(c)) centres.push_back(c);
+    }
     if (centres.empty()) continue;
-    for (const Point& c : centres) marker_boxes.push_back({c.x - reach, c.y - reach, 2 * reach, 2 * reach});
+    for (const Point& c : centres)
+      marker_boxes.push_back({c.x - reach, c.y - reach, 2 * reach, 2 * reach});
     draw_event_marks(cr, centres, *mark, style);
     marks_shown.push_back(mark);
   }

@@ -15,13 +15,14 @@ namespace vibro::render {
 // Thinning tolerance: a quarter pixel does not change the antialiased line visibly.
 inline constexpr double kThinTolerancePx = 0.25;
 
-// The thinning tolerance for what `cr` draws on: kThinTolerancePx on vector surfaces, where a
-// reader zooms in; twice that on an image, whose fast antialiasing places an edge to a quarter
-// pixel anyway (render/polyline.cpp strokes with it).
-double thin_tolerance(cairo_t* cr);
+// A data point as a pixel, clamped to four times the plot area's size beyond its edges: cairo's
+// fixed-point arithmetic never overflows on what leaves the area, and a dashed line to a point
+// far outside (an axis range far narrower than the data) costs a bounded number of dashes,
+// which a vector surface would otherwise keep every one of. Exact for a segment parallel to an
+// axis; a curve's clamped points move only where it is outside the area.
+Point clamped_pixel(const Transform& tr, Point data);
 
-// Data points to pixels, thinned. Coordinates are clamped far outside the plot area so that
-// cairo's fixed-point arithmetic never overflows on curves that leave it.
+// Data points to pixels (clamped_pixel), thinned; points that are not finite are dropped.
 std::vector<Point> to_thinned_pixels(const Transform& tr, std::span<const Point> data,
                                      double tolerance_px = kThinTolerancePx);
 

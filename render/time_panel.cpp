@@ -20,15 +20,18 @@ struct PelletSeries {
   std::vector<Point> dphi;  // (t, φ̇), joined: jumps show as vertical strokes
 };
 
+// The window cuts the joined curve, the gaps between branches included (a pellet at rest is
+// not sampled): cut branch by branch, a window starting in a rest began at the next sample.
 std::vector<PelletSeries> pellet_series(const PanelInput& in, const std::vector<int>& pellets) {
   std::vector<PelletSeries> series;
   for (int pellet : pellets) {
+    std::vector<Sample> joined;
+    for (const Branch& b : find_track(in.run, pellet)->branches)
+      joined.insert(joined.end(), b.samples.begin(), b.samples.end());
     PelletSeries s{pellet, {}, {}};
-    for (const Branch& b : find_track(in.run, pellet)->branches) {
-      for (const Sample& sample : clip_to_window(b.samples, in.spec.t_from, in.spec.t_to)) {
-        s.phi.push_back({sample.t, sample.phi});
-        s.dphi.push_back({sample.t, sample.dphi});
-      }
+    for (const Sample& sample : clip_to_window(joined, in.spec.t_from, in.spec.t_to)) {
+      s.phi.push_back({sample.t, sample.phi});
+      s.dphi.push_back({sample.t, sample.dphi});
     }
     series.push_back(std::move(s));
   }
@@ -87,11 +90,14 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   dphi = with_zero_if_near(dphi);
   const std::vector<Rect>& plots = in.layout.plots;
   const bool stacked = plots.size() > 1;
-  const Axis x = make_axis(t.empty() ? Range{0.0, 1.0} : t, plots.front().w, false, kTimeLabel);
+  // An instant (a window holding one sample) widened to an interval around it.
+  const Axis x =
+      make_axis(t.empty() ? Range{0.0, 1.0} : padded(t, 0.0), plots.front().w, false, kTimeLabel);
 
   // Upper (or only) plot: φ(t). A bottom strip is left free for the event marks.
   const Rect& top = plots.front();
-  Range phi_range = spec.phi_range ? Range{spec.phi_range->lo, spec.phi_range->hi} : padded(phi, 0.05);
+  Range phi_range =
+      spec.phi_range ? Range{spec.phi_range->lo, spec.phi_range->hi} : padded(phi, 0.05);
   phi_range.lo -= style.px(14.0) / top.h * phi_range.span();  // below the data, not over it
   const Axis y_phi = make_axis(phi_range, top.h, true, kPhiLabel, true);
   const Transform tr_phi(top, x.range, y_phi.range);
@@ -108,7 +114,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   draw_limiter_lines(cr, tr_phi, limiters, Orientation::horizontal, style);
   cairo_set_line_width(cr, style.curve_width());
   for (const PelletSeries& s : series) {
-    avoid.lines.push_back(to_thinned_pixels(tr_phi, s.phi, thin_tolerance(cr)));
+    avoid.lines.push_back(to_thinned_pixels(tr_phi, s.phi));
     set_colour(cr, series_colour(s.pellet));
     stroke_polyline(cr, avoid.lines.back());
     legend.push_back({"pellet " + std::to_string(s.pellet + 1), series_colour(s.pellet)});
@@ -134,7 +140,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
     cairo_set_line_width(cr, style.curve_width());
     for (const PelletSeries& s : series) {
       set_colour(cr, series_colour(s.pellet));
-      stroke_polyline(cr, to_thinned_pixels(tr_dphi, s.dphi, thin_tolerance(cr)));
+      stroke_polyline(cr, to_thinned_pixels(tr_dphi, s.dphi));
     }
     cairo_restore(cr);
     draw_frame(cr, tr_dphi, x, y_dphi, style);

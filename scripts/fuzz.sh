@@ -4,12 +4,31 @@
 # scene dictionary. Usage: scripts/fuzz.sh [SECONDS]   (after scripts/setup.sh --test).
 # A crash, leak, timeout or broken invariant stops the run, keeps the input as crash-* (or
 # leak-*, timeout-*, oom-*) in the build directory and fails the script.
+#   scripts/fuzz.sh render [SECONDS]   runs the render fuzzer (tests/fuzz/render_fuzz.cpp) in
+# the same build for SECONDS (default 600); VIBRO_RENDER_FUZZ_SEED picks other scenes. A failing
+# scene is kept as render_fuzz-failure-*.json in the build directory, a crash's as
+# render_fuzz-current.json.
 set -euo pipefail
 cd "$(dirname "$0")/.."
-seconds="${1:-60}"
 
-# The target lives in the sanitizer build (scripts/asan-build.sh): CI compiles vibro once for both.
+# The targets live in the sanitizer build (scripts/asan-build.sh): CI compiles vibro once for all.
 dir="${VIBRO_ASAN_DIR:-build-asan}"
+export ASAN_OPTIONS="detect_leaks=1"
+export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"  # see sanitize.sh
+export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
+
+if [[ "${1:-}" == render ]]; then
+  seconds="${2:-600}"
+  bash scripts/asan-build.sh "$dir" render_fuzz
+  echo "fuzz: rendering scenes for ${seconds} s (log: $dir/render_fuzz.log)"
+  status=0
+  "$dir/tests/fuzz/render_fuzz" --seconds "$seconds" --out "$dir" > "$dir/render_fuzz.log" 2>&1 ||
+    status=$?
+  tail -30 "$dir/render_fuzz.log"
+  exit "$status"
+fi
+
+seconds="${1:-60}"
 bash scripts/asan-build.sh "$dir" scene_fuzz
 
 # Inputs the fuzzer finds go into a scratch copy: the committed seeds stay small and reviewed.
@@ -18,9 +37,6 @@ rm -rf "$corpus"
 cp -r tests/fuzz/corpus "$corpus"
 log="$dir/fuzz.log"
 echo "fuzz: running for ${seconds} s on $(ls "$corpus" | wc -l) seeds (log: $log)"
-export ASAN_OPTIONS="detect_leaks=1"
-export LSAN_OPTIONS="suppressions=$PWD/tests/lsan.supp:print_suppressions=0"  # see sanitize.sh
-export UBSAN_OPTIONS="print_stacktrace=1:halt_on_error=1"
 status=0
 "$dir/tests/fuzz/scene_fuzz" -max_total_time="$seconds" -max_len=4096 -timeout=5 -rss_limit_mb=2048 \
   -dict=tests/fuzz/scene.dict -artifact_prefix="$dir/" -print_final_stats=1 "$corpus" > "$log" 2>&1 ||

@@ -68,5 +68,35 @@ TEST(FigureLayout, StacksTheTimePanelWhenItShowsDphi) {
   EXPECT_GE(layouts[1].plots[0].x, 600);
 }
 
+// However small the figure for its panels (the smallest is 64 px a side), every plot area lies
+// inside its cell and so on the image: the plot axes a render reports name points of it. The
+// render fuzzer found a 78×69 figure of three panels with a plot area at x = 104.
+TEST(FigureLayout, PlotAreasStayInsideTheirCellsInTheSmallestFigures) {
+  for (int count = 1; count <= 16; ++count) {
+    for (int kind = 0; kind < 3; ++kind) {
+      FigureSpec figure;
+      figure.plots.assign(count, PlotSpec{});
+      for (PlotSpec& p : figure.plots) {
+        p.kind = kind == 2 ? PlotKind::mechanism : PlotKind::time;
+        p.show_dphi = kind == 1;  // two stacked plot areas
+      }
+      for (int side : {64, 78, 101, 160}) {
+        figure.width = side;
+        figure.height = side - 9;
+        for (const PanelLayout& layout : figure_layout(figure)) {
+          for (const Rect& a : layout.plots) {
+            const Rect& c = layout.cell;
+            EXPECT_TRUE(a.w >= 1 && a.h >= 1 && a.x >= c.x && a.y >= c.y &&
+                        a.right() <= c.right() && a.bottom() <= c.bottom())
+                << count << " panels of kind " << kind << " in " << side << " px: plot area " << a.x
+                << ", " << a.y << ", " << a.w << " × " << a.h << " in the cell " << c.x << ", "
+                << c.y << ", " << c.w << " × " << c.h;
+          }
+        }
+      }
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vibro::render

@@ -36,6 +36,19 @@ TEST(Thin, KeepsEveryPointWithinTheTolerance) {
   }
 }
 
+// A long φ(t) seen from afar: a zigzag of many turns per pixel over several of the thinning's
+// spans (render/thin.cpp), whose ends must keep the tolerance like any point.
+TEST(Thin, KeepsAZigzagWithinTheToleranceAcrossSpans) {
+  std::vector<Point> points;
+  for (int i = 0; i < 6000; ++i) points.push_back({0.01 * i, i % 2 ? 10.0 : 90.0 + 0.1 * (i % 7)});
+  const auto thinned = thin_polyline(points, 0.25);
+  double worst = 0.0;
+  for (const Point& p : points) worst = std::max(worst, distance_to_polyline(p, thinned));
+  EXPECT_LE(worst, 0.25 + 1e-9);
+  EXPECT_EQ(thinned.front().x, points.front().x);
+  EXPECT_EQ(thinned.back().x, points.back().x);
+}
+
 TEST(Thin, ReducesADenseCurve) {
   const auto points = dense_spiral();
   const auto thinned = thin_polyline(points, 0.25);
