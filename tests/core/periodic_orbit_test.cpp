@@ -252,6 +252,18 @@ TEST(PeriodicOrbit, BadRequestsNameTheirField) {
   EXPECT_FALSE(validate_orbit(impact_oscillator(5.0), {}));
 }
 
+// A force with Omega = 0 is the constant F0 cos(psi): it repeats with every period, so a pellet
+// pushed by one leaves the scene's orbits to seek. Forces that do not repeat are refused.
+TEST(PeriodicOrbit, AConstantForceRepeatsWithEveryPeriod) {
+  Model m = impact_oscillator(5.0);
+  m.pellets.push_back({0.1, 2.0, 0.0, {0.05, 0.0, 0.0}});
+  EXPECT_FALSE(validate_orbit(m, {}));
+  m.pellets[1].force.Omega = 2.5;  // half the first force's frequency: it does not repeat
+  EXPECT_EQ(validate_orbit(m, {})->field, "model.pellets[1].Omega");
+  m.pellets[1].force.Omega = -5.0;  // periodic forces turn forward (Omega > 0)
+  EXPECT_EQ(validate_orbit(m, {})->field, "model.pellets[1].Omega");
+}
+
 // A guess is a starting state and is bounded as phi0 and dphi0 are: far past them an angle keeps
 // no digits below the turn (a guess of 1e17 rad once hung the search).
 TEST(PeriodicOrbit, GuessesAreBoundedLikeStartingStates) {
