@@ -403,5 +403,25 @@ TEST(OrbitContinuation, BadSpecsNameTheirField) {
             "periodic_orbit.continuation.max_points");
 }
 
+// Every point of a branch is a valid model: the continuation checks the model at each value, not
+// the model seen from its section's phase (whose psi is shifted by Omega times the phase). From
+// psi at its bound of -1e4 the branch turns the other way first.
+TEST(OrbitContinuation, StaysWhereTheModelIsValid) {
+  Model m = impact_oscillator(5.0);
+  m.pellets[0].force.psi = -1e4;
+  SimOptions o;
+  o.rtol = 1e-9;
+  o.atol = 1e-12;
+  OrbitSpec spec;
+  spec.transient = 40;
+  const PeriodicOrbit orbit = find_periodic_orbit(m, o, spec);
+  ASSERT_TRUE(orbit.converged) << orbit.message;
+  const ContinuationSpec to{"model.pellets[0].psi", 1e4, 6};
+  ASSERT_FALSE(validate_continuation(m, to));
+  const OrbitBranch b = continue_orbit(m, o, orbit, to);
+  ASSERT_FALSE(b.points.empty()) << b.message;
+  for (const BranchPoint& p : b.points) EXPECT_GE(p.value, -1e4);
+}
+
 }  // namespace
 }  // namespace vibro
