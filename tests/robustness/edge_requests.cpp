@@ -4,7 +4,6 @@
 #include <chrono>
 #include <cmath>
 #include <condition_variable>
-#include <cstdlib>
 #include <exception>
 #include <mutex>
 #include <nlohmann/json.hpp>
@@ -18,6 +17,7 @@
 #include "io/scene_json.h"
 #include "io/sweep_json.h"
 #include "server/run_scene.h"
+#include "tests/robustness/edge_values.h"
 
 namespace vibro::robustness {
 namespace {
@@ -46,29 +46,9 @@ class CancelAt {
   std::jthread thread_;
 };
 
-// The value at a field path ("sweep.parameter2.count", "periodic_orbit.guess[0].phi"), or null.
+// The value at a field path of the request, or null.
 const json* at_path(const json& j, const std::string& path) {
-  const json* node = &j;
-  std::size_t pos = 0;
-  while (pos < path.size()) {
-    if (path[pos] == '.') {
-      ++pos;
-    } else if (path[pos] == '[') {
-      const std::size_t close = path.find(']', pos);
-      if (close == std::string::npos || !node->is_array()) return nullptr;
-      const std::size_t i = std::strtoul(path.c_str() + pos + 1, nullptr, 10);
-      if (i >= node->size()) return nullptr;
-      node = &(*node)[i];
-      pos = close + 1;
-    } else {
-      const std::size_t end = std::min(path.find_first_of(".[", pos), path.size());
-      const std::string key = path.substr(pos, end - pos);
-      if (!node->is_object() || !node->contains(key)) return nullptr;
-      node = &(*node)[key];
-      pos = end;
-    }
-  }
-  return node;
+  return field_at(const_cast<json&>(j), path);
 }
 
 // The model fields a request varies: a refusal may name one of them (core/sweep.h,

@@ -79,25 +79,8 @@ std::vector<Bounded> model_fields(const json& model) {
   return fields;
 }
 
-// The JSON value at a field path of the request ("model.pellets[0].F0"), made if absent.
-json& slot(json& request, const std::string& path) {
-  json* node = &request;
-  std::size_t pos = 0;
-  while (pos < path.size()) {
-    if (path[pos] == '.') {
-      ++pos;
-    } else if (path[pos] == '[') {
-      const std::size_t close = path.find(']', pos);
-      node = &(*node)[std::stoul(path.substr(pos + 1, close - pos - 1))];
-      pos = close + 1;
-    } else {
-      const std::size_t end = std::min(path.find_first_of(".[", pos), path.size());
-      node = &(*node)[path.substr(pos, end - pos)];
-      pos = end;
-    }
-  }
-  return *node;
-}
+// The JSON value at a field path of the request, made if absent.
+json& slot(json& request, const std::string& path) { return *field_at(request, path, true); }
 
 json preset(const char* name) {
   json scene = json::parse(*preset_json(name));
@@ -119,7 +102,7 @@ struct Base {
 std::vector<Base> bases() {
   json io = preset("impact-oscillator");
   io.erase("sweep");
-  io["periodic_orbit"] = {{"periods", 1}, {"transient", 150}, {"max_iterations", 40}};
+  io["periodic_orbit"] = {{"periods", 1}, {"transient", 40}, {"max_iterations", 40}};
   json io_cont = io;
   io_cont["periodic_orbit"]["continuation"] = {
       {"parameter", "model.pellets[0].Omega"}, {"to", 5.5}, {"max_points", 6}};

@@ -1,7 +1,9 @@
 #include "tests/robustness/edge_values.h"
 
+#include <algorithm>
 #include <charconv>
 #include <cmath>
+#include <cstdlib>
 #include <limits>
 
 namespace vibro::robustness {
@@ -74,6 +76,31 @@ std::vector<std::pair<Edge, Edge>> span_pairs(double lo, double hi) {
           {e(hi), e(lo)},
           {e(std::nextafter(lo, -kInf)), e(hi)},
           {e(lo), e(std::nextafter(hi, kInf))}};
+}
+
+nlohmann::json* field_at(nlohmann::json& request, const std::string& path, bool make) {
+  nlohmann::json* node = &request;
+  std::size_t pos = 0;
+  while (pos < path.size()) {
+    if (path[pos] == '.') {
+      ++pos;
+    } else if (path[pos] == '[') {
+      const std::size_t close = path.find(']', pos);
+      if (close == std::string::npos || !(node->is_array() || (make && node->is_null())))
+        return nullptr;
+      const std::size_t i = std::strtoul(path.c_str() + pos + 1, nullptr, 10);
+      if (!make && i >= node->size()) return nullptr;
+      node = &(*node)[i];
+      pos = close + 1;
+    } else {
+      const std::size_t end = std::min(path.find_first_of(".[", pos), path.size());
+      const std::string key = path.substr(pos, end - pos);
+      if (!make && (!node->is_object() || !node->contains(key))) return nullptr;
+      node = &(*node)[key];
+      pos = end;
+    }
+  }
+  return node;
 }
 
 nlohmann::json marker(int k) { return marker_text(k); }

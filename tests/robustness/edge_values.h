@@ -33,8 +33,13 @@ std::vector<Edge> whole_edges(long lo, long hi);
 std::vector<Edge> pair_edges(double lo, double hi);
 
 // Pairs of edges for a range's two ends (a sweep's from and to, a continuation's start and to):
-// the whole range, one ulp in from one or both ends, one ulp wide at either end, one ulp past either end.
+// the whole range, one ulp in from one or both ends, one ulp wide at either end, one ulp past
+// either end.
 std::vector<std::pair<Edge, Edge>> span_pairs(double lo, double hi);
+
+// The value at a field path of a request ("model.pellets[0].F0", "sweep.parameter2.count"), or
+// null where the request holds none; with `make`, made where missing (and what leads to it).
+nlohmann::json* field_at(nlohmann::json& request, const std::string& path, bool make = false);
 
 // A field that holds edge values while a request is built: the request's JSON text with every
 // marker replaced by its literal (so that "1e400" and "-0" reach the reader as written).
