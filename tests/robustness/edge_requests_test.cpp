@@ -159,8 +159,8 @@ class Fuzz {
 
   // `request` with the edge values in place of its markers.
   void add(Kind kind, const json& request, const std::vector<Edge>& edges) {
-    const double slot = std::fmod(static_cast<double>(seen_++) * 0.6180339887498949, 1.0);
-    if (slot >= keep_) return;
+    const double place = std::fmod(static_cast<double>(seen_++) * 0.6180339887498949, 1.0);
+    if (place >= keep_) return;
     const std::string body = with_edges(request, edges);
     const EdgeOutcome out =
         kind == Kind::orbit ? orbit_request(body, limits_) : sweep_request(body, limits_);
