@@ -3,7 +3,8 @@
 // they can sweep or continue, at each edge of its bound (edge_values.h) and in pairs of edges,
 // from a few base scenes, carried out as the server carries them out (edge_requests.h) with a
 // deadline of 300 ms. Deterministic; VIBRO_EDGE_FRACTION in (0, 1] checks that share of the
-// requests (the sanitizer build checks a quarter by default).
+// requests (the sanitizer build checks a quarter by default); VIBRO_EDGE_TRACE set prints each
+// request before it runs.
 #include "tests/robustness/edge_requests.h"
 
 #include <gtest/gtest.h>
@@ -162,6 +163,8 @@ class Fuzz {
     const double place = std::fmod(static_cast<double>(seen_++) * 0.6180339887498949, 1.0);
     if (place >= keep_) return;
     const std::string body = with_edges(request, edges);
+    // A request that crashes the test is named only if it is written before it runs.
+    if (trace_) std::cout << "[ request  ] " << body << std::endl;
     const EdgeOutcome out =
         kind == Kind::orbit ? orbit_request(body, limits_) : sweep_request(body, limits_);
     ++run_;
@@ -193,6 +196,7 @@ class Fuzz {
  private:
   std::string name_;
   double keep_;
+  bool trace_ = std::getenv("VIBRO_EDGE_TRACE") != nullptr;
   server::Limits limits_ = limits();
   long seen_ = 0, run_ = 0, accepted_ = 0;
   double slowest_ms_ = 0.0;
