@@ -25,8 +25,11 @@ std::optional<ChatterSeries> chatter_series(const Model& model, double t, double
   if (!(c.r < 1.0)) return std::nullopt;
   c.t_next = u / a_away + u / std::sqrt(a_away * a_toward);
   c.t_star = t + c.t_next / (1.0 - c.r);
-  c.impacts = static_cast<int>(
-      std::ceil(std::log(std::numeric_limits<double>::epsilon()) / std::log(c.r)));
+  // r a hair below 1 asks for some 10^17 impacts: counted up to what an int holds.
+  const double impacts =
+      std::ceil(std::log(std::numeric_limits<double>::epsilon()) / std::log(c.r));
+  c.impacts = impacts < std::numeric_limits<int>::max() ? static_cast<int>(impacts)
+                                                        : std::numeric_limits<int>::max();
   return c;
 }
 

@@ -63,8 +63,9 @@ class ScaledMap {
     Point pt;
     pt.v = v;
     const double p = value(v);
+    // The model at p must be valid; the one seen from the section's phase has its psi shifted.
+    if (validate_model(plain(p))) return pt;
     const Model m = at(p);
-    if (validate_model(m)) return pt;
     pt.map = stroboscopic_map(m, options_, periods_, state(v));
     if (!pt.map.ok) return pt;
     const int n = size();

@@ -108,7 +108,8 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
     return FieldError{"model.pellets", "a periodic orbit needs a periodic force: no pellet has F0 ≠ 0 and Omega > 0"};
   for (int i = 0; i < model.size(); ++i) {
     const Forcing& f = model.pellets[i].force;
-    if (!f.active()) continue;
+    // A constant force (Omega = 0, F0 cos psi) repeats with every period.
+    if (!f.active() || f.Omega == 0.0) continue;
     const double cycles = f.Omega * T / kTwoPi;
     if (!(f.Omega > 0.0) || std::abs(cycles - std::round(cycles)) > 1e-9 * cycles)
       return FieldError{"model.pellets[" + std::to_string(i) + "].Omega",

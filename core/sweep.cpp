@@ -230,7 +230,10 @@ Chain chain_at(const SweepSpec& spec, int c) {
 }  // namespace
 
 double SweepAxis::value(int i) const {
-  return count <= 1 ? from : from + (to - from) * static_cast<double>(i) / (count - 1);
+  if (count <= 1) return from;
+  if (i == count - 1) return to;  // from + (to − from) may round past it
+  const double v = from + (to - from) * static_cast<double>(i) / (count - 1);
+  return std::clamp(v, std::min(from, to), std::max(from, to));
 }
 
 double sweep_period(const Model& model) {

@@ -1,6 +1,7 @@
 #include "server/jobs.h"
 
 #include <algorithm>
+#include <chrono>
 #include <cmath>
 #include <cstdio>
 #include <random>
@@ -111,9 +112,24 @@ void Jobs::forget_old() {
 JobState Jobs::run(Job& job) const {
   const Scene& scene = job.scene;
   if (job.kind == JobKind::orbit) {
-    auto progress = [&job](double done) { job.done = std::lround(1000.0 * done); };
+    // A continuation answers to the job's wall-clock budget as a sweep does: past it, the
+    // branch stops after the point in hand and the job fails, saying so.
+    const auto started = std::chrono::steady_clock::now();
+    bool over_budget = false;
+    auto progress = [&](double done) {
+      job.done = std::lround(1000.0 * done);
+      const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - started;
+      if (spent.count() > options_.budget_ms && !job.cancel) over_budget = job.cancel = true;
+    };
     job.orbit = std::make_shared<OrbitResult>(
         run_orbit_request(scene.model, scene.sim, *scene.periodic_orbit, progress, &job.cancel));
+    if (over_budget) {
+      job.error = FieldError{"periodic_orbit.continuation.max_points",
+                             "the continuation took longer than the job's budget of " +
+                                 std::to_string(std::lround(options_.budget_ms / 1000.0)) +
+                                 " s: ask fewer points or a shorter range"};
+      return JobState::failed;
+    }
     return job.cancel ? JobState::cancelled : JobState::done;
   }
   SweepControl control;

@@ -56,7 +56,7 @@ struct JobOptions {
   std::size_t kept = 32;   // and at most this many finished jobs
   std::string id_prefix;   // the ids' first characters ("r2-" for replica 2 of a front door)
   // A sweep's bounds (SweepControl): the points it may keep and its wall clock, ms; past either
-  // it fails, naming the field, and keeps nothing.
+  // it fails, naming the field, and keeps nothing. A continuation has the same wall clock.
   long max_points = 0;
   double budget_ms = std::numeric_limits<double>::infinity();
   // The points finished sweeps hold in all, 0: no bound; past it the oldest are forgotten.

@@ -252,6 +252,18 @@ TEST(PeriodicOrbit, BadRequestsNameTheirField) {
   EXPECT_FALSE(validate_orbit(impact_oscillator(5.0), {}));
 }
 
+// A force with Omega = 0 is the constant F0 cos(psi): it repeats with every period, so a pellet
+// pushed by one leaves the scene's orbits to seek. Forces that do not repeat are refused.
+TEST(PeriodicOrbit, AConstantForceRepeatsWithEveryPeriod) {
+  Model m = impact_oscillator(5.0);
+  m.pellets.push_back({0.1, 2.0, 0.0, {0.05, 0.0, 0.0}});
+  EXPECT_FALSE(validate_orbit(m, {}));
+  m.pellets[1].force.Omega = 2.5;  // half the first force's frequency: it does not repeat
+  EXPECT_EQ(validate_orbit(m, {})->field, "model.pellets[1].Omega");
+  m.pellets[1].force.Omega = -5.0;  // periodic forces turn forward (Omega > 0)
+  EXPECT_EQ(validate_orbit(m, {})->field, "model.pellets[1].Omega");
+}
+
 // A guess is a starting state and is bounded as phi0 and dphi0 are: far past them an angle keeps
 // no digits below the turn (a guess of 1e17 rad once hung the search).
 TEST(PeriodicOrbit, GuessesAreBoundedLikeStartingStates) {
@@ -389,6 +401,26 @@ TEST(OrbitContinuation, BadSpecsNameTheirField) {
             "periodic_orbit.continuation.to");
   EXPECT_EQ(validate_continuation(m, {"model.pellets[0].Omega", 6.0, 1})->field,
             "periodic_orbit.continuation.max_points");
+}
+
+// Every point of a branch is a valid model: the continuation checks the model at each value, not
+// the model seen from its section's phase (whose psi is shifted by Omega times the phase). From
+// psi at its bound of -1e4 the branch turns the other way first.
+TEST(OrbitContinuation, StaysWhereTheModelIsValid) {
+  Model m = impact_oscillator(5.0);
+  m.pellets[0].force.psi = -1e4;
+  SimOptions o;
+  o.rtol = 1e-9;
+  o.atol = 1e-12;
+  OrbitSpec spec;
+  spec.transient = 40;
+  const PeriodicOrbit orbit = find_periodic_orbit(m, o, spec);
+  ASSERT_TRUE(orbit.converged) << orbit.message;
+  const ContinuationSpec to{"model.pellets[0].psi", 1e4, 6};
+  ASSERT_FALSE(validate_continuation(m, to));
+  const OrbitBranch b = continue_orbit(m, o, orbit, to);
+  ASSERT_FALSE(b.points.empty()) << b.message;
+  for (const BranchPoint& p : b.points) EXPECT_GE(p.value, -1e4);
 }
 
 }  // namespace

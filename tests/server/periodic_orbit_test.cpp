@@ -138,3 +138,35 @@ TEST_F(PeriodicOrbitApi, AContinuationRunsAsAJobAndGivesABranch) {
 
 }  // namespace
 }  // namespace vibro::testing
+
+namespace vibro::testing {
+namespace {
+
+// A continuation answers to the job's wall-clock budget as a sweep does (a continuation of m
+// toward 1e-300 was still running after 100 s): past it the job fails, naming the field.
+TEST(PeriodicOrbitJobs, AContinuationIsBoundedByTheJobsWallClockBudget) {
+  server::ServerConfig config;
+  config.limits.sweep_seconds = 0.001;
+  TestServer server(config);
+  auto c = server.client();
+  json s = impact_oscillator_orbit();
+  s["periodic_orbit"]["continuation"] = {
+      {"parameter", "model.pellets[0].Omega"}, {"to", 6.3}, {"max_points", 30}};
+  auto res = c.Post("/api/periodic-orbit", s.dump(), "application/json");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  json status;
+  for (int k = 0; k < 600; ++k) {
+    auto poll = c.Get(location.c_str());
+    ASSERT_EQ(poll->status, 200);
+    status = json::parse(poll->body);
+    if (status["status"] != "queued" && status["status"] != "running") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_EQ(status["status"], "failed") << status.dump();
+  EXPECT_EQ(status["field"], "periodic_orbit.continuation.max_points") << status.dump();
+}
+
+}  // namespace
+}  // namespace vibro::testing
