@@ -18,10 +18,15 @@ namespace {
 // (the state before it becomes the state after it), so the phase is kept away from the impacts.
 class ScaledMap {
  public:
-  ScaledMap(const Model& model, const SimOptions& options, int periods, const std::string& parameter,
-            double p0, double span)
-      : model_(model), options_(options), periods_(periods), parameter_(parameter), p0_(p0),
-        span_(span), time_(time_scale(model)) {}
+  ScaledMap(const Model& model, const SimOptions& options, int periods,
+            const std::string& parameter, double p0, double span)
+      : model_(model),
+        options_(options),
+        periods_(periods),
+        parameter_(parameter),
+        p0_(p0),
+        span_(span),
+        time_(time_scale(model)) {}
 
   // A point on or near the branch: the map there, its residual and Jacobian in scaled unknowns.
   struct Point {
@@ -248,9 +253,9 @@ Clearance clearance(const RunResult& run, double span) {
   return c;
 }
 
-// How near the motion is to a grazing, rad (speeds times the time scale): the slowest impact, or the
-// turn that comes nearest to a limiter. At zero an impact appears or vanishes, and the map has a
-// square root there that Newton's method cannot step across.
+// How near the motion is to a grazing, rad (speeds times the time scale): the slowest impact, or
+// the turn that comes nearest to a limiter. At zero an impact appears or vanishes, and the map has
+// a square root there that Newton's method cannot step across.
 double grazing_distance(const Model& model, const RunResult& run) {
   const double time = time_scale(model);
   double d = INFINITY;

@@ -56,7 +56,8 @@ Clock::time_point deadline_in(double deadline_ms) {
 // The options with what is left until `deadline` as their deadline.
 SimOptions until(SimOptions options, Clock::time_point deadline) {
   if (deadline != Clock::time_point::max())
-    options.deadline_ms = std::chrono::duration<double, std::milli>(deadline - Clock::now()).count();
+    options.deadline_ms =
+        std::chrono::duration<double, std::milli>(deadline - Clock::now()).count();
   return options;
 }
 
@@ -150,8 +151,8 @@ MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int per
   if (J.out_of_time) {
     p.ok = false;
     p.run.stats.termination = Termination::deadline;
-    p.run.stats.message = "took longer than its deadline of " + number(options.deadline_ms) +
-                          " ms with its Jacobian";
+    p.run.stats.message =
+        "took longer than its deadline of " + number(options.deadline_ms) + " ms with its Jacobian";
   } else if (J.unsupported.empty()) {
     p.jacobian = J.matrix;
   } else {

@@ -58,11 +58,10 @@ class Simulation {
         energy_(model, y_),
         recorder_(model, options.record, options.record_until, options.max_samples),
         stepper_(stepper ? std::move(stepper)
-                         : make_stepper(options.method,
-                                        StepperOptions{options.rtol, options.atol,
-                                                       options.longest_step_scale *
-                                                           longest_step(model),
-                                                       options.auto_explicit})),
+                         : make_stepper(options.method, StepperOptions{options.rtol, options.atol,
+                                                                       options.longest_step_scale *
+                                                                           longest_step(model),
+                                                                       options.auto_explicit})),
         times_(std::max(options.samples_per_step, 2) + 1),
         states_(times_.size(), Vec(y_.size())) {}
 

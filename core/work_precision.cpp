@@ -66,7 +66,8 @@ WorkPrecisionReport work_precision(const Model& model, const SimOptions& base,
   // The deadline of the next run: its own, within what the whole measurement has left.
   auto within = [&] {
     const double spent =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
+            .count();
     return std::min(base.deadline_ms, options.deadline_ms - spent);
   };
   WorkPrecisionReport report;

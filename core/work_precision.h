@@ -51,7 +51,7 @@ struct WorkPrecisionReport {
   ErrorReference reference = ErrorReference::reference_run;
   std::string reference_description;
   std::vector<WorkPrecisionPoint> points;  // by method, then by decreasing rtol
-  std::string message;  // why points are missing, if they are
+  std::string message;                     // why points are missing, if they are
 };
 
 // Which exact reference applies to a model.

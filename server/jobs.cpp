@@ -118,7 +118,8 @@ JobState Jobs::run(Job& job) const {
     bool over_budget = false;
     auto progress = [&](double done) {
       job.done = std::lround(1000.0 * done);
-      const std::chrono::duration<double, std::milli> spent = std::chrono::steady_clock::now() - started;
+      const std::chrono::duration<double, std::milli> spent =
+          std::chrono::steady_clock::now() - started;
       if (spent.count() > options_.budget_ms && !job.cancel) over_budget = job.cancel = true;
     };
     job.orbit = std::make_shared<OrbitResult>(

@@ -7,11 +7,11 @@
 #include <atomic>
 #include <cctype>
 #include <cerrno>
-#include <cstring>
-#include <limits>
 #include <chrono>
 #include <csignal>
 #include <cstdio>
+#include <cstring>
+#include <limits>
 #include <optional>
 #include <string_view>
 #include <thread>
@@ -235,7 +235,10 @@ int Service::bind(std::string* why) {
                    : state_->http.bind_to_port(c.host, c.port) ? c.port
                                                                : -1;
   if (port > 0) state_->http.widen_backlog();
-  if (port < 0 && why) *why = errno == EADDRINUSE ? "address in use" : errno ? std::strerror(errno) : "no such address";
+  if (port < 0 && why)
+    *why = errno == EADDRINUSE ? "address in use"
+           : errno             ? std::strerror(errno)
+                               : "no such address";
   return port;
 }
 

@@ -2,10 +2,11 @@
 // against central differences of plain runs, across every kind of event; period-1 and period-2
 // motions of the impact oscillator found, stable and unstable, and reached by long runs; bad
 // requests refused with the field named.
+#include "core/periodic_orbit.h"
+
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
-
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -14,7 +15,6 @@
 
 #include "core/monodromy.h"
 #include "core/orbit_continuation.h"
-#include "core/periodic_orbit.h"
 #include "core/simulate.h"
 #include "tests/core/impact_oscillator.h"
 

@@ -19,6 +19,20 @@ httplib::Result post(httplib::Client& c, const json& scene) {
   return c.Post("/api/periodic-orbit", scene.dump(), "application/json");
 }
 
+// The job's status once it is neither queued nor running, polled every 50 ms at most `polls`
+// times (the last status then); null if a poll fails.
+json status_when_ended(httplib::Client& c, const std::string& location, int polls) {
+  json status;
+  for (int k = 0; k < polls; ++k) {
+    auto poll = c.Get(location.c_str());
+    if (!poll || poll->status != 200) return nullptr;
+    status = json::parse(poll->body);
+    if (status["status"] != "queued" && status["status"] != "running") break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  return status;
+}
+
 class PeriodicOrbitApi : public SharedServerTest {};
 
 TEST_F(PeriodicOrbitApi, TheImpactOscillatorsPeriodOneMotionIsStable) {
@@ -103,14 +117,8 @@ TEST_F(PeriodicOrbitApi, AContinuationRunsAsAJobAndGivesABranch) {
   const std::string location = res->get_header_value("Location");
   EXPECT_EQ(location, "/api/jobs/" + json::parse(res->body)["id"].get<std::string>());
 
-  json status;
-  for (int k = 0; k < 1200; ++k) {
-    auto poll = c.Get(location.c_str());
-    ASSERT_EQ(poll->status, 200);
-    status = json::parse(poll->body);
-    if (status["status"] != "queued" && status["status"] != "running") break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
+  const json status = status_when_ended(c, location, 1200);
+  ASSERT_FALSE(status.is_null());
   ASSERT_EQ(status["status"], "done") << status.dump();
   auto result = c.Get((location + "/result").c_str());
   ASSERT_EQ(result->status, 200) << result->body;
@@ -156,14 +164,8 @@ TEST(PeriodicOrbitJobs, AContinuationIsBoundedByTheJobsWallClockBudget) {
   ASSERT_TRUE(res);
   ASSERT_EQ(res->status, 202) << res->body;
   const std::string location = res->get_header_value("Location");
-  json status;
-  for (int k = 0; k < 600; ++k) {
-    auto poll = c.Get(location.c_str());
-    ASSERT_EQ(poll->status, 200);
-    status = json::parse(poll->body);
-    if (status["status"] != "queued" && status["status"] != "running") break;
-    std::this_thread::sleep_for(std::chrono::milliseconds(50));
-  }
+  const json status = status_when_ended(c, location, 600);
+  ASSERT_FALSE(status.is_null());
   ASSERT_EQ(status["status"], "failed") << status.dump();
   EXPECT_EQ(status["field"], "periodic_orbit.continuation.max_points") << status.dump();
 }
