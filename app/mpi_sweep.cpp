@@ -33,7 +33,8 @@ thread_local int t_slot = -1;
 
 extern "C" void on_crash(int signal) {
   if (t_slot >= 0 && g_running_length[t_slot] > 0) {
-    [[maybe_unused]] const auto n = write(STDERR_FILENO, g_running[t_slot], g_running_length[t_slot]);
+    [[maybe_unused]] const auto n =
+        write(STDERR_FILENO, g_running[t_slot], g_running_length[t_slot]);
   } else {
     static const char what[] = "vibro sweep: a process of the MPI job crashed between runs\n";
     [[maybe_unused]] const auto n = write(STDERR_FILENO, what, sizeof what - 1);
@@ -89,7 +90,8 @@ struct Worker {
       if (chunk.empty()) return;
       for (int c : chunk) {
         try {
-          append_chain(records, {c, run_sweep_chain(model, options, spec, c, nullptr, {}, before_run)});
+          append_chain(records,
+                       {c, run_sweep_chain(model, options, spec, c, nullptr, {}, before_run)});
         } catch (const std::exception& e) {
           std::string why(g_running[slot], g_running_length[slot]);
           if (!why.empty()) why.pop_back();
@@ -146,7 +148,8 @@ struct Coordinator {
       std::int32_t head[2];
       std::memcpy(head, bytes.data(), sizeof head);
       const std::string failure = bytes.substr(sizeof head, head[1]);
-      for (ChainRuns& chain : read_chains(std::string_view(bytes).substr(sizeof head + head[1])).chains) {
+      for (ChainRuns& chain :
+           read_chains(std::string_view(bytes).substr(sizeof head + head[1])).chains) {
         if (control.chain_done) control.chain_done(chain.chain, chain.runs);
         done += static_cast<long>(chain.runs.size());
         if (control.progress) control.progress(done, total);

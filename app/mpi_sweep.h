@@ -1,12 +1,12 @@
 // `vibro sweep` over the processes of an MPI job (mpirun, srun): rank 0 hands out chunks of
-// chains (core/sweep.h) to every worker thread of every rank, the biggest first and smaller as
-// the work runs out, gathers their runs as they finish, and returns the result, identical to a
-// sweep in one process. Built only when Open MPI is found (VIBRO_HAVE_MPI).
+// chains (core/analysis/sweep.h) to every worker thread of every rank, the biggest first and
+// smaller as the work runs out, gathers their runs as they finish, and returns the result,
+// identical to a sweep in one process. Built only when Open MPI is found (VIBRO_HAVE_MPI).
 #pragma once
 
 #include <optional>
 
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 
 namespace vibro {
 

@@ -22,7 +22,7 @@
 #include "app/progress_bar.h"
 #include "app/scene_options.h"
 #include "app/usage.h"
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 #include "io/sweep_checkpoint.h"
 #include "io/sweep_json.h"
 #include "io/whole_file.h"

@@ -7,7 +7,7 @@
 #include <functional>
 #include <string>
 
-#include "core/validate.h"
+#include "core/run/validate.h"
 
 namespace vibro {
 

@@ -7,7 +7,7 @@
 #include "app/commands.h"
 #include "app/scene_options.h"
 #include "app/usage.h"
-#include "core/work_precision.h"
+#include "core/analysis/work_precision.h"
 #include "io/whole_file.h"
 #include "io/work_precision_json.h"
 #include "render/figure.h"

@@ -7,15 +7,15 @@
 #include <string>
 
 #include "bench_scenes.h"
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 
 namespace vibro::bench {
 namespace {
 
-constexpr const char* kPresets[] = {"paper",          "chatter",           "frictionless-elastic",
-                                    "grazing",        "high-frequency",    "impact-oscillator",
-                                    "loop",           "mass-ratio",        "plastic-limiter",
-                                    "rest-in-cone",   "stiff-friction",    "tiny-radius"};
+constexpr const char* kPresets[] = {"paper",        "chatter",        "frictionless-elastic",
+                                    "grazing",      "high-frequency", "impact-oscillator",
+                                    "loop",         "mass-ratio",     "plastic-limiter",
+                                    "rest-in-cone", "stiff-friction", "tiny-radius"};
 constexpr Method kMethods[] = {Method::dopri5, Method::dop853, Method::radau5, Method::automatic};
 constexpr double kRtols[] = {1e-6, 1e-9, 1e-12};
 

@@ -10,7 +10,7 @@
 #include <cstring>
 
 #include "bench_scenes.h"
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "render/figure.h"
 #include "render/png.h"
 #include "render/run_plan.h"
@@ -26,8 +26,7 @@ cairo_surface_t* paper_surface() {
     const Scene scene = preset_scene("paper");
     const RunPlan plan = plan_run(scene.figure, scene.sim, scene.model.size());
     return testing::decode_png(render_figure(scene.figure, scene.model,
-                                             simulate(scene.model, plan.options),
-                                             ImageFormat::png)
+                                             simulate(scene.model, plan.options), ImageFormat::png)
                                    .bytes);
   }();
   static cairo_surface_t* surface = cairo_image_surface_create_for_data(

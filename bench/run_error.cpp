@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 
 namespace vibro::bench {
 namespace {

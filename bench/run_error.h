@@ -2,9 +2,9 @@
 // rtol 1e-13): the times of the first impacts, and the final state.
 #pragma once
 
-#include "core/model.h"
-#include "core/result.h"
-#include "core/sim_options.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
+#include "core/run/sim_options.h"
 
 namespace vibro::bench {
 

@@ -7,7 +7,7 @@
 #include <string>
 #include <vector>
 
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
 
 namespace vibro::bench {
 

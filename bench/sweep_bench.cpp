@@ -4,7 +4,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_scenes.h"
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 
 namespace vibro::bench {
 namespace {
@@ -27,12 +27,18 @@ void BM_SweepImpactOscillator(benchmark::State& state) {
     for (const SweepRun& run : r.runs) points += static_cast<long>(run.points.size());
     benchmark::DoNotOptimize(points);
   }
-  state.counters["runs_per_s"] =
-      benchmark::Counter(1000.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
-  state.counters["points_per_s"] = benchmark::Counter(
-      static_cast<double>(points) * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["runs_per_s"] = benchmark::Counter(
+      1000.0 * static_cast<double>(state.iterations()), benchmark::Counter::kIsRate);
+  state.counters["points_per_s"] =
+      benchmark::Counter(static_cast<double>(points) * static_cast<double>(state.iterations()),
+                         benchmark::Counter::kIsRate);
 }
-BENCHMARK(BM_SweepImpactOscillator)->Arg(1)->Arg(2)->Unit(benchmark::kSecond)->UseRealTime()->Iterations(3);
+BENCHMARK(BM_SweepImpactOscillator)
+    ->Arg(1)
+    ->Arg(2)
+    ->Unit(benchmark::kSecond)
+    ->UseRealTime()
+    ->Iterations(3);
 
 }  // namespace
 }  // namespace vibro::bench

@@ -5,7 +5,7 @@
 #include <string>
 
 #include "bench_scenes.h"
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "io/presets.h"
 
 namespace vibro::bench {
@@ -31,10 +31,9 @@ int main(int argc, char** argv) {
   for (const vibro::PresetText& p : vibro::presets()) {
     const std::string name(p.name);
     for (bool check : {false, true}) {
-      benchmark::RegisterBenchmark(("Trust/" + name + (check ? "/checked" : "/unchecked")).c_str(),
-                                   [name, check](benchmark::State& s) {
-                                     vibro::bench::run_preset(s, name, check);
-                                   })
+      benchmark::RegisterBenchmark(
+          ("Trust/" + name + (check ? "/checked" : "/unchecked")).c_str(),
+          [name, check](benchmark::State& s) { vibro::bench::run_preset(s, name, check); })
           ->Unit(benchmark::kMillisecond);
     }
   }

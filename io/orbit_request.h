@@ -7,11 +7,11 @@
 #include <functional>
 #include <optional>
 
-#include "core/model.h"
-#include "core/orbit_continuation.h"
-#include "core/periodic_orbit.h"
-#include "core/sim_options.h"
-#include "core/validate.h"
+#include "core/analysis/orbit_continuation.h"
+#include "core/analysis/periodic_orbit.h"
+#include "core/model/model.h"
+#include "core/run/sim_options.h"
+#include "core/run/validate.h"
 
 namespace vibro {
 
@@ -32,7 +32,7 @@ struct OrbitResult {
 };
 
 // Finds the orbit, then follows it when the request asks. `progress` (0 to 1) and `cancel` are
-// the continuation's (core/orbit_continuation.h). Call validate_orbit_request first.
+// the continuation's (core/analysis/orbit_continuation.h). Call validate_orbit_request first.
 OrbitResult run_orbit_request(const Model& model, const SimOptions& options,
                               const OrbitRequest& request,
                               const std::function<void(double done)>& progress = {},

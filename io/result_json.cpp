@@ -36,8 +36,16 @@ std::string angle_text(double phi) {
   if (std::abs(q) < 1e6 && std::abs(q - std::round(q)) < 1e-9 && std::round(q) != 0.0) {
     const long n = std::lround(q);
     long num = n, den = 4;
-    while (num % 2 == 0 && den > 1) { num /= 2; den /= 2; }
-    if (num == 1) s << "π"; else if (num == -1) s << "-π"; else s << num << "π";
+    while (num % 2 == 0 && den > 1) {
+      num /= 2;
+      den /= 2;
+    }
+    if (num == 1)
+      s << "π";
+    else if (num == -1)
+      s << "-π";
+    else
+      s << num << "π";
     if (den > 1) s << "/" << den;
     return s.str();
   }
@@ -102,8 +110,8 @@ std::string answer_sentence(const RunResult& run, const Model& model) {
       << " s (" << counts.str() << ").";
   } else {
     s << "The run ends at t = " << run.stats.t_reached
-      << " s while the system is still vibro-impact: " << last.index << " impacts ("
-      << counts.str() << "), the last at t = " << last.t << " s.";
+      << " s while the system is still vibro-impact: " << last.index << " impacts (" << counts.str()
+      << "), the last at t = " << last.t << " s.";
   }
   for (std::size_t i = 0; i < run.summary.final.size(); ++i) {
     const FinalState& f = run.summary.final[i];
@@ -123,7 +131,8 @@ std::string answer_sentence(const RunResult& run, const Model& model) {
         break;
     }
   }
-  if (run.stats.termination != Termination::completed) s << " The run stopped early: " << run.stats.message << ".";
+  if (run.stats.termination != Termination::completed)
+    s << " The run stopped early: " << run.stats.message << ".";
   s << " " << trust_sentence(run.stats);
   return s.str();
 }
@@ -168,17 +177,14 @@ json result_to_json(const RunResult& run, const Model& model) {
     finals.push_back(fj);
   }
   const Summary& sm = run.summary;
-  json summary = {{"limiter_impacts", sm.limiter_impacts},
-                  {"collisions", sm.collisions},
-                  {"chatter_sequences", sm.chatter_sequences},
-                  {"impacts_by_limiter", sm.impacts_by_limiter},
-                  {"ends_vibro_impact", sm.ends_vibro_impact},
-                  {"final", finals},
-                  {"answer", answer_sentence(run, model)}};
-  summary["last_impact"] =
-      sm.last_impact.index > 0
-          ? json{{"index", sm.last_impact.index}, {"t", finite_number(sm.last_impact.t)}}
-          : json(nullptr);
+  json summary = {
+      {"limiter_impacts", sm.limiter_impacts},     {"collisions", sm.collisions},
+      {"chatter_sequences", sm.chatter_sequences}, {"impacts_by_limiter", sm.impacts_by_limiter},
+      {"ends_vibro_impact", sm.ends_vibro_impact}, {"final", finals},
+      {"answer", answer_sentence(run, model)}};
+  summary["last_impact"] = sm.last_impact.index > 0 ? json{{"index", sm.last_impact.index},
+                                                           {"t", finite_number(sm.last_impact.t)}}
+                                                    : json(nullptr);
   json stats = stats_to_json(run.stats);
   stats["events"] = run.events.size();
   json warnings = json::array();
@@ -195,7 +201,8 @@ json result_to_json(const RunResult& run, const Model& model) {
     json exponents = json::array();
     for (double l : run.lyapunov->exponents) exponents.push_back(finite_number(l));
     j["lyapunov"] = {{"exponents", exponents}, {"span", finite_number(run.lyapunov->span)}};
-    if (!run.lyapunov->unsupported.empty()) j["lyapunov"]["unsupported"] = run.lyapunov->unsupported;
+    if (!run.lyapunov->unsupported.empty())
+      j["lyapunov"]["unsupported"] = run.lyapunov->unsupported;
   }
   if (!run.tracks.empty()) {
     json tracks = json::array();

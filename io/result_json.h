@@ -3,8 +3,8 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/model.h"
-#include "core/result.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
 
 namespace vibro {
 

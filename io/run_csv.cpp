@@ -40,7 +40,8 @@ std::string run_csv(const RunResult& run, RunTable table) {
   for (const PelletTrack& track : run.tracks)
     for (const Branch& b : track.branches)
       for (const Sample& s : b.samples)
-        out << s.t << ',' << track.pellet << ',' << b.index << ',' << s.phi << ',' << s.dphi << '\n';
+        out << s.t << ',' << track.pellet << ',' << b.index << ',' << s.phi << ',' << s.dphi
+            << '\n';
   return out.str();
 }
 

@@ -63,14 +63,18 @@ Model read_model(const json& j, const SceneLimits& limits) {
   m.mu_s = f.number("mu_s");
   m.k_c = f.number("k_c", 1.0);
   if (auto law = f.string("friction", 32)) {
-    if (*law == "paper") m.friction = FrictionLaw::paper;
-    else if (*law == "bilateral") m.friction = FrictionLaw::bilateral;
-    else throw FieldException("model.friction", "must be \"paper\" or \"bilateral\", got \"" + *law + "\"");
+    if (*law == "paper")
+      m.friction = FrictionLaw::paper;
+    else if (*law == "bilateral")
+      m.friction = FrictionLaw::bilateral;
+    else
+      throw FieldException("model.friction",
+                           "must be \"paper\" or \"bilateral\", got \"" + *law + "\"");
   }
   const json* pellets = f.array("pellets", limits.sim.max_pellets);
   if (!pellets || pellets->empty()) {
-    throw FieldException("model.pellets", "must list 1 to " +
-                                              std::to_string(limits.sim.max_pellets) + " pellets");
+    throw FieldException("model.pellets",
+                         "must list 1 to " + std::to_string(limits.sim.max_pellets) + " pellets");
   }
   for (std::size_t i = 0; i < pellets->size(); ++i) {
     m.pellets.push_back(read_pellet((*pellets)[i], item("model.pellets", i)));
@@ -89,9 +93,9 @@ Method read_method(const std::string& name) {
   if (name == "dop853") return Method::dop853;
   if (name == "radau5") return Method::radau5;
   if (name == "auto") return Method::automatic;
-  throw FieldException("solver.method",
-                       "must be one of \"auto\", \"dopri5\", \"dop853\", \"radau5\", got \"" +
-                           name + "\"");
+  throw FieldException(
+      "solver.method",
+      "must be one of \"auto\", \"dopri5\", \"dop853\", \"radau5\", got \"" + name + "\"");
 }
 
 void read_solver(const json& j, SimOptions& o) {
@@ -114,7 +118,6 @@ std::optional<AxisLimits> axis_limits(Fields& f, const char* name) {
   return AxisLimits{lo, hi};
 }
 
-
 // The instant a mechanism panel shows, in [0, t_end] s.
 double read_instant(Fields& f, double t_end) {
   const double t = f.number("t", 0.0);
@@ -130,12 +133,19 @@ PlotSpec read_plot(const json& j, const std::string& path, int pellets, double t
   const auto kind = f.string("kind", 32);
   const char* kinds = "\"phase\", \"time\", \"cylinder\", \"mechanism\" or \"work_precision\"";
   if (!kind) throw FieldException(f.path("kind"), std::string("is required: ") + kinds);
-  if (*kind == "phase") p.kind = PlotKind::phase;
-  else if (*kind == "time") p.kind = PlotKind::time;
-  else if (*kind == "cylinder") p.kind = PlotKind::cylinder;
-  else if (*kind == "mechanism") p.kind = PlotKind::mechanism;
-  else if (*kind == "work_precision") p.kind = PlotKind::work_precision;
-  else throw FieldException(f.path("kind"), std::string("must be ") + kinds + ", got \"" + *kind + "\"");
+  if (*kind == "phase")
+    p.kind = PlotKind::phase;
+  else if (*kind == "time")
+    p.kind = PlotKind::time;
+  else if (*kind == "cylinder")
+    p.kind = PlotKind::cylinder;
+  else if (*kind == "mechanism")
+    p.kind = PlotKind::mechanism;
+  else if (*kind == "work_precision")
+    p.kind = PlotKind::work_precision;
+  else
+    throw FieldException(f.path("kind"),
+                         std::string("must be ") + kinds + ", got \"" + *kind + "\"");
 
   if (p.kind == PlotKind::time) {
     if (const json* list = f.array("pellets", 64)) {
@@ -150,7 +160,8 @@ PlotSpec read_plot(const json& j, const std::string& path, int pellets, double t
     // Every pellet, at one instant: no pellet to pick and no window.
     p.t = read_instant(f, t_end);
   } else if (p.kind != PlotKind::work_precision) {
-    if (const json* v = f.value("pellet")) p.pellet = index_in(*v, f.path("pellet"), pellets, "pellet");
+    if (const json* v = f.value("pellet"))
+      p.pellet = index_in(*v, f.path("pellet"), pellets, "pellet");
   }
   if (p.kind != PlotKind::mechanism) {
     p.t_from = f.number("t_from", 0.0);
@@ -162,7 +173,8 @@ PlotSpec read_plot(const json& j, const std::string& path, int pellets, double t
     if (const json* list = f.array("branches", 10000)) {
       for (std::size_t i = 0; i < list->size(); ++i) {
         const long b = as_integer((*list)[i], item(f.path("branches"), i));
-        if (b < 1) throw FieldException(item(f.path("branches"), i), "branches are numbered from 1");
+        if (b < 1)
+          throw FieldException(item(f.path("branches"), i), "branches are numbered from 1");
         p.branches.push_back(static_cast<int>(b));
       }
     }
@@ -205,8 +217,10 @@ int text_depth(std::string_view text) {
   for (std::size_t i = 0; i < text.size(); ++i) {
     const char c = text[i];
     if (in_string) {
-      if (c == '\\') ++i;  // the escaped character cannot end the string
-      else if (c == '"') in_string = false;
+      if (c == '\\')
+        ++i;  // the escaped character cannot end the string
+      else if (c == '"')
+        in_string = false;
     } else if (c == '"') {
       in_string = true;
     } else if (c == '[' || c == '{') {
@@ -256,7 +270,8 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
     if (s.figure.width < 64 || s.figure.width > limits.max_width)
       throw FieldException("width", "must be in [64, " + std::to_string(limits.max_width) + "] px");
     if (s.figure.height < 64 || s.figure.height > limits.max_height)
-      throw FieldException("height", "must be in [64, " + std::to_string(limits.max_height) + "] px");
+      throw FieldException("height",
+                           "must be in [64, " + std::to_string(limits.max_height) + "] px");
     if (auto e = validate_model(s.model, limits.sim)) return *e;
     if (auto e = validate_options(s.sim, s.model.size(), limits.sim)) return *e;
     if (s.sweep)
@@ -326,8 +341,10 @@ class DuplicateKeys {
     std::string p;
     for (std::size_t i = 0; i + 1 < frames_.size(); ++i) {
       const Frame& f = frames_[i];
-      if (f.object) p += (p.empty() ? "" : ".") + key_name(f.key);
-      else p += "[" + std::to_string(f.index) + "]";
+      if (f.object)
+        p += (p.empty() ? "" : ".") + key_name(f.key);
+      else
+        p += "[" + std::to_string(f.index) + "]";
     }
     return p.empty() ? p : p + ".";
   }
@@ -375,7 +392,6 @@ SceneOrError scene_from_text(std::string_view text, const SceneLimits& limits) {
   return scene_from_json(std::get<json>(parsed), limits);
 }
 
-
 json scene_to_json(const Scene& s) {
   json model = {{"g", s.model.g},
                 {"R", s.model.R},
@@ -385,8 +401,12 @@ json scene_to_json(const Scene& s) {
   if (s.model.mu_s) model["mu_s"] = *s.model.mu_s;
   json pellets = json::array();
   for (const Pellet& p : s.model.pellets) {
-    pellets.push_back({{"m", p.m}, {"phi0", p.phi0}, {"dphi0", p.dphi0}, {"F0", p.force.F0},
-                       {"Omega", p.force.Omega}, {"psi", p.force.psi}});
+    pellets.push_back({{"m", p.m},
+                       {"phi0", p.phi0},
+                       {"dphi0", p.dphi0},
+                       {"F0", p.force.F0},
+                       {"Omega", p.force.Omega},
+                       {"psi", p.force.psi}});
   }
   model["pellets"] = pellets;
   json limiters = json::array();
@@ -402,18 +422,42 @@ json scene_to_json(const Scene& s) {
   for (const PlotSpec& p : s.figure.plots) {
     json pj;
     switch (p.kind) {
-      case PlotKind::phase: pj["kind"] = "phase"; break;
-      case PlotKind::time: pj["kind"] = "time"; break;
-      case PlotKind::cylinder: pj["kind"] = "cylinder"; break;
-      case PlotKind::work_precision: pj["kind"] = "work_precision"; break;
-      case PlotKind::bifurcation: pj["kind"] = "bifurcation"; break;
-      case PlotKind::section: pj["kind"] = "section"; break;
-      case PlotKind::impact_map: pj["kind"] = "impact_map"; break;
-      case PlotKind::regime_map: pj["kind"] = "regime_map"; break;
-      case PlotKind::lyapunov: pj["kind"] = "lyapunov"; break;
-      case PlotKind::lyapunov_map: pj["kind"] = "lyapunov_map"; break;
-      case PlotKind::branch: pj["kind"] = "branch"; break;
-      case PlotKind::mechanism: pj["kind"] = "mechanism"; break;
+      case PlotKind::phase:
+        pj["kind"] = "phase";
+        break;
+      case PlotKind::time:
+        pj["kind"] = "time";
+        break;
+      case PlotKind::cylinder:
+        pj["kind"] = "cylinder";
+        break;
+      case PlotKind::work_precision:
+        pj["kind"] = "work_precision";
+        break;
+      case PlotKind::bifurcation:
+        pj["kind"] = "bifurcation";
+        break;
+      case PlotKind::section:
+        pj["kind"] = "section";
+        break;
+      case PlotKind::impact_map:
+        pj["kind"] = "impact_map";
+        break;
+      case PlotKind::regime_map:
+        pj["kind"] = "regime_map";
+        break;
+      case PlotKind::lyapunov:
+        pj["kind"] = "lyapunov";
+        break;
+      case PlotKind::lyapunov_map:
+        pj["kind"] = "lyapunov_map";
+        break;
+      case PlotKind::branch:
+        pj["kind"] = "branch";
+        break;
+      case PlotKind::mechanism:
+        pj["kind"] = "mechanism";
+        break;
     }
     if (p.kind == PlotKind::time) {
       pj["pellets"] = p.pellets;

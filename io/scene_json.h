@@ -7,7 +7,7 @@
 #include <string_view>
 #include <variant>
 
-#include "core/validate.h"
+#include "core/run/validate.h"
 #include "io/scene.h"
 
 namespace vibro {

@@ -24,7 +24,8 @@ SweepAxis read_axis(Fields& f) {
   SweepAxis a;
   const auto parameter = f.string("parameter", 200);
   if (!parameter)
-    throw FieldException(f.path("parameter"), "is required: a field path such as \"model.pellets[0].F0\"");
+    throw FieldException(f.path("parameter"),
+                         "is required: a field path such as \"model.pellets[0].F0\"");
   a.parameter = *parameter;
   a.from = f.required_number("from");
   a.to = f.required_number("to");
@@ -38,10 +39,14 @@ const char* section_name(SectionKind k) {
 
 const char* continuation_name(Continuation c) {
   switch (c) {
-    case Continuation::none: return "none";
-    case Continuation::forward: return "forward";
-    case Continuation::backward: return "backward";
-    case Continuation::both: return "both";
+    case Continuation::none:
+      return "none";
+    case Continuation::forward:
+      return "forward";
+    case Continuation::backward:
+      return "backward";
+    case Continuation::both:
+      return "both";
   }
   return "none";
 }
@@ -191,18 +196,27 @@ SweepSpec read_sweep(const json& j) {
   s.transient = bounded_int(f, "transient", s.transient);
   s.record = bounded_int(f, "record", s.record);
   if (auto section = f.string("section", 32)) {
-    if (*section == "stroboscopic") s.section = SectionKind::stroboscopic;
-    else if (*section == "impact") s.section = SectionKind::impact;
-    else throw FieldException("sweep.section", "must be \"stroboscopic\" or \"impact\", got \"" + *section + "\"");
+    if (*section == "stroboscopic")
+      s.section = SectionKind::stroboscopic;
+    else if (*section == "impact")
+      s.section = SectionKind::impact;
+    else
+      throw FieldException("sweep.section",
+                           "must be \"stroboscopic\" or \"impact\", got \"" + *section + "\"");
   }
   if (auto c = f.string("continuation", 32)) {
-    if (*c == "none") s.continuation = Continuation::none;
-    else if (*c == "forward") s.continuation = Continuation::forward;
-    else if (*c == "backward") s.continuation = Continuation::backward;
-    else if (*c == "both") s.continuation = Continuation::both;
+    if (*c == "none")
+      s.continuation = Continuation::none;
+    else if (*c == "forward")
+      s.continuation = Continuation::forward;
+    else if (*c == "backward")
+      s.continuation = Continuation::backward;
+    else if (*c == "both")
+      s.continuation = Continuation::both;
     else
-      throw FieldException("sweep.continuation",
-                           "must be \"none\", \"forward\", \"backward\" or \"both\", got \"" + *c + "\"");
+      throw FieldException(
+          "sweep.continuation",
+          "must be \"none\", \"forward\", \"backward\" or \"both\", got \"" + *c + "\"");
   }
   s.initial_states = bounded_int(f, "initial_states", s.initial_states);
   if (auto seed = f.integer("seed")) {

@@ -8,7 +8,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 #include "render/plot_spec.h"
 
 namespace vibro {

@@ -7,7 +7,7 @@
 #include <string_view>
 #include <vector>
 
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 
 namespace vibro {
 

@@ -5,7 +5,9 @@
 namespace vibro {
 
 nlohmann::json work_precision_to_json(const WorkPrecisionReport& report) {
-  auto num = [](double x) { return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr); };
+  auto num = [](double x) {
+    return std::isfinite(x) ? nlohmann::json(x) : nlohmann::json(nullptr);
+  };
   nlohmann::json rows = nlohmann::json::array();
   for (const WorkPrecisionPoint& p : report.points) {
     rows.push_back({{"method", method_name(p.method)},

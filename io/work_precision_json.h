@@ -3,7 +3,7 @@
 
 #include <nlohmann/json.hpp>
 
-#include "core/work_precision.h"
+#include "core/analysis/work_precision.h"
 
 namespace vibro {
 

@@ -114,8 +114,8 @@ void draw_title(cairo_t* cr, Point top_centre, const std::string& title, const S
 void draw_panel_letter(cairo_t* cr, const Rect& cell, std::size_t index, const Style& style) {
   const std::string letter = "(" + std::string(1, static_cast<char>('a' + index % 26)) + ")";
   set_font(cr, style.title_font());
-  draw_text(cr, letter, {cell.x + style.px(12.0), cell.y + style.px(9.0)}, {HAlign::left, VAlign::top},
-            kInk);
+  draw_text(cr, letter, {cell.x + style.px(12.0), cell.y + style.px(9.0)},
+            {HAlign::left, VAlign::top}, kInk);
 }
 
 }  // namespace vibro::render

@@ -12,9 +12,9 @@
 namespace vibro::render {
 
 struct NumberedLine {
-  int index = 1;               // the number drawn, and the branch's colour
-  std::vector<Point> pixels;   // the branch as drawn
-  bool labelled = true;        // false: drawn without a number (a piece of a wrapped branch)
+  int index = 1;              // the number drawn, and the branch's colour
+  std::vector<Point> pixels;  // the branch as drawn
+  bool labelled = true;       // false: drawn without a number (a piece of a wrapped branch)
 };
 
 // Numbers each line long enough to carry one, beside its middle (or a third of the way along

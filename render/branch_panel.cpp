@@ -1,7 +1,7 @@
-// The continued branch of a periodic motion (core/orbit_continuation.h) against its parameter:
-// its state on the stroboscopic section t = kT, stable stretches solid and unstable ones dashed,
-// each bifurcation marked and named. Drawn alone, or over the brute-force bifurcation diagram of
-// the same scene, where the two must agree wherever the motion is stable.
+// The continued branch of a periodic motion (core/analysis/orbit_continuation.h) against its
+// parameter: its state on the stroboscopic section t = kT, stable stretches solid and unstable ones
+// dashed, each bifurcation marked and named. Drawn alone, or over the brute-force bifurcation
+// diagram of the same scene, where the two must agree wherever the motion is stable.
 #include <cmath>
 #include <string>
 
@@ -28,12 +28,14 @@ struct Mark {
 
 Mark mark_of(BifurcationKind kind) {
   switch (kind) {
-    case BifurcationKind::fold: return {"F", "fold", MarkerShape::diamond, series_colour(2)};
+    case BifurcationKind::fold:
+      return {"F", "fold", MarkerShape::diamond, series_colour(2)};
     case BifurcationKind::period_doubling:
       return {"PD", "period doubling", MarkerShape::triangle, series_colour(1)};
     case BifurcationKind::neimark_sacker:
       return {"NS", "Neimark\u2013Sacker", MarkerShape::circle, series_colour(3)};
-    case BifurcationKind::grazing: return {"G", "grazing", MarkerShape::circle, series_colour(4)};
+    case BifurcationKind::grazing:
+      return {"G", "grazing", MarkerShape::circle, series_colour(4)};
   }
   return {"?", "?", MarkerShape::circle, kInk};
 }
@@ -43,7 +45,8 @@ Mark mark_of(BifurcationKind kind) {
 Range branch_range(const OrbitBranch& branch, const PlotSpec& spec) {
   Range y;
   for (const BranchPoint& p : branch.points)
-    if (spec.pellet < static_cast<int>(p.state.size())) y.include(branch_y(spec, p.state[spec.pellet]));
+    if (spec.pellet < static_cast<int>(p.state.size()))
+      y.include(branch_y(spec, p.state[spec.pellet]));
   return y;
 }
 
@@ -102,7 +105,8 @@ void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& bran
     avoid.boxes.push_back(labels.back());
     const int kind = static_cast<int>(b.kind);
     if (!seen[kind])
-      legend.push_back({std::string(m.label) + ": " + m.name, m.colour, Swatch::marker, m.shape, kInk});
+      legend.push_back(
+          {std::string(m.label) + ": " + m.name, m.colour, Swatch::marker, m.shape, kInk});
     seen[kind] = true;
   }
 }
@@ -120,9 +124,11 @@ void draw_branch_panel(cairo_t* cr, const PanelInput& in) {
   if (y.span() <= 0.0) y = {y.lo - 0.5, y.lo + 0.5};
   const bool angle = in.spec.coordinate == SectionCoordinate::phi;
   const Rect& area = in.layout.plots.front();
-  const Axis ax = make_axis(padded(x, 0.02), area.w, false, parameter_label(in.data.continuation->parameter));
-  const Axis ay = make_axis(padded(y, 0.05), area.h, angle,
-                            std::string(angle ? "\u03c6 at t = kT [rad]" : "\u03c6\u0307 at t = kT [rad/s]"), true);
+  const Axis ax =
+      make_axis(padded(x, 0.02), area.w, false, parameter_label(in.data.continuation->parameter));
+  const Axis ay = make_axis(
+      padded(y, 0.05), area.h, angle,
+      std::string(angle ? "\u03c6 at t = kT [rad]" : "\u03c6\u0307 at t = kT [rad/s]"), true);
   const Transform tr(area, ax.range, ay.range);
   draw_grid(cr, tr, ax, ay, style);
   cairo_save(cr);
@@ -133,7 +139,8 @@ void draw_branch_panel(cairo_t* cr, const PanelInput& in) {
   draw_legend(cr, legend, area, avoid, style);
   cairo_restore(cr);
   draw_frame(cr, tr, ax, ay, style);
-  const std::string title = "Periodic motion continued, pellet " + std::to_string(in.spec.pellet + 1);
+  const std::string title =
+      "Periodic motion continued, pellet " + std::to_string(in.spec.pellet + 1);
   draw_title(cr, in.layout.title_anchor, in.spec.title.empty() ? title : in.spec.title, style);
 }
 

@@ -88,8 +88,10 @@ std::vector<CylinderLabel> labels_of(const gl::CylinderScene& scene, const Model
   }
   const gl::HeightScale scale = gl::height_scale(scene);
   const double step = nice_step(scale.hi - scale.lo, 20.0);
-  labels.push_back({"\u03c6\u0307 = " + format_tick(scale.hi, step) + " rad/s", at({0.0, 0.0, gl::kHalfHeight})});
-  labels.push_back({"\u03c6\u0307 = " + format_tick(scale.lo, step) + " rad/s", at({0.0, 0.0, -gl::kHalfHeight})});
+  labels.push_back({"\u03c6\u0307 = " + format_tick(scale.hi, step) + " rad/s",
+                    at({0.0, 0.0, gl::kHalfHeight})});
+  labels.push_back({"\u03c6\u0307 = " + format_tick(scale.lo, step) + " rad/s",
+                    at({0.0, 0.0, -gl::kHalfHeight})});
   for (std::size_t k = 0; k < model.limiters.size(); ++k) {
     const double a = model.limiters[k].angle;
     labels.push_back({"limiter " + std::to_string(k + 1),

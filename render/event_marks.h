@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "core/result.h"
+#include "core/run/result.h"
 #include "render/legend.h"
 #include "render/markers.h"
 #include "render/style.h"

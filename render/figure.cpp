@@ -80,7 +80,8 @@ std::optional<FieldError> draw_panel(cairo_t* cr, const FigureSpec& figure, std:
       render::draw_time_panel(cr, in);
       break;
     case PlotKind::cylinder:
-      if (auto message = render::draw_cylinder_panel(cr, in)) return FieldError{kind_field, *message};
+      if (auto message = render::draw_cylinder_panel(cr, in))
+        return FieldError{kind_field, *message};
       break;
     case PlotKind::work_precision:
       if (!data.work_precision) return FieldError{kind_field, "needs a work-precision sweep"};
@@ -97,7 +98,8 @@ std::optional<FieldError> draw_panel(cairo_t* cr, const FigureSpec& figure, std:
       draw_sweep_panel(cr, in);
       break;
     case PlotKind::branch:
-      if (!data.branch || !data.continuation) return FieldError{kind_field, "needs a continued periodic motion"};
+      if (!data.branch || !data.continuation)
+        return FieldError{kind_field, "needs a continued periodic motion"};
       render::draw_branch_panel(cr, in);
       break;
     case PlotKind::mechanism:
@@ -117,8 +119,10 @@ std::pair<render::PanelLayout, render::LegendPlace> with_room_for_legend(
   const int stacked = static_cast<int>(layout.plots.size());
   const double beside = 1.0 - style.px(column) / plot.w;
   const double above = 1.0 - style.px(strip) / (stacked * plot.h);
-  if (beside >= above) return {render::panel_layout(layout.cell, style, stacked, column), render::LegendPlace::beside};
-  return {render::panel_layout(layout.cell, style, stacked, 0.0, strip), render::LegendPlace::above};
+  if (beside >= above)
+    return {render::panel_layout(layout.cell, style, stacked, column), render::LegendPlace::beside};
+  return {render::panel_layout(layout.cell, style, stacked, 0.0, strip),
+          render::LegendPlace::above};
 }
 
 std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, const Model& model,
@@ -129,9 +133,9 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
   const render::Style style = render::style_for(figure.width, figure.height);
   const auto layouts = render::figure_layout(figure);
   // A legend that would hide data in every corner of its plot goes beside it or above it instead:
-  // the panel is drawn again, narrower or lower. An image is drawn once and its cell painted over when it must be
-  // redrawn; a vector figure (where what is painted over stays in the file) is first drawn on a
-  // pixel of scratch, which only measures.
+  // the panel is drawn again, narrower or lower. An image is drawn once and its cell painted over
+  // when it must be redrawn; a vector figure (where what is painted over stays in the file) is
+  // first drawn on a pixel of scratch, which only measures.
   const bool raster = cairo_surface_get_type(cairo_get_target(cr)) == CAIRO_SURFACE_TYPE_IMAGE;
   render::SurfacePtr scratch_surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1));
   render::CairoPtr scratch(cairo_create(scratch_surface.get()));
@@ -144,8 +148,9 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
     cairo_t* first = raster || !movable ? cr : scratch.get();
     render::watch_legends(first, &fit);
     const std::size_t axes_before = axes.size();
-    auto e = draw_panel(first, figure, i,
-                        {figure.plots[i], model, run, layouts[i], style, data, first == cr ? &axes : &measured});
+    auto e = draw_panel(
+        first, figure, i,
+        {figure.plots[i], model, run, layouts[i], style, data, first == cr ? &axes : &measured});
     render::watch_legends(first, nullptr);
     if (e) return e;
     if (movable && fit.hid_data) {
@@ -162,7 +167,8 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
       render::place_legends(cr, render::LegendPlace::inside);
       if (e) return e;
     } else if (first != cr) {
-      if (auto again = draw_panel(cr, figure, i, {figure.plots[i], model, run, layouts[i], style, data, &axes}))
+      if (auto again = draw_panel(cr, figure, i,
+                                  {figure.plots[i], model, run, layouts[i], style, data, &axes}))
         return again;
     }
     if (layouts.size() > 1) render::draw_panel_letter(cr, layouts[i].cell, i, style);
@@ -186,7 +192,8 @@ RenderResult render_png(const FigureSpec& figure, const Model& model, const RunR
       render::encode_png_argb32(cairo_image_surface_get_data(surface.get()), figure.width,
                                 figure.height, cairo_image_surface_get_stride(surface.get()), true);
   if (bytes.empty()) return failure({"", "PNG encoding failed"});
-  return {std::move(bytes), std::string(content_type(ImageFormat::png)), std::nullopt, std::move(axes)};
+  return {std::move(bytes), std::string(content_type(ImageFormat::png)), std::nullopt,
+          std::move(axes)};
 }
 
 cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned int length) {
@@ -201,14 +208,14 @@ RenderResult render_vector(const FigureSpec& figure, const Model& model, const R
   std::vector<std::uint8_t> bytes;
   // A PDF is measured in points: 0.75 pt per pixel, the CSS ratio, so that 1200 px print 12.5 in.
   const double scale = format == ImageFormat::pdf ? 0.75 : 1.0;
-  SurfacePtr surface(format == ImageFormat::pdf
-                         ? cairo_pdf_surface_create_for_stream(append_bytes, &bytes,
-                                                               scale * figure.width,
-                                                               scale * figure.height)
-                         : cairo_svg_surface_create_for_stream(append_bytes, &bytes, figure.width,
-                                                               figure.height));
+  SurfacePtr surface(
+      format == ImageFormat::pdf
+          ? cairo_pdf_surface_create_for_stream(append_bytes, &bytes, scale * figure.width,
+                                                scale * figure.height)
+          : cairo_svg_surface_create_for_stream(append_bytes, &bytes, figure.width, figure.height));
   // Pixels, not cairo's default points, so that the SVG shows at the size asked for.
-  if (format == ImageFormat::svg) cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
+  if (format == ImageFormat::svg)
+    cairo_svg_surface_set_document_unit(surface.get(), CAIRO_SVG_UNIT_PX);
   std::vector<render::PlacedText> texts;
   std::vector<PlotAxes> axes;
   {
@@ -220,8 +227,9 @@ RenderResult render_vector(const FigureSpec& figure, const Model& model, const R
   cairo_surface_finish(surface.get());
   if (format == ImageFormat::svg) render::append_to_svg(bytes, render::svg_text_elements(texts));
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
-    return failure({"", std::string(format == ImageFormat::pdf ? "PDF" : "SVG") + " output failed: " +
-                            cairo_status_to_string(cairo_surface_status(surface.get()))});
+    return failure(
+        {"", std::string(format == ImageFormat::pdf ? "PDF" : "SVG") +
+                 " output failed: " + cairo_status_to_string(cairo_surface_status(surface.get()))});
   return {std::move(bytes), std::string(content_type(format)), std::nullopt, std::move(axes)};
 }
 
@@ -229,9 +237,12 @@ RenderResult render_vector(const FigureSpec& figure, const Model& model, const R
 
 std::string_view content_type(ImageFormat format) {
   switch (format) {
-    case ImageFormat::png: return "image/png";
-    case ImageFormat::svg: return "image/svg+xml";
-    case ImageFormat::pdf: return "application/pdf";
+    case ImageFormat::png:
+      return "image/png";
+    case ImageFormat::svg:
+      return "image/svg+xml";
+    case ImageFormat::pdf:
+      return "application/pdf";
   }
   return "application/octet-stream";
 }
@@ -245,7 +256,8 @@ std::optional<ImageFormat> image_format_named(std::string_view name) {
 
 std::optional<ImageFormat> image_format_of_file(std::string_view path) {
   const std::size_t dot = path.rfind('.');
-  if (dot == std::string_view::npos || dot == 0 || path.substr(0, dot).ends_with('/')) return std::nullopt;
+  if (dot == std::string_view::npos || dot == 0 || path.substr(0, dot).ends_with('/'))
+    return std::nullopt;
   return image_format_named(path.substr(dot + 1));
 }
 

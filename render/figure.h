@@ -16,12 +16,12 @@
 #include <string_view>
 #include <vector>
 
-#include "core/model.h"
-#include "core/result.h"
-#include "core/validate.h"
-#include "core/orbit_continuation.h"
-#include "core/sweep.h"
-#include "core/work_precision.h"
+#include "core/analysis/orbit_continuation.h"
+#include "core/analysis/sweep.h"
+#include "core/analysis/work_precision.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
+#include "core/run/validate.h"
 #include "render/plot_spec.h"
 
 namespace vibro {
@@ -45,8 +45,8 @@ struct PlotAxes {
   PlotKind kind = PlotKind::phase;  // phase: x φ (rad), y φ̇ (rad/s); time: x t (s), y φ (rad)
   int pellet = -1;                  // phase: the pellet drawn
   double left = 0.0, top = 0.0, width = 0.0, height = 0.0;  // the plot area, image pixels
-  double x_lo = 0.0, x_hi = 0.0;  // at the left and right edges
-  double y_lo = 0.0, y_hi = 0.0;  // at the bottom and top edges
+  double x_lo = 0.0, x_hi = 0.0;                            // at the left and right edges
+  double y_lo = 0.0, y_hi = 0.0;                            // at the bottom and top edges
 };
 
 struct RenderResult {

@@ -33,22 +33,23 @@ struct Symbol {
 };
 
 // RFC 1951, 3.2.5: the first value of each length code 257..285 and of each distance code.
-constexpr std::array<int, 29> kLengthBase = {3,  4,  5,  6,  7,  8,  9,  10, 11,  13,
-                                             15, 17, 19, 23, 27, 31, 35, 43, 51,  59,
+constexpr std::array<int, 29> kLengthBase = {3,  4,  5,  6,   7,   8,   9,   10,  11, 13,
+                                             15, 17, 19, 23,  27,  31,  35,  43,  51, 59,
                                              67, 83, 99, 115, 131, 163, 195, 227, 258};
 constexpr std::array<int, 29> kLengthExtra = {0, 0, 0, 0, 0, 0, 0, 0, 1, 1, 1, 1, 2, 2, 2,
                                               2, 3, 3, 3, 3, 4, 4, 4, 4, 5, 5, 5, 5, 0};
 constexpr std::array<int, 30> kDistanceBase = {
     1,   2,   3,   4,   5,   7,    9,    13,   17,   25,   33,   49,   65,    97,    129,
     193, 257, 385, 513, 769, 1025, 1537, 2049, 3073, 4097, 6145, 8193, 12289, 16385, 24577};
-constexpr std::array<int, 30> kDistanceExtra = {0, 0, 0, 0, 1, 1, 2, 2,  3,  3,  4,  4,  5,  5,  6,
-                                                6, 7, 7, 8, 8, 9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
+constexpr std::array<int, 30> kDistanceExtra = {0, 0, 0,  0,  1,  1,  2,  2,  3,  3,
+                                                4, 4, 5,  5,  6,  6,  7,  7,  8,  8,
+                                                9, 9, 10, 10, 11, 11, 12, 12, 13, 13};
 
 template <std::size_t N>
 Symbol symbol_of(int value, const std::array<int, N>& base, const std::array<int, N>& extra,
                  int first_code) {
-  const auto i = static_cast<std::size_t>(
-      std::upper_bound(base.begin(), base.end(), value) - base.begin() - 1);
+  const auto i = static_cast<std::size_t>(std::upper_bound(base.begin(), base.end(), value) -
+                                          base.begin() - 1);
   return {static_cast<std::uint16_t>(first_code + i), static_cast<std::uint8_t>(extra[i]),
           static_cast<std::uint16_t>(value - base[i])};
 }
@@ -176,8 +177,8 @@ struct Code {
 // zlib's inflate accepts an incomplete code only in narrow cases: with two used symbols
 // every code here is complete.
 Code code_for(std::vector<std::uint32_t> frequency, int max_bits) {
-  const auto used = std::count_if(frequency.begin(), frequency.end(),
-                                  [](std::uint32_t f) { return f > 0; });
+  const auto used =
+      std::count_if(frequency.begin(), frequency.end(), [](std::uint32_t f) { return f > 0; });
   for (std::size_t s = 0; used + static_cast<long>(s) < 2; ++s)
     if (frequency[s] == 0) frequency[s] = 1;
   Code code;
@@ -360,9 +361,8 @@ std::vector<std::uint8_t> zlib_image_rows(const ImageRows& image) {
     const std::uint32_t* keys = image.keys + static_cast<std::size_t>(y) * image.key_stride;
     const std::uint32_t* above = y > 0 && can_match_above ? keys - image.key_stride : nullptr;
     // A row the same as the one above is one match, and `row` holds its bytes already.
-    const bool repeats_above =
-        y > 0 && equal_run(keys, keys - image.key_stride, 0, image.width, image.key_mask) ==
-                     image.width;
+    const bool repeats_above = y > 0 && equal_run(keys, keys - image.key_stride, 0, image.width,
+                                                  image.key_mask) == image.width;
     if (!repeats_above) image.row(image.source, y, row.data());
     adler = libdeflate_adler32(adler, &filter, 1);
     adler = libdeflate_adler32(adler, row.data(), row_bytes);
@@ -379,7 +379,8 @@ std::vector<std::uint8_t> zlib_image_rows(const ImageRows& image) {
   }
   write_block(bits, block, distances, true);
   bits.finish();
-  for (int shift = 24; shift >= 0; shift -= 8) out.push_back(static_cast<std::uint8_t>(adler >> shift));
+  for (int shift = 24; shift >= 0; shift -= 8)
+    out.push_back(static_cast<std::uint8_t>(adler >> shift));
   return out;
 }
 

@@ -22,7 +22,7 @@ struct ImageRows {
   int height = 0;
   int channels = 3;
   const std::uint32_t* keys = nullptr;
-  std::size_t key_stride = 0;  // in words
+  std::size_t key_stride = 0;            // in words
   std::uint32_t key_mask = 0xFFFFFFFFu;  // the bits of a key that matter
   void (*row)(const void* source, int y, std::uint8_t* out) = nullptr;
   const void* source = nullptr;

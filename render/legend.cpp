@@ -116,7 +116,8 @@ Point legend_size(cairo_t* cr, const std::vector<LegendEntry>& entries, const St
 void watch_legends(cairo_t* cr, LegendFit* fit) { cairo_set_user_data(cr, &kFitKey, fit, nullptr); }
 
 void place_legends(cairo_t* cr, LegendPlace place) {
-  cairo_set_user_data(cr, &kPlaceKey, const_cast<LegendPlace*>(&kPlaces[static_cast<int>(place)]), nullptr);
+  cairo_set_user_data(cr, &kPlaceKey, const_cast<LegendPlace*>(&kPlaces[static_cast<int>(place)]),
+                      nullptr);
 }
 
 void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rect& area,
@@ -131,7 +132,8 @@ void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rec
                        ? Rect{area.right() - size.x, area.y - inset - size.y, size.x, size.y}
                        : legend_box(size, area, avoid, inset);
   if (auto* fit = static_cast<LegendFit*>(cairo_get_user_data(cr, &kFitKey))) {
-    fit->hid_data = fit->hid_data || (place == LegendPlace::inside && placement_cost(box, avoid) > 0.0);
+    fit->hid_data =
+        fit->hid_data || (place == LegendPlace::inside && placement_cost(box, avoid) > 0.0);
     fit->size = {std::max(fit->size.x, size.x), std::max(fit->size.y, size.y)};
   }
   const double pad = style.px(kPadding), row = kRowHeight * style.note_font();

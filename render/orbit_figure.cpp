@@ -1,6 +1,6 @@
 #include "render/orbit_figure.h"
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "render/run_plan.h"
 
 namespace vibro {
@@ -20,7 +20,10 @@ RenderResult render_orbit_figure(const FigureSpec& figure, const Model& model,
                           in.branch, in.continuation});
   }
   if (!in.orbit.converged)
-    return {{}, {}, FieldError{"periodic_orbit", "no periodic motion to draw: " + in.orbit.message}, {}};
+    return {{},
+            {},
+            FieldError{"periodic_orbit", "no periodic motion to draw: " + in.orbit.message},
+            {}};
   // One return from the orbit's state: its section time t0 is a whole number of every force's
   // periods, so the forces' phases are those of t = 0.
   Model on = model;

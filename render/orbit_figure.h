@@ -4,17 +4,17 @@
 // started on its state, so a phase portrait shows the closed orbit with its impacts.
 #pragma once
 
-#include "core/orbit_continuation.h"
-#include "core/periodic_orbit.h"
+#include "core/analysis/orbit_continuation.h"
+#include "core/analysis/periodic_orbit.h"
 #include "render/figure.h"
 
 namespace vibro {
 
 struct OrbitFigure {
   const PeriodicOrbit& orbit;
-  const OrbitBranch* branch = nullptr;             // with its spec, when continued
+  const OrbitBranch* branch = nullptr;  // with its spec, when continued
   const ContinuationSpec* continuation = nullptr;
-  const SweepSpec* sweep_spec = nullptr;           // drawn beneath the branch, if given
+  const SweepSpec* sweep_spec = nullptr;  // drawn beneath the branch, if given
   const SweepResult* sweep = nullptr;
 };
 

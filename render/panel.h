@@ -5,8 +5,8 @@
 
 #include <cairo.h>
 
-#include "core/model.h"
-#include "core/result.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
 #include "render/figure.h"
 #include "render/layout.h"
 #include "render/legend.h"
@@ -22,7 +22,7 @@ struct PanelInput {
   const RunResult& run;
   const PanelLayout& layout;
   const Style& style;
-  const PanelData& data;  // for work-precision and bifurcation panels
+  const PanelData& data;                       // for work-precision and bifurcation panels
   std::vector<PlotAxes>* plot_axes = nullptr;  // phase and time panels add where they lie
 };
 

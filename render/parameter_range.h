@@ -3,7 +3,7 @@
 // regime or Lyapunov map.
 #pragma once
 
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 #include "render/geometry.h"
 
 namespace vibro::render {

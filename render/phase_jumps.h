@@ -7,7 +7,7 @@
 #include <span>
 #include <vector>
 
-#include "core/result.h"
+#include "core/run/result.h"
 #include "render/event_marks.h"
 #include "render/geometry.h"
 #include "render/plot_spec.h"

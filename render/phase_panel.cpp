@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/first_integral.h"
+#include "core/model/first_integral.h"
 #include "render/axes.h"
 #include "render/branch_numbers.h"
 #include "render/event_marks.h"

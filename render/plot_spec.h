@@ -7,14 +7,14 @@
 #include <string>
 #include <vector>
 
-#include "core/result.h"
+#include "core/run/result.h"
 
 namespace vibro {
 
 enum class PlotKind {
-  phase,     // (φ, φ̇) of one pellet, branches told apart
-  time,      // φ(t) (optionally φ̇(t)) of the listed pellets
-  cylinder,  // 3-D (OSMesa): the trajectory on the phase cylinder (cos φ, sin φ, φ̇)
+  phase,           // (φ, φ̇) of one pellet, branches told apart
+  time,            // φ(t) (optionally φ̇(t)) of the listed pellets
+  cylinder,        // 3-D (OSMesa): the trajectory on the phase cylinder (cos φ, sin φ, φ̇)
   work_precision,  // log error against log run time, one line per method (a sweep, not the run)
   bifurcation,     // a sweep's section points of one pellet against the swept parameter
   section,         // a sweep's section points of one pellet in the (φ, φ̇) plane
@@ -23,7 +23,7 @@ enum class PlotKind {
   lyapunov,        // a 1-D sweep's largest Lyapunov exponents against the swept parameter
   lyapunov_map,    // a 2-D sweep's cells coloured by the largest Lyapunov exponent
   branch,          // a continued periodic motion against its parameter, stability and bifurcations
-  mechanism,       // the circle, limiters, pellets and forces at one instant, to scale (paper Fig. 1)
+  mechanism,  // the circle, limiters, pellets and forces at one instant, to scale (paper Fig. 1)
 };
 // The plot kinds that draw a sweep rather than a run.
 inline bool draws_sweep(PlotKind kind) {
@@ -55,21 +55,21 @@ struct AxisLimits {
 
 struct PlotSpec {
   PlotKind kind = PlotKind::phase;
-  int pellet = 0;                 // phase, cylinder
-  std::vector<int> pellets;       // time
-  bool show_dphi = false;         // time: also draw φ̇(t) on a second axis
-  double t_from = 0.0;            // window drawn, s
+  int pellet = 0;            // phase, cylinder
+  std::vector<int> pellets;  // time
+  bool show_dphi = false;    // time: also draw φ̇(t) on a second axis
+  double t_from = 0.0;       // window drawn, s
   double t_to = std::numeric_limits<double>::infinity();  // clipped to t_end
-  double t = 0.0;                 // mechanism: the instant drawn, s, in [0, t_end]
-  std::vector<int> branches;      // phase: only these motion intervals (numbered from 1); empty: all
+  double t = 0.0;             // mechanism: the instant drawn, s, in [0, t_end]
+  std::vector<int> branches;  // phase: only these motion intervals (numbered from 1); empty: all
   std::optional<PhasePoint> first_integral_through;  // phase: exact unforced curve through it
-  bool friction_zone = false;     // phase: shade |φ| ≤ α0 (mod 2π) where a pellet can rest
-  bool wrap = false;              // phase: φ on one turn, [−π, π)
-  bool branch_labels = true;      // phase: number the branches
+  bool friction_zone = false;  // phase: shade |φ| ≤ α0 (mod 2π) where a pellet can rest
+  bool wrap = false;           // phase: φ on one turn, [−π, π)
+  bool branch_labels = true;   // phase: number the branches
   std::optional<AxisLimits> phi_range;   // phase, time: the φ axis; default: the data's
   std::optional<AxisLimits> dphi_range;  // phase, time: the φ̇ axis; default: the data's
-  std::string title;              // empty: a default title
-  Camera camera;                  // cylinder
+  std::string title;                     // empty: a default title
+  Camera camera;                         // cylinder
   SectionCoordinate coordinate = SectionCoordinate::dphi;  // bifurcation, branch
 };
 

@@ -5,7 +5,7 @@
 
 #include <vector>
 
-#include "core/sim_options.h"
+#include "core/run/sim_options.h"
 #include "render/plot_spec.h"
 
 namespace vibro {

@@ -10,11 +10,11 @@
 #include <functional>
 #include <string>
 
-#include "core/model.h"
+#include "core/model/model.h"
 #include "render/axes.h"
+#include "render/layout.h"
 #include "render/legend.h"
 #include "render/markers.h"
-#include "render/layout.h"
 #include "render/panel.h"
 #include "render/parameter_label.h"
 #include "render/parameter_range.h"
@@ -43,21 +43,32 @@ Cloud cloud_of(const PlotSpec& spec, const SweepSpec& sweep) {
   Cloud c;
   switch (spec.kind) {
     case PlotKind::section:
-      c = {phi, dphi, std::string("\u03c6") + where + " [rad]",
-           std::string("\u03c6\u0307") + where + " [rad/s]", true, false,
+      c = {phi,
+           dphi,
+           std::string("\u03c6") + where + " [rad]",
+           std::string("\u03c6\u0307") + where + " [rad/s]",
+           true,
+           false,
            "Poincar\u00e9 section (" + section + "), " + pellet};
       break;
     case PlotKind::impact_map:
-      c = {[](const SweepRun&, const SectionPoint& p) { return p.phase; }, dphi,
+      c = {[](const SweepRun&, const SectionPoint& p) { return p.phase; },
+           dphi,
            "phase of the forcing at impact, \u03a9t mod 2\u03c0 [rad]",
-           "\u03c6\u0307 before impact [rad/s]", true, false, "Impact map, " + pellet};
+           "\u03c6\u0307 before impact [rad/s]",
+           true,
+           false,
+           "Impact map, " + pellet};
       break;
     default: {
       const bool angle = spec.coordinate == SectionCoordinate::phi;
-      c = {[](const SweepRun& r, const SectionPoint&) { return r.value; }, angle ? phi : dphi,
+      c = {[](const SweepRun& r, const SectionPoint&) { return r.value; },
+           angle ? phi : dphi,
            parameter_label(sweep.axis.parameter),
            std::string(angle ? "\u03c6" : "\u03c6\u0307") + where + (angle ? " [rad]" : " [rad/s]"),
-           false, angle, "Bifurcation diagram, " + section + " section, " + pellet};
+           false,
+           angle,
+           "Bifurcation diagram, " + section + " section, " + pellet};
     }
   }
   return c;
@@ -95,11 +106,11 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
   if (in.spec.kind == PlotKind::bifurcation || in.spec.kind == PlotKind::branch)
     x = bifurcation_range(spec.axis);
   // A continued branch drawn over a bifurcation diagram of the same parameter.
-  const OrbitBranch* branch = in.spec.kind != PlotKind::section && in.spec.kind != PlotKind::impact_map &&
-                                      in.data.branch && in.data.continuation &&
-                                      in.data.continuation->parameter == spec.axis.parameter
-                                  ? in.data.branch
-                                  : nullptr;
+  const OrbitBranch* branch =
+      in.spec.kind != PlotKind::section && in.spec.kind != PlotKind::impact_map && in.data.branch &&
+              in.data.continuation && in.data.continuation->parameter == spec.axis.parameter
+          ? in.data.branch
+          : nullptr;
   if (branch) {
     const Range b = branch_range(*branch, in.spec);
     if (!b.empty()) {
@@ -149,11 +160,13 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
     legend.push_back({"swept down", series_colour(1), Swatch::marker});
   }
   if (any_untrusted)
-    legend.push_back({"not trusted", {1.0, 1.0, 1.0, 1.0}, Swatch::marker, MarkerShape::circle, kInk});
+    legend.push_back(
+        {"not trusted", {1.0, 1.0, 1.0, 1.0}, Swatch::marker, MarkerShape::circle, kInk});
   draw_legend(cr, legend, area, avoid, style);
   cairo_restore(cr);
   draw_frame(cr, tr, ax, ay, style);
-  draw_title(cr, in.layout.title_anchor, in.spec.title.empty() ? cloud.title : in.spec.title, style);
+  draw_title(cr, in.layout.title_anchor, in.spec.title.empty() ? cloud.title : in.spec.title,
+             style);
 }
 
 void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
@@ -168,12 +181,13 @@ void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
     if (!run.at_rest && std::find(periods.begin(), periods.end(), run.period) == periods.end())
       periods.push_back(run.period);
   }
-  std::sort(periods.begin(), periods.end(), [](int p, int q) {
-    return (p == 0 ? 1000 : p) < (q == 0 ? 1000 : q);
-  });
+  std::sort(periods.begin(), periods.end(),
+            [](int p, int q) { return (p == 0 ? 1000 : p) < (q == 0 ? 1000 : q); });
   std::vector<LegendEntry> legend;
   for (int p : periods)
-    legend.push_back({p == 0 ? "not periodic" : p > 8 ? "period > 8" : "period " + std::to_string(p),
+    legend.push_back({p == 0  ? "not periodic"
+                      : p > 8 ? "period > 8"
+                              : "period " + std::to_string(p),
                       period_colour(p), Swatch::area});
   if (rest)
     legend.push_back({"at rest", {1.0, 1.0, 1.0, 1.0}, Swatch::area, MarkerShape::circle, kGuide});

@@ -55,7 +55,9 @@ std::string format_tick(double value, double step) {
 std::vector<Tick> nice_ticks(Range r, double length_px, double spacing_px, double min_gap_px) {
   if (r.empty() || !(r.span() > 0.0)) return {};
   double step = nice_step(r.span(), std::max(2.0, std::round(length_px / spacing_px)));
-  auto at = [&r](double s) { return multiples(r, s, [s](long k) { return format_tick(k * s, s); }); };
+  auto at = [&r](double s) {
+    return multiples(r, s, [s](long k) { return format_tick(k * s, s); });
+  };
   std::vector<Tick> ticks = at(step);
   while (ticks.size() < 3 && finer_step(step) / r.span() * length_px >= min_gap_px) {
     step = finer_step(step);

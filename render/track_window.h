@@ -6,7 +6,7 @@
 #include <string>
 #include <vector>
 
-#include "core/result.h"
+#include "core/run/result.h"
 #include "render/plot_spec.h"
 
 namespace vibro::render {

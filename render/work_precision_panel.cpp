@@ -46,17 +46,19 @@ Axis decade_axis(Range r, double length_px, std::string label, bool plain) {
     const double decade = std::pow(10.0, k);
     axis.ticks.push_back({static_cast<double>(k), fine ? plain_label(decade) : decade_label(k)});
     if (!fine || k == hi) continue;
-    for (double m : {2.0, 5.0})
-      axis.ticks.push_back({k + std::log10(m), plain_label(m * decade)});
+    for (double m : {2.0, 5.0}) axis.ticks.push_back({k + std::log10(m), plain_label(m * decade)});
   }
   return axis;
 }
 
 std::string error_label(ErrorReference r) {
   switch (r) {
-    case ErrorReference::first_integral: return "error: first-integral residual";
-    case ErrorReference::energy: return "error: energy drift";
-    case ErrorReference::reference_run: return "error vs reference run";
+    case ErrorReference::first_integral:
+      return "error: first-integral residual";
+    case ErrorReference::energy:
+      return "error: energy drift";
+    case ErrorReference::reference_run:
+      return "error vs reference run";
   }
   return "error";
 }
@@ -109,9 +111,10 @@ void draw_work_precision_panel(cairo_t* cr, const PanelInput& in) {
     draw_markers(cr, px, MarkerShape::circle, marker, c, c, 0.0);
     draw_markers(cr, odd, MarkerShape::diamond, style.px(6.0), {1, 1, 1, 1}, kInk, style.px(1.0));
     diverged = diverged || !odd.empty();
-    for (const auto& [point, rtol] : {std::pair{px.front(), points.front()->rtol},
-                                      std::pair{px.back(), points.back()->rtol}})
-      ends.push_back({point, "rtol " + decade_label(static_cast<int>(std::lround(std::log10(rtol)))), c});
+    for (const auto& [point, rtol] :
+         {std::pair{px.front(), points.front()->rtol}, std::pair{px.back(), points.back()->rtol}})
+      ends.push_back(
+          {point, "rtol " + decade_label(static_cast<int>(std::lround(std::log10(rtol)))), c});
     avoid.lines.push_back(px);
     legend.push_back({std::string(method_name(method)), c, Swatch::line});
   }
@@ -122,7 +125,8 @@ void draw_work_precision_panel(cairo_t* cr, const PanelInput& in) {
   // dop853 does).
   std::vector<Rect> markers;
   for (const std::vector<Point>& line : avoid.lines)
-    for (const Point& q : line) markers.push_back({q.x - marker, q.y - marker, 2 * marker, 2 * marker});
+    for (const Point& q : line)
+      markers.push_back({q.x - marker, q.y - marker, 2 * marker, 2 * marker});
   set_font(cr, style.note_font());
   for (const EndLabel& end : ends) {
     const double gap = style.px(6);
@@ -149,8 +153,8 @@ void draw_work_precision_panel(cairo_t* cr, const PanelInput& in) {
     }
   }
   if (diverged) {
-    legend.push_back({"events differ from the reference", kInk, Swatch::marker,
-                      MarkerShape::diamond, kInk});
+    legend.push_back(
+        {"events differ from the reference", kInk, Swatch::marker, MarkerShape::diamond, kInk});
   }
   draw_legend(cr, legend, area, avoid, style);
   cairo_restore(cr);

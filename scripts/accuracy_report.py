@@ -288,7 +288,7 @@ that changes (a grazing impact, a stick test at its threshold), which no propaga
 along one path can. Where a single shadow is blind, the variational equations with saltation
 (the machinery of the Floquet multipliers, docs/ORBITS.md) see along its path, at a small cost:
 how far its own start 64 ulps ahead moved each instant, and how far a few ulps of every angle
-move it (`instant_shifts` in core/monodromy.h: `auto` at rtol 1e-4 over each interval, steps of
+move it (`instant_shifts` in core/analysis/monodromy.h: `auto` at rtol 1e-4 over each interval, steps of
 up to two radians of a swing or a forcing; the saltation at each instant; the instant's time
 moved by `−∇h·δy / (∇h·f + ∂h/∂t)` of its first crossing; within a few percent of central
 differences of plain runs). A chain that amplifies errors amplifies the shadow's start as it
@@ -463,7 +463,7 @@ farther from its root, at both ends of the step, than it moves in the step (by i
 its rate at either end times the step). Such a watch is searched at the step's end alone; the
 rate-based predictions of `CrossingFinder::find` (a closing watch's quadratic, a turn between
 closing and opening) still look inside, and the dense output is built only when they do
-(core/watch.h, `CrossingFinder::calm`; `kCalm` in core/watch.cpp). The threshold was chosen by
+(core/events/watch.h, `CrossingFinder::calm`; `kCalm` in core/events/watch.cpp). The threshold was chosen by
 `trust_scan` over seeds 1–8 (160,000 runs) against references that search inside every step
 (`SimOptions::sample_every_step`), with the check and the scan as they were before the changes
 above:

@@ -6,9 +6,9 @@ cd "$(dirname "$0")/.."
 
 packages=(cmake g++ make pkg-config libeigen3-dev libosmesa6-dev libcairo2-dev libdeflate-dev
           nlohmann-json3-dev libcpp-httplib-dev libgtest-dev librapidcheck-dev fonts-dejavu-core
-          openmpi-bin libopenmpi-dev libcli11-dev)
+          openmpi-bin libopenmpi-dev libcli11-dev ccache)
 if [[ "${1:-}" == "--test" ]]; then
-  packages+=(libbenchmark-dev python3-scipy chromium curl jq nginx zlib1g-dev)
+  packages+=(libbenchmark-dev python3-scipy chromium curl jq nginx zlib1g-dev clang-format)
   # The base image ships Node.js (with npm) from its own packages; Debian's would conflict.
   command -v node > /dev/null || packages+=(nodejs)
   command -v npm > /dev/null || packages+=(npm)
@@ -16,6 +16,8 @@ fi
 
 bash scripts/install_packages.sh setup "${packages[@]}"
 
-cmake -S . -B build -DCMAKE_BUILD_TYPE=Release > build.log 2>&1 || { cat build.log; exit 1; }
+# ccache makes a rebuild of an unchanged tree (a second clone, CI) take seconds.
+cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
+  -DCMAKE_C_COMPILER_LAUNCHER=ccache > build.log 2>&1 || { cat build.log; exit 1; }
 cmake --build build -j"$(nproc)" >> build.log 2>&1 || { tail -50 build.log; exit 1; }
 echo "setup: built build/vibro"

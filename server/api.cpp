@@ -154,9 +154,9 @@ void Api::simulate_post(const httplib::Request& req, httplib::Response& res) {
 }
 
 void Api::simulate_get(const httplib::Request& req, httplib::Response& res) {
-  SceneOrApiError scene =
-      scene_from_query(req, scene_limits_,
-                       {"t_end", "method", "rtol", "atol", "trajectories", "check", "format", "what"});
+  SceneOrApiError scene = scene_from_query(
+      req, scene_limits_,
+      {"t_end", "method", "rtol", "atol", "trajectories", "check", "format", "what"});
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   simulate(std::get<Scene>(scene), req, res);
 }
@@ -186,11 +186,10 @@ void Api::work_precision_post(const httplib::Request& req, httplib::Response& re
   }
   SceneOrApiError scene = scene_from_body(req, scene_limits_);
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
-  auto produced = run_on_worker(
-      [scene = std::get<Scene>(std::move(scene)), image, this] {
-        return work_precision_scene(scene, image, config_.limits);
-      },
-      res);
+  auto produced =
+      run_on_worker([scene = std::get<Scene>(std::move(scene)), image,
+                     this] { return work_precision_scene(scene, image, config_.limits); },
+                    res);
   if (!produced) return;
   if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
   Produced& p = std::get<Produced>(*produced);
@@ -266,7 +265,9 @@ void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
   const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
   const std::optional<ImageFormat> image = image_format_named(format);
   if (format != "json" && !image)
-    return send_error(res, {400, "format", "must be \"json\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
+    return send_error(
+        res,
+        {400, "format", "must be \"json\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
   SceneOrApiError parsed = scene_from_body(req, scene_limits_);
   if (auto* e = std::get_if<ApiError>(&parsed)) return send_error(res, *e);
   Scene scene = std::move(std::get<Scene>(parsed));
@@ -279,7 +280,8 @@ void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
   if (auto e = check_orbit(scene, config_.limits)) return send_error(res, *e);
   scene.sim = bounded_options(scene.sim, config_.limits);
   if (scene.periodic_orbit->continuation) return submit(JobKind::orbit, std::move(scene), res);
-  auto produced = run_on_worker([scene = std::move(scene), image] { return orbit_scene(scene, image); }, res);
+  auto produced =
+      run_on_worker([scene = std::move(scene), image] { return orbit_scene(scene, image); }, res);
   if (!produced) return;
   if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
   Produced& p = std::get<Produced>(*produced);
@@ -306,7 +308,9 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   if (!wants_result) {
     if (auto e = only_params(req, {})) return send_error(res, *e);
     const auto status = jobs_.status(id);
-    if (!status) return send_error(res, {404, "id", "no job \"" + id + "\" (finished ones are kept for a while)"});
+    if (!status)
+      return send_error(res,
+                        {404, "id", "no job \"" + id + "\" (finished ones are kept for a while)"});
     return send_status(res, *status);
   }
   const auto job = jobs_.finished(id);
@@ -316,18 +320,22 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
     if (status->error)
       return send_error(res,
                         {409, status->error->field, "the job failed: " + status->error->message});
-    return send_error(res, {409, "id", "the job is " + std::string(job_state_name(status->state)) +
-                                           ", not done: its result is not ready"});
+    return send_error(res, {409, "id",
+                            "the job is " + std::string(job_state_name(status->state)) +
+                                ", not done: its result is not ready"});
   }
   if (job->kind == JobKind::sweep) return sweep_result(*job, req, res);
   // An orbit's result: its JSON, or its continued branch drawn.
   if (auto e = only_params(req, {"format"})) return send_error(res, *e);
   const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
   res.set_header("Cache-Control", "no-store");
-  if (format == "json") return res.set_content(orbit_result_json(*job->orbit).dump(), "application/json");
+  if (format == "json")
+    return res.set_content(orbit_result_json(*job->orbit).dump(), "application/json");
   const auto image_format = image_format_named(format);
   if (!image_format)
-    return send_error(res, {400, "format", "must be \"json\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
+    return send_error(
+        res,
+        {400, "format", "must be \"json\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
   JobResult drawn = orbit_image(job->scene, *job->orbit, *image_format);
   if (auto* e = std::get_if<ApiError>(&drawn)) return send_error(res, *e);
   Produced& p = std::get<Produced>(drawn);
@@ -335,26 +343,29 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
 }
 
 void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Response& res) {
-  if (auto e = only_params(req, {"format", "plot", "pellet", "coordinate"})) return send_error(res, *e);
+  if (auto e = only_params(req, {"format", "plot", "pellet", "coordinate"}))
+    return send_error(res, *e);
   const SweepSpec& spec = *job.scene.sweep;
   const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
   res.set_header("Cache-Control", "no-store");
   if (format == "json" || format == "csv") return stream_sweep_result(job, format == "csv", res);
   const auto image_format = image_format_named(format);
   if (!image_format)
-    return send_error(res, {400, "format", "must be \"json\", \"csv\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
+    return send_error(
+        res, {400, "format",
+              "must be \"json\", \"csv\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
   PlotSpec plot;
   const auto kind = sweep_plot_kind(req.get_param_value("plot"), spec);
-  if (!kind)
-    return send_error(res, {400, "plot", std::string("must be ") + kSweepPlotNames});
+  if (!kind) return send_error(res, {400, "plot", std::string("must be ") + kSweepPlotNames});
   if (auto e = validate_sweep_plot(*kind, spec)) return send_error(res, ApiError::from(*e));
   plot.kind = *kind;
   if (req.has_param("pellet")) {
     const std::string p = req.get_param_value("pellet");
     plot.pellet = p.size() == 1 && p[0] >= '0' && p[0] <= '9' ? p[0] - '0' : -1;
     if (plot.pellet < 0 || plot.pellet >= job.scene.model.size())
-      return send_error(res, {400, "pellet", "must be a pellet index in 0.." +
-                                                 std::to_string(job.scene.model.size() - 1)});
+      return send_error(
+          res, {400, "pellet",
+                "must be a pellet index in 0.." + std::to_string(job.scene.model.size() - 1)});
   }
   if (req.has_param("coordinate")) {
     const std::string c = req.get_param_value("coordinate");
@@ -416,7 +427,8 @@ void Api::simulate(const Scene& scene, const httplib::Request& req, httplib::Res
   const std::optional<RunTable> t = std::get<std::optional<RunTable>>(table);
   const std::string key =
       simulate_key(scene) + (t ? *t == RunTable::events ? " csv events" : " csv trajectory" : "");
-  answer(key, [scene, t, this] { return simulate_scene(scene, config_.limits, t); }, req, res);
+  answer(
+      key, [scene, t, this] { return simulate_scene(scene, config_.limits, t); }, req, res);
 }
 
 void Api::render(const Scene& scene, const httplib::Request& req, httplib::Response& res) {
@@ -450,7 +462,8 @@ void Api::answer(const std::string& key, std::function<JobResult()> job,
   send(res, *entry, false);
 }
 
-std::optional<JobResult> Api::run_on_worker(std::function<JobResult()> job, httplib::Response& res) {
+std::optional<JobResult> Api::run_on_worker(std::function<JobResult()> job,
+                                            httplib::Response& res) {
   auto promise = std::make_shared<std::promise<JobResult>>();
   std::future<JobResult> result = promise->get_future();
   const bool queued = workers_.try_post([promise, job = std::move(job)] {
@@ -484,8 +497,9 @@ bool Api::warm_up(std::string& error) {
   }
   const std::string key = render_key(paper, ImageFormat::png);
   Produced& p = std::get<Produced>(produced);
-  cache_.insert(key, std::make_shared<const CachedResponse>(CachedResponse{
-                         std::move(p.body), std::move(p.content_type), etag_of(key), std::move(p.headers)}));
+  cache_.insert(
+      key, std::make_shared<const CachedResponse>(CachedResponse{
+               std::move(p.body), std::move(p.content_type), etag_of(key), std::move(p.headers)}));
   return true;
 }
 

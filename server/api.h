@@ -7,8 +7,8 @@
 
 #include "io/scene.h"
 #include "server/config.h"
-#include "server/jobs.h"
 #include "server/http.h"
+#include "server/jobs.h"
 #include "server/response_cache.h"
 #include "server/run_scene.h"
 #include "server/static_files.h"

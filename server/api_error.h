@@ -6,7 +6,7 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "core/validate.h"
+#include "core/run/validate.h"
 #include "server/http.h"
 
 namespace vibro::server {

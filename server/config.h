@@ -56,8 +56,8 @@ struct ServerConfig {
   std::size_t cache_bytes = 64 * 1024 * 1024;  // results and images, least recently used dropped
   bool access_log = true;                      // one line per request on stderr
   Limits limits;
-  int sweep_jobs = 1;         // sweeps running at once, on threads of their own
-  int sweep_threads = 1;      // threads of one sweep
+  int sweep_jobs = 1;           // sweeps running at once, on threads of their own
+  int sweep_threads = 1;        // threads of one sweep
   std::size_t sweep_queue = 8;  // sweeps waiting; beyond it: 503
   // Behind the front door (scripts/deploy.sh), replica k's sweep job ids begin "r<k>-", so that
   // nginx routes a job's polls to the replica that holds it; 0: alone, no prefix.

@@ -18,7 +18,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 #include "io/orbit_request.h"
 #include "io/scene.h"
 
@@ -49,12 +49,12 @@ struct Job {
 };
 
 struct JobOptions {
-  int jobs = 1;            // jobs running at once
-  int threads = 1;         // threads of one sweep
-  std::size_t queue = 8;   // jobs waiting; beyond it, submit refuses
-  double keep_s = 600.0;   // a finished job's result is kept this long
-  std::size_t kept = 32;   // and at most this many finished jobs
-  std::string id_prefix;   // the ids' first characters ("r2-" for replica 2 of a front door)
+  int jobs = 1;           // jobs running at once
+  int threads = 1;        // threads of one sweep
+  std::size_t queue = 8;  // jobs waiting; beyond it, submit refuses
+  double keep_s = 600.0;  // a finished job's result is kept this long
+  std::size_t kept = 32;  // and at most this many finished jobs
+  std::string id_prefix;  // the ids' first characters ("r2-" for replica 2 of a front door)
   // A sweep's bounds (SweepControl): the points it may keep and its wall clock, ms; past either
   // it fails, naming the field, and keeps nothing. A continuation has the same wall clock.
   long max_points = 0;

@@ -2,16 +2,15 @@
 
 #include <algorithm>
 #include <iomanip>
+#include <nlohmann/json.hpp>
 #include <sstream>
 
-#include <nlohmann/json.hpp>
-
-#include "core/simulate.h"
-#include "core/parameter.h"
-#include "core/work_precision.h"
+#include "core/analysis/work_precision.h"
+#include "core/model/parameter.h"
+#include "core/run/simulate.h"
 #include "io/orbit_json.h"
-#include "io/work_precision_json.h"
 #include "io/result_json.h"
+#include "io/work_precision_json.h"
 #include "render/orbit_figure.h"
 #include "render/run_plan.h"
 
@@ -67,9 +66,14 @@ std::optional<ApiError> stopped_by_limit(const RunResult& run, const Scene& scen
 std::string plot_axes_header(const std::vector<PlotAxes>& axes) {
   nlohmann::json list = nlohmann::json::array();
   for (const PlotAxes& a : axes)
-    list.push_back({{"kind", a.kind == PlotKind::phase ? "phase" : "time"}, {"pellet", a.pellet},
-                    {"left", a.left}, {"top", a.top}, {"width", a.width}, {"height", a.height},
-                    {"x", {a.x_lo, a.x_hi}}, {"y", {a.y_lo, a.y_hi}}});
+    list.push_back({{"kind", a.kind == PlotKind::phase ? "phase" : "time"},
+                    {"pellet", a.pellet},
+                    {"left", a.left},
+                    {"top", a.top},
+                    {"width", a.width},
+                    {"height", a.height},
+                    {"x", {a.x_lo, a.x_hi}},
+                    {"y", {a.y_lo, a.y_hi}}});
   return list.dump();
 }
 
@@ -88,7 +92,8 @@ std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, con
     // the same scene give different bytes.
     if (f.plots[i].kind == PlotKind::work_precision) {
       return ApiError{400, "plots[" + std::to_string(i) + "].kind",
-                      "a work-precision diagram is a sweep of many timed runs: ask POST /api/work-precision?format=png for it"};
+                      "a work-precision diagram is a sweep of many timed runs: ask POST "
+                      "/api/work-precision?format=png for it"};
     }
   }
   if (auto e = validate_figure(f, scene.model, format)) return ApiError::from(*e);
@@ -114,8 +119,10 @@ std::optional<ApiError> check_sweep(const Scene& scene, const Limits& limits) {
       const double span = (spec.transient + spec.record) * sweep_period(m);
       if (span > limits.t_end)
         return ApiError{400, "sweep.record",
-                        "a run would last " + std::to_string(span) + " s (transient + record "
-                        "periods), over the server's limit of " + std::to_string(limits.t_end) + " s"};
+                        "a run would last " + std::to_string(span) +
+                            " s (transient + record "
+                            "periods), over the server's limit of " +
+                            std::to_string(limits.t_end) + " s"};
     }
   return std::nullopt;
 }
@@ -146,7 +153,8 @@ std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits) {
     return ApiError{400, "periodic_orbit.continuation.max_points",
                     "the branch may take some " + std::to_string(static_cast<long>(periods)) +
                         " forcing periods (16 maps × max_points × periods), over the server's "
-                        "limit of " + std::to_string(static_cast<long>(limits.sweep_periods))};
+                        "limit of " +
+                        std::to_string(static_cast<long>(limits.sweep_periods))};
   Model end = scene.model;
   set_parameter(end, request.continuation->parameter, request.continuation->to);
   const double last = spec.periods * forcing_period(end);
@@ -157,10 +165,11 @@ std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits) {
 
 JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format) {
   const auto& continuation = scene.periodic_orbit->continuation;
-  const RenderResult image =
-      render_orbit_figure(scene.figure, scene.model, scene.sim,
-                          {result.orbit, &result.branch, continuation ? &*continuation : nullptr}, format);
-  if (!image.ok()) return ApiError::from(*image.error, image.error->field == "periodic_orbit" ? 422 : 500);
+  const RenderResult image = render_orbit_figure(
+      scene.figure, scene.model, scene.sim,
+      {result.orbit, &result.branch, continuation ? &*continuation : nullptr}, format);
+  if (!image.ok())
+    return ApiError::from(*image.error, image.error->field == "periodic_orbit" ? 422 : 500);
   return Produced{std::string(image.bytes.begin(), image.bytes.end()), image.content_type, {}};
 }
 
@@ -193,7 +202,8 @@ JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& lim
   RenderResult image = render_figure(scene.figure, scene.model, run, format);
   if (!image.ok()) return ApiError::from(*image.error);
   Produced p{std::string(image.bytes.begin(), image.bytes.end()), image.content_type, {}};
-  if (!image.plot_axes.empty()) p.headers.emplace_back("X-Vibro-Plot-Axes", plot_axes_header(image.plot_axes));
+  if (!image.plot_axes.empty())
+    p.headers.emplace_back("X-Vibro-Plot-Axes", plot_axes_header(image.plot_axes));
   return p;
 }
 

@@ -171,7 +171,8 @@ Service::Service(const ServerConfig& config) : state_(std::make_unique<State>(co
     if (req.headers.size() > kMaxHeaderLines) {
       const_cast<Request&>(req).headers.clear();
       malloc_trim(0);
-      send_error(res, {431, "headers", "more than " + std::to_string(kMaxHeaderLines) + " header lines"},
+      send_error(res,
+                 {431, "headers", "more than " + std::to_string(kMaxHeaderLines) + " header lines"},
                  true);
       return httplib::Server::HandlerResponse::Handled;
     }

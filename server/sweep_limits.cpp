@@ -3,7 +3,7 @@
 #include <algorithm>
 #include <string>
 
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 
 namespace vibro::server {
 namespace {

@@ -6,7 +6,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 namespace vibro::bench {
 

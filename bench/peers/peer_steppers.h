@@ -5,7 +5,7 @@
 
 #include <memory>
 
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
 
 namespace vibro::bench {
 

@@ -85,7 +85,8 @@ double AutoSwitch::work() const {
 double AutoSwitch::explicit_work() const {
   double w = 0.0;
   for (const StepperStats* s : {&dopri5_.stats(), &dop853_.stats()})
-    w += static_cast<double>(s->rhs_evals) + kStepCost * static_cast<double>(s->steps + s->rejected);
+    w +=
+        static_cast<double>(s->rhs_evals) + kStepCost * static_cast<double>(s->steps + s->rejected);
   return w;
 }
 
@@ -96,8 +97,8 @@ double AutoSwitch::rate(const Mark& from, double w) const {
 
 void AutoSwitch::after_explicit_step() {
   ++explicit_steps_;
-  const bool limited = explicit_ == Kind::dopri5 ? dopri5_.stability_limited()
-                                                 : dop853_.stability_limited();
+  const bool limited =
+      explicit_ == Kind::dopri5 ? dopri5_.stability_limited() : dop853_.stability_limited();
   if (!limited || explicit_steps_ < retry_after_) {
     measure_from_ = mark(work());
     return;

@@ -10,7 +10,7 @@
 #include "core/integrators/dop853.h"
 #include "core/integrators/dopri5.h"
 #include "core/integrators/radau5.h"
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
 
 namespace vibro::integrators {
 
@@ -92,8 +92,8 @@ class AutoSwitch final : public Stepper {
   void switch_method();  // the pending method resumes where the active one stands
   void take_pending();   // the pending method becomes the active one
   void prepare(const OdeSystem& sys, const Vec& y0);  // before a (re)start
-  double work() const;           // RADAU5 against the explicit methods
-  double explicit_work() const;  // the explicit methods against each other
+  double work() const;                                // RADAU5 against the explicit methods
+  double explicit_work() const;                       // the explicit methods against each other
   Mark mark(double w) const { return {w, active().t(), steps_}; }
   double rate(const Mark& from, double w) const;  // work per unit of time since `from`
   void after_explicit_step();
@@ -105,24 +105,24 @@ class AutoSwitch final : public Stepper {
   Radau5 implicit_;
   const OdeSystem* sys_ = nullptr;
   const bool weighs_explicit_;
-  Kind explicit_;                 // the explicit method that runs while the problem is non-stiff
-  Kind active_;                   // the method that took the last step
-  std::optional<Kind> pending_;   // the method that takes the next step, if another
-  int non_stiff_steps_ = 0;       // consecutive RADAU5 steps with h·‖J‖∞ <= kNonStiffBound
-  long switches_ = 0;             // between explicit and implicit
-  long steps_ = 0;                // accepted steps of any method
-  Mark measure_from_;             // where the explicit method's measured stretch began
-  double explicit_rate_ = 0.0;    // its cost per unit of time there
-  bool trial_ = false;            // RADAU5 is on trial
+  Kind explicit_;                // the explicit method that runs while the problem is non-stiff
+  Kind active_;                  // the method that took the last step
+  std::optional<Kind> pending_;  // the method that takes the next step, if another
+  int non_stiff_steps_ = 0;      // consecutive RADAU5 steps with h·‖J‖∞ <= kNonStiffBound
+  long switches_ = 0;            // between explicit and implicit
+  long steps_ = 0;               // accepted steps of any method
+  Mark measure_from_;            // where the explicit method's measured stretch began
+  double explicit_rate_ = 0.0;   // its cost per unit of time there
+  bool trial_ = false;           // RADAU5 is on trial
   Mark trial_from_;
-  long retry_after_ = 0;          // explicit steps before the next trial of RADAU5
-  long explicit_steps_ = 0;       // since the last lost trial
+  long retry_after_ = 0;     // explicit steps before the next trial of RADAU5
+  long explicit_steps_ = 0;  // since the last lost trial
   // Weighing the explicit methods.
-  long weighed_steps_ = 0;        // explicit steps since the last explicit trial ended
+  long weighed_steps_ = 0;  // explicit steps since the last explicit trial ended
   long next_weighing_ = kExplicitMeasureSteps;
-  Mark weigh_from_;               // the incumbent's measured stretch, then the challenger's
+  Mark weigh_from_;  // the incumbent's measured stretch, then the challenger's
   double incumbent_rate_ = 0.0;
-  bool weighing_ = false;         // the other explicit method is on trial
+  bool weighing_ = false;  // the other explicit method is on trial
   mutable StepperStats stats_;
 };
 

@@ -8,8 +8,8 @@
 #include "core/integrators/error_norm.h"
 #include "core/integrators/explicit_rk.h"
 #include "core/integrators/hermite_dense.h"
+#include "core/integrators/ode.h"
 #include "core/integrators/pi_controller.h"
-#include "core/ode.h"
 
 namespace vibro::integrators {
 

@@ -5,7 +5,7 @@
 #include <cmath>
 #include <limits>
 
-#include "core/ode.h"
+#include "core/integrators/ode.h"
 
 namespace vibro::integrators {
 

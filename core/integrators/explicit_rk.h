@@ -11,8 +11,8 @@
 #include "core/integrators/initial_step.h"
 #include "core/integrators/pi_controller.h"
 #include "core/integrators/step_fit.h"
+#include "core/integrators/stepper.h"
 #include "core/integrators/stiffness_detector.h"
-#include "core/stepper.h"
 
 namespace vibro::integrators {
 

@@ -5,7 +5,7 @@
 
 #include <array>
 
-#include "core/ode.h"
+#include "core/integrators/ode.h"
 
 namespace vibro::integrators {
 

@@ -4,7 +4,7 @@
 #include <algorithm>
 
 #include "core/integrators/error_norm.h"
-#include "core/ode.h"
+#include "core/integrators/ode.h"
 
 namespace vibro::integrators {
 

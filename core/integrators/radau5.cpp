@@ -86,8 +86,9 @@ Radau5::Radau5(const StepperOptions& options) : options_(options) {
 void Radau5::reserve(int n) {
   if (n == n_) return;
   n_ = n;
-  for (Vec* v : {&y_, &f_, &y_new_, &y_prev_, &scal_, &z1_, &z2_, &z3_, &w1_, &w2_, &w3_, &tmp_, &ftmp_, &f2_,
-                 &err_, &cont1_, &cont2_, &cont3_, &start_fix_, &dfdt_}) {
+  for (Vec* v :
+       {&y_,  &f_,   &y_new_, &y_prev_, &scal_, &z1_,    &z2_,    &z3_,    &w1_,        &w2_,
+        &w3_, &tmp_, &ftmp_,  &f2_,     &err_,  &cont1_, &cont2_, &cont3_, &start_fix_, &dfdt_}) {
     v->resize(n);
   }
   jac_.resize(n, n);
@@ -309,7 +310,7 @@ void Radau5::accept(double h, double t_new) {
   // polynomial's own error.
   for (int i = 0; i < n_; ++i) {
     const double r = cont2_[i] - kC1 * cont3_[i];  // R(−1), R(s) = cont2 + (s − c1 + 1)·cont3
-    const double q = cont1_[i] - kC2 * r;            // Q(−1), Q(s) = cont1 + (s − c2 + 1)·R(s)
+    const double q = cont1_[i] - kC2 * r;          // Q(−1), Q(s) = cont1 + (s − c2 + 1)·R(s)
     const double slope = q - (r - kC2 * cont3_[i]);  // dP/ds at s = −1, P(s) = y + s·Q(s)
     start_fix_[i] = (t_new - t_) * f_[i] - slope;
   }

@@ -9,7 +9,7 @@
 #include <string_view>
 
 #include "core/integrators/error_norm.h"
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
 
 namespace vibro::integrators {
 
@@ -88,8 +88,8 @@ class Radau5 final : public Stepper {
   Vec y_, f_, y_new_, scal_;
   Vec y_prev_;                     // the state at t_prev_ (precise_state steps from it)
   std::unique_ptr<Radau5> probe_;  // takes the steps of precise_state, made on first use
-  Vec z1_, z2_, z3_;  // stage increments Z = Y_i − y
-  Vec w1_, w2_, w3_;  // transformed increments W = T⁻¹Z (F1..F3 in RADAU5)
+  Vec z1_, z2_, z3_;               // stage increments Z = Y_i − y
+  Vec w1_, w2_, w3_;               // transformed increments W = T⁻¹Z (F1..F3 in RADAU5)
   Vec tmp_, ftmp_, f2_, err_;
   Vec cont1_, cont2_, cont3_;  // collocation polynomial of the last step about y_ (CONTR5)
   Vec start_fix_;              // h·f(y_prev) − the polynomial's slope there (dense())

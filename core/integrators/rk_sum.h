@@ -3,7 +3,7 @@
 // the hand-written loops of Hairer's codes and with no temporaries.
 #pragma once
 
-#include "core/ode.h"
+#include "core/integrators/ode.h"
 
 namespace vibro::integrators {
 

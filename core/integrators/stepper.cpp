@@ -1,5 +1,5 @@
-// The method registry of core/stepper.h.
-#include "core/stepper.h"
+// The method registry of core/integrators/stepper.h.
+#include "core/integrators/stepper.h"
 
 #include "core/integrators/auto_switch.h"
 #include "core/integrators/dop853.h"

@@ -2,7 +2,7 @@
 // holds a Stepper&).
 #pragma once
 
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
 
 namespace vibro::integrators {
 

@@ -4,14 +4,15 @@
 
 #include <cmath>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
 namespace {
 
 // Kind, pellets and limiter of every event, and the largest time difference.
-void expect_same_events(const RunResult& a, const RunResult& b, double dt, const std::string& what) {
+void expect_same_events(const RunResult& a, const RunResult& b, double dt,
+                        const std::string& what) {
   ASSERT_EQ(a.events.size(), b.events.size()) << what;
   double worst = 0.0;
   for (std::size_t k = 0; k < a.events.size(); ++k) {
@@ -31,8 +32,7 @@ void expect_every_method_agrees(const Model& model, double t_end) {
   for (Method m : {Method::dopri5, Method::dop853, Method::radau5, Method::automatic}) {
     for (double rtol : {1e-8, 1e-10, 1e-12}) {
       const RunResult run = simulate(model, testing::recorded(model, t_end, m, rtol, rtol * 1e-2));
-      expect_same_events(run, ref, 1e4 * rtol,
-                         testing::method_at(m, rtol));
+      expect_same_events(run, ref, 1e4 * rtol, testing::method_at(m, rtol));
     }
   }
 }
@@ -59,17 +59,21 @@ TEST(Agreement, AMeetingBetweenTwoSamplesIsFound) {
   m.friction = FrictionLaw::bilateral;
   m.k_c = 0.3194913864135742;
   m.limiters = {{-1.7236970602498884, 0.8374481201171875, false, -1, {}}};
-  m.pellets = {
-      {1.8193861678960277, -1.4821250467201632, 0.0, {25.876246614927027, 1.0646746444021653, 4.795589461790128}},
-      {0.012298775380389804, 0.5930633378913805, 65.61650866648252, {}},
-      {0.04496079052183319, 0.5930633398913806, -799.0049877778455, {0.2991178024951093, 98.20079885558984, 5.156308639328908}}};
+  m.pellets = {{1.8193861678960277,
+                -1.4821250467201632,
+                0.0,
+                {25.876246614927027, 1.0646746444021653, 4.795589461790128}},
+               {0.012298775380389804, 0.5930633378913805, 65.61650866648252, {}},
+               {0.04496079052183319,
+                0.5930633398913806,
+                -799.0049877778455,
+                {0.2991178024951093, 98.20079885558984, 5.156308639328908}}};
   const double t_end = 0.0209;  // the steps, and so the samples, as the scan had them
   const RunResult ref = simulate(m, testing::recorded(m, t_end, Method::dop853, 1e-13, 1e-15));
   for (Method method : {Method::dopri5, Method::dop853, Method::radau5}) {
     for (double rtol : {1e-6, 1e-7, 1e-8, 1e-9}) {
       const RunResult run = simulate(m, testing::recorded(m, t_end, method, rtol, rtol * 1e-3));
-      expect_same_events(run, ref, 1e4 * rtol,
-                         testing::method_at(method, rtol));
+      expect_same_events(run, ref, 1e4 * rtol, testing::method_at(method, rtol));
     }
   }
 }
@@ -88,10 +92,18 @@ TEST(Agreement, APairPressedTogetherWithinOneStepMeetsAgain) {
   m.k_c = 1.0;
   m.limiters = {{1.1775699392003371, 0.6963062286376953, false, -1, {0, 2}},
                 {-0.08852746937586886, 0.001514434814453125, false, -1, {}}};
-  m.pellets = {
-      {0.032209442488323074, 0.1479800252478801, 0.0, {0.8624261792941151, 3.612024620404413, 1.5636956735384728}},
-      {0.08832313703033735, 0.1479800272478801, 0.0, {2.423097767964952, 22.128482357633665, 3.9616312190761747}},
-      {0.022498412271316798, -1.596754157939899, -0.9797200927430944, {0.26436041635218843, 0.46502027182055916, 4.086033465706229}}};
+  m.pellets = {{0.032209442488323074,
+                0.1479800252478801,
+                0.0,
+                {0.8624261792941151, 3.612024620404413, 1.5636956735384728}},
+               {0.08832313703033735,
+                0.1479800272478801,
+                0.0,
+                {2.423097767964952, 22.128482357633665, 3.9616312190761747}},
+               {0.022498412271316798,
+                -1.596754157939899,
+                -0.9797200927430944,
+                {0.26436041635218843, 0.46502027182055916, 4.086033465706229}}};
   const double t_end = 1.265706649071372;  // the steps, and so the samples, as the scan had them
   const RunResult ref = simulate(m, testing::recorded(m, t_end, Method::dop853, 1e-13, 1e-15));
   for (double rtol : {1e-8, 1e-9, 1e-10}) {
@@ -146,7 +158,9 @@ TEST(Agreement, TheKinkOfTheBilateralFrictionIsNotSteppedOver) {
   m.R = 0.4440552433212397;
   m.alpha0 = 0.5230987092141564;
   m.friction = FrictionLaw::bilateral;
-  m.pellets = {{0.2578851740722063, 1.868645998525996, 7.036735810884636,
+  m.pellets = {{0.2578851740722063,
+                1.868645998525996,
+                7.036735810884636,
                 {1.5158514617388013, 58.479920553210626, 0.21682221335042517}}};
   const double t_end = 0.36629231181604893;
   auto normal = [&](double phi, double dphi) { return m.g * std::cos(phi) + m.R * dphi * dphi; };
@@ -183,7 +197,9 @@ TEST(Agreement, AStepAfterARejectionIsNotTakenOnAnIncredibleEstimate) {
   m.R = 1.5414828248167514;
   m.alpha0 = 0.11922836303710938;
   m.friction = FrictionLaw::bilateral;
-  m.pellets = {{0.043529477570106744, -0.10372945866831396, -0.16444092931143545,
+  m.pellets = {{0.043529477570106744,
+                -0.10372945866831396,
+                -0.16444092931143545,
                 {0.022703333597181505, 741.0675352709418, 5.338055402131093}}};
   const double t_end = 0.339142386254035;
   const double T0 = std::sqrt(m.R / m.g);
@@ -217,8 +233,10 @@ TEST(Agreement, NoStepSpansAThirdOfASwing) {
   m.alpha0 = 0.0;
   m.friction = FrictionLaw::bilateral;
   m.k_c = 0.6047582626342773;
-  m.limiters = {{1.3981336064709717, 1.0, false, -1, {}}, {-2.3198583202793035, 1.0, false, -1, {1}}};
-  m.pellets = {{0.13607746227724682, -6.283185307179586, 0.0, {}}, {1.46582908890532, 1e-6, 0.0, {}}};
+  m.limiters = {{1.3981336064709717, 1.0, false, -1, {}},
+                {-2.3198583202793035, 1.0, false, -1, {1}}};
+  m.pellets = {{0.13607746227724682, -6.283185307179586, 0.0, {}},
+               {1.46582908890532, 1e-6, 0.0, {}}};
   const double t_end = 0.0654677716794234;
   const RunResult ref = simulate(m, testing::recorded(m, t_end, Method::dop853, 1e-13, 1e-16));
   ASSERT_EQ(ref.events.size(), 1u);
@@ -254,11 +272,19 @@ TEST(Agreement, PressedPelletsThatWouldPartByRoundOffMoveOnTogether) {
   m.limiters = {{0.016592159381465965, 0.07467937469482422, false, -1, {}},
                 {-0.2723415109742282, 0.0977163314819336, false, -1, {}},
                 {2.782904802172471, 0.8026266098022461, true, 0, {}}};
-  m.pellets = {
-      {0.1610528103101952, -2.663350174516634, 0.0, {1.9756122257874995, 63.806634332934166, 6.238208511109783}},
-      {1.444871217161532, 6.292862568790662, 15.452045642994527, {40.398329790119476, 0.20618390504643377, 3.415264413528516}},
-      {1.0914789529489728, 0.0, 0.0, {}},
-      {0.05834742957871862, 0.016592159381465965, -12.43150855709999, {0.6934763418143586, 4.500949083290005, 1.234524968063044}}};
+  m.pellets = {{0.1610528103101952,
+                -2.663350174516634,
+                0.0,
+                {1.9756122257874995, 63.806634332934166, 6.238208511109783}},
+               {1.444871217161532,
+                6.292862568790662,
+                15.452045642994527,
+                {40.398329790119476, 0.20618390504643377, 3.415264413528516}},
+               {1.0914789529489728, 0.0, 0.0, {}},
+               {0.05834742957871862,
+                0.016592159381465965,
+                -12.43150855709999,
+                {0.6934763418143586, 4.500949083290005, 1.234524968063044}}};
   const double t_end = 0.7251350529270345;
   const RunResult ref = simulate(m, testing::recorded(m, t_end, Method::dop853, 1e-13, 1e-15));
   for (Method method : {Method::dopri5, Method::dop853}) {

@@ -9,8 +9,8 @@
 #include <string>
 
 #include "core/integrators/auto_switch.h"
-#include "core/simulate.h"
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -59,8 +59,7 @@ TEST(AutoMethod, StaysExplicitOnTheNonStiffPresets) {
       SCOPED_TRACE(std::string(name) + " at rtol " + std::to_string(rtol));
       const RunResult automatic = run_preset(name, Method::automatic, rtol);
       EXPECT_EQ(automatic.stats.stiff_switches, 0);
-      EXPECT_EQ(automatic.stats.dopri5_steps + automatic.stats.dop853_steps,
-                automatic.stats.steps);
+      EXPECT_EQ(automatic.stats.dopri5_steps + automatic.stats.dop853_steps, automatic.stats.steps);
       const RunResult dop853 = run_preset(name, Method::dop853, rtol);
       if (!auto_weighs_explicit(rtol, AutoExplicit::by_tolerance)) {
         EXPECT_EQ(automatic.stats.rhs_evals, dop853.stats.rhs_evals);

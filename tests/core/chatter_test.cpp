@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -77,8 +77,8 @@ TEST(Chatter, ABodyLeavingItsLimiterHasItsSeriesSummedAtItsAccumulationTime) {
   const std::size_t at = static_cast<std::size_t>(&c - run.events.data());
   ASSERT_GT(at, 0u);
   const double t0 = run.events[at - 1].t;
-  const auto first = std::find_if(run.events.begin(), run.events.end(),
-                                  [&](const Event& e) { return e.t == t0; });
+  const auto first =
+      std::find_if(run.events.begin(), run.events.end(), [&](const Event& e) { return e.t == t0; });
   ASSERT_EQ(first->kind, EventKind::limiter);
   const double v0 = first->dphi_before[0], u = c.dphi_before[0];
   EXPECT_EQ(c.dphi_before[1], u);

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {

@@ -4,7 +4,7 @@
 
 #include <cmath>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -15,7 +15,8 @@ std::vector<double> energies(const Model& m, const RunResult& run) {
   std::vector<std::vector<Sample>> flat;
   for (const PelletTrack& t : run.tracks) {
     flat.emplace_back();
-    for (const Branch& b : t.branches) flat.back().insert(flat.back().end(), b.samples.begin(), b.samples.end());
+    for (const Branch& b : t.branches)
+      flat.back().insert(flat.back().end(), b.samples.begin(), b.samples.end());
   }
   std::vector<double> E(flat.at(0).size(), 0.0);
   for (std::size_t p = 0; p < flat.size(); ++p) {
@@ -31,7 +32,8 @@ std::vector<double> energies(const Model& m, const RunResult& run) {
 TEST(Energy, HoldsWithoutFrictionAndWithElasticImpacts) {
   const Scene scene = testing::preset("frictionless-elastic");
   for (Method method : {Method::dopri5, Method::dop853, Method::radau5, Method::automatic}) {
-    const RunResult run = simulate(scene.model, testing::recorded(scene.model, scene.sim.t_end, method));
+    const RunResult run =
+        simulate(scene.model, testing::recorded(scene.model, scene.sim.t_end, method));
     ASSERT_EQ(run.stats.termination, Termination::completed) << run.stats.message;
     EXPECT_GE(run.summary.limiter_impacts, 10);
     EXPECT_GE(run.summary.collisions, 3);

@@ -1,10 +1,11 @@
 // The exact first integral of MODEL.md along every unforced paper-law interval of a run.
+#include "core/model/first_integral.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/first_integral.h"
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -21,7 +22,8 @@ double worst_residual(const Model& m, const RunResult& run) {
       if (mid.dphi == 0.0) continue;  // at rest
       const int s = mid.dphi > 0 ? 1 : -1;
       const FirstIntegral curve(m, s, b.samples.front().phi, b.samples.front().dphi);
-      for (const Sample& x : b.samples) worst = std::max(worst, std::abs(curve.residual(x.phi, x.dphi)));
+      for (const Sample& x : b.samples)
+        worst = std::max(worst, std::abs(curve.residual(x.phi, x.dphi)));
       ++checked;
     }
   }
@@ -74,7 +76,9 @@ TEST(FirstIntegral, ThePaperPrintedFormFailsForNegativeSpeedsAndOursHolds) {
   for (const Sample& x : b.samples) {
     ASSERT_LT(x.dphi, 0.0);
     const double scale = s0.dphi * s0.dphi + 2 * a;
-    printed_worst = std::max(printed_worst, std::abs(x.dphi * x.dphi - printed(x.phi) - C * std::exp(2 * mu * x.phi)) / scale);
+    printed_worst =
+        std::max(printed_worst,
+                 std::abs(x.dphi * x.dphi - printed(x.phi) - C * std::exp(2 * mu * x.phi)) / scale);
     ours_worst = std::max(ours_worst, std::abs(ours.residual(x.phi, x.dphi)));
   }
   EXPECT_GT(printed_worst, 1e-3);

@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "io/presets.h"
 #include "scenes.h"
 

@@ -3,7 +3,7 @@
 // at rest. Period doubling near Ω = 5.56 rad/s, a fold at 7.81, chaos near 3.25.
 #pragma once
 
-#include "core/model.h"
+#include "core/model/model.h"
 
 namespace vibro::testing {
 

@@ -1,10 +1,11 @@
 // Impacts at one instant: momentum and Newton's restitution law at every collision, limiter
 // restitution, mobile limiters, and cascades resolved in bounded work.
+#include "core/events/impacts.h"
+
 #include <gtest/gtest.h>
 
 #include <random>
 
-#include "core/impacts.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -76,8 +77,7 @@ TEST(ResolveImpacts, PelletsOnTwoSidesOfALimiterDoNotCollide) {
   m.limiters[0].rearm_by = -1;
   std::vector<double> v = {3.0, -2.0};  // both run into limiter 0 from its two sides
   std::vector<bool> armed = {true, true};
-  auto events =
-      resolve_impacts(m, v, armed, {{0, 0, -1}, {1, 0, +1}}, {{0, 1}}, {0.5, 0.5});
+  auto events = resolve_impacts(m, v, armed, {{0, 0, -1}, {1, 0, +1}}, {{0, 1}}, {0.5, 0.5});
   ASSERT_EQ(events.size(), 2u);
   EXPECT_EQ(events[0].kind, EventKind::limiter);
   EXPECT_EQ(events[1].kind, EventKind::limiter);

@@ -1,5 +1,5 @@
-// How far a path's instants move when its start moves (core/monodromy.h, instant_shifts): the
-// first-order shifts against central differences of plain runs, over collisions, limiter
+// How far a path's instants move when its start moves (core/analysis/monodromy.h, instant_shifts):
+// the first-order shifts against central differences of plain runs, over collisions, limiter
 // impacts, turns, sticks and releases.
 #include <gtest/gtest.h>
 
@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
-#include "core/monodromy.h"
-#include "core/simulate.h"
+#include "core/analysis/monodromy.h"
+#include "core/run/simulate.h"
 
 namespace vibro {
 namespace {

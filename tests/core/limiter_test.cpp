@@ -4,8 +4,8 @@
 
 #include <cmath>
 
-#include "core/simulate.h"
-#include "core/watch.h"
+#include "core/events/watch.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -38,7 +38,8 @@ TEST(Limiter, MobileLimiterLetsThePelletPassUntilItsPartnerRearmsIt) {
   run = simulate(m, testing::recorded(m, 3.0));
   auto impacts = testing::events_of(run, EventKind::limiter);
   ASSERT_GE(impacts.size(), 6u);
-  for (std::size_t k = 0; k < impacts.size(); ++k) EXPECT_EQ(impacts[k]->limiter, static_cast<int>(k % 2));
+  for (std::size_t k = 0; k < impacts.size(); ++k)
+    EXPECT_EQ(impacts[k]->limiter, static_cast<int>(k % 2));
 }
 
 // Past 2^53 turns k + 1.0 == k: a floating-point turn counter never ended here. (So far out an
@@ -115,7 +116,9 @@ TEST(Limiter, AnOvershootInsideOneStepIsFound) {
       // Never beyond the limiter, but for the round-off of the state at the impact's root (one
       // ulp past it under clang -O1 with Radau IIA at rtol 1e-3).
       for (const Branch& b : run.tracks[0].branches)
-        for (const Sample& s : b.samples) ASSERT_LE(s.phi, theta + 1e-15) << method_name(method) << " rtol " << rtol << " t " << s.t << " impact t " << impacts[0]->t;
+        for (const Sample& s : b.samples)
+          ASSERT_LE(s.phi, theta + 1e-15) << method_name(method) << " rtol " << rtol << " t " << s.t
+                                          << " impact t " << impacts[0]->t;
     }
   }
 }

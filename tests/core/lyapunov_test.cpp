@@ -1,15 +1,16 @@
-// Lyapunov exponents (core/lyapunov.h): on a stable periodic motion they are log|multiplier| per
-// period; in a chaotic window the largest is positive and matches the divergence of two nearby
-// runs; frictionless, their sum is fixed by the impacts alone (each scales areas by k²); a sweep
-// reports the largest per value.
+// Lyapunov exponents (core/analysis/lyapunov.h): on a stable periodic motion they are
+// log|multiplier| per period; in a chaotic window the largest is positive and matches the
+// divergence of two nearby runs; frictionless, their sum is fixed by the impacts alone (each scales
+// areas by k²); a sweep reports the largest per value.
+#include "core/analysis/lyapunov.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/lyapunov.h"
-#include "core/periodic_orbit.h"
-#include "core/simulate.h"
-#include "core/sweep.h"
+#include "core/analysis/periodic_orbit.h"
+#include "core/analysis/sweep.h"
+#include "core/run/simulate.h"
 #include "tests/core/impact_oscillator.h"
 
 namespace vibro {
@@ -80,9 +81,9 @@ TEST(Lyapunov, PositiveInAChaoticWindowAsNearbyRunsDiverge) {
   b.pellets[0].phi0 += 1e-10;
   const double t = 60.0;
   const RunResult ra = simulate(a, tight(t)), rb = simulate(b, tight(t));
-  const double apart = std::hypot(ra.summary.final[0].phi - rb.summary.final[0].phi,
-                                  (ra.summary.final[0].dphi - rb.summary.final[0].dphi) *
-                                      std::sqrt(m.R / m.g));
+  const double apart =
+      std::hypot(ra.summary.final[0].phi - rb.summary.final[0].phi,
+                 (ra.summary.final[0].dphi - rb.summary.final[0].dphi) * std::sqrt(m.R / m.g));
   EXPECT_NEAR(std::log(apart / 1e-10) / t, L.exponents[0], 0.3 * L.exponents[0]);
 }
 

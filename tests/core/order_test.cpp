@@ -6,7 +6,7 @@
 #include <numeric>
 #include <random>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -18,10 +18,14 @@ void expect_order_kept(const Model& m, const RunResult& run, const std::string& 
   const int n = m.size();
   std::vector<std::vector<Sample>> flat(n);
   for (const PelletTrack& t : run.tracks)
-    for (const Branch& b : t.branches) flat[t.pellet].insert(flat[t.pellet].end(), b.samples.begin(), b.samples.end());
+    for (const Branch& b : t.branches)
+      flat[t.pellet].insert(flat[t.pellet].end(), b.samples.begin(), b.samples.end());
   std::vector<int> order(n);
   std::iota(order.begin(), order.end(), 0);
-  auto place = [&](int i) { double w = std::fmod(m.pellets[i].phi0, kTwoPi); return w < 0 ? w + kTwoPi : w; };
+  auto place = [&](int i) {
+    double w = std::fmod(m.pellets[i].phi0, kTwoPi);
+    return w < 0 ? w + kTwoPi : w;
+  };
   std::sort(order.begin(), order.end(), [&](int a, int b) { return place(a) < place(b); });
   for (int k = 0; k < n; ++k) {
     const int a = order[k], b = order[(k + 1) % n];
@@ -35,7 +39,8 @@ void expect_order_kept(const Model& m, const RunResult& run, const std::string& 
     for (std::size_t s = 0; s < flat[a].size(); ++s) {
       const double gap = flat[b][s].phi - flat[a][s].phi + offset;
       ASSERT_GE(gap, -1e-9) << what << " pellets " << a << "," << b << " t=" << flat[a][s].t;
-      ASSERT_LE(gap, kTwoPi + 1e-9) << what << " pellets " << a << "," << b << " t=" << flat[a][s].t;
+      ASSERT_LE(gap, kTwoPi + 1e-9)
+          << what << " pellets " << a << "," << b << " t=" << flat[a][s].t;
     }
   }
 }
@@ -43,7 +48,8 @@ void expect_order_kept(const Model& m, const RunResult& run, const std::string& 
 TEST(Order, PresetsKeepThePelletsInOrder) {
   for (const char* name : {"paper", "frictionless-elastic", "mass-ratio", "tiny-radius"}) {
     const Scene scene = testing::preset(name);
-    const RunResult run = simulate(scene.model, testing::recorded(scene.model, std::min(scene.sim.t_end, 10.0)));
+    const RunResult run =
+        simulate(scene.model, testing::recorded(scene.model, std::min(scene.sim.t_end, 10.0)));
     ASSERT_EQ(run.stats.termination, Termination::completed) << name << ": " << run.stats.message;
     expect_order_kept(scene.model, run, name);
   }
@@ -66,9 +72,11 @@ TEST(Order, RandomScenesOfUpToEightPelletsKeepTheirOrder) {
       if (i == 0) p.force = {1.0, 3.0, 0.0};
       m.pellets.push_back(p);
     }
-    m.limiters = {{2.8, 0.5 + 0.5 * u(rng), false, -1, {}}, {-2.8, 0.5 + 0.5 * u(rng), false, -1, {}}};
+    m.limiters = {{2.8, 0.5 + 0.5 * u(rng), false, -1, {}},
+                  {-2.8, 0.5 + 0.5 * u(rng), false, -1, {}}};
     const RunResult run = simulate(m, testing::recorded(m, 5.0));
-    ASSERT_EQ(run.stats.termination, Termination::completed) << "trial " << trial << ": " << run.stats.message;
+    ASSERT_EQ(run.stats.termination, Termination::completed)
+        << "trial " << trial << ": " << run.stats.message;
     EXPECT_TRUE(testing::all_finite(run));
     expect_order_kept(m, run, "trial " + std::to_string(trial));
   }

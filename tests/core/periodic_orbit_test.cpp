@@ -1,8 +1,8 @@
-// Periodic motions (core/periodic_orbit.h, core/monodromy.h): the exact Jacobian of the map
-// against central differences of plain runs, across every kind of event; period-1 and period-2
-// motions of the impact oscillator found, stable and unstable, and reached by long runs; bad
-// requests refused with the field named.
-#include "core/periodic_orbit.h"
+// Periodic motions (core/analysis/periodic_orbit.h, core/analysis/monodromy.h): the exact Jacobian
+// of the map against central differences of plain runs, across every kind of event; period-1 and
+// period-2 motions of the impact oscillator found, stable and unstable, and reached by long runs;
+// bad requests refused with the field named.
+#include "core/analysis/periodic_orbit.h"
 
 #include <gtest/gtest.h>
 
@@ -13,9 +13,9 @@
 #include <map>
 #include <string>
 
-#include "core/monodromy.h"
-#include "core/orbit_continuation.h"
-#include "core/simulate.h"
+#include "core/analysis/monodromy.h"
+#include "core/analysis/orbit_continuation.h"
+#include "core/run/simulate.h"
 #include "tests/core/impact_oscillator.h"
 
 namespace vibro {
@@ -48,7 +48,8 @@ Vec end_state(Model m, const Vec& x, double t_end) {
   const RunResult r = simulate(m, o);
   EXPECT_EQ(r.stats.termination, Termination::completed);
   Vec y(2 * m.size());
-  for (int i = 0; i < m.size(); ++i) y.segment(2 * i, 2) << r.summary.final[i].phi, r.summary.final[i].dphi;
+  for (int i = 0; i < m.size(); ++i)
+    y.segment(2 * i, 2) << r.summary.final[i].phi, r.summary.final[i].dphi;
   return y;
 }
 
@@ -75,11 +76,14 @@ void expect_jacobian_matches_differences(const Model& m, std::vector<EventKind> 
   ASSERT_TRUE(p.ok) << p.run.stats.message;
   ASSERT_TRUE(p.exact) << p.jacobian_note;
   const std::map<EventKind, int> seen = kinds(p.run.events);
-  for (EventKind k : must_see) EXPECT_TRUE(seen.count(k)) << event_kind_name(k) << " not in the run";
+  for (EventKind k : must_see)
+    EXPECT_TRUE(seen.count(k)) << event_kind_name(k) << " not in the run";
   const Mat fd = central_differences(m, start_of(m), 2 * forcing_period(m));
   const double scale = std::max(1.0, fd.cwiseAbs().maxCoeff());
   EXPECT_LT((p.jacobian - fd).cwiseAbs().maxCoeff(), 1e-5 * scale)
-      << "exact\n" << p.jacobian << "\ndifferenced\n" << fd;
+      << "exact\n"
+      << p.jacobian << "\ndifferenced\n"
+      << fd;
 }
 
 // The saltations along a long path are not under the run's deadline unless given it: an orbit
@@ -177,7 +181,8 @@ TEST(PeriodicOrbit, MultipliersMatchThoseOfTheDifferencedMap) {
   ASSERT_EQ(orbit.multipliers.size(), 2u);
   for (const std::complex<double>& mu : orbit.multipliers) {
     double nearest = INFINITY;
-    for (Eigen::Index k = 0; k < 2; ++k) nearest = std::min(nearest, std::abs(mu - fd.eigenvalues()[k]));
+    for (Eigen::Index k = 0; k < 2; ++k)
+      nearest = std::min(nearest, std::abs(mu - fd.eigenvalues()[k]));
     EXPECT_LT(nearest, 1e-5) << mu;
   }
   // Frictionless between impacts, the flow keeps areas; each impact scales them by k²: the
@@ -225,7 +230,8 @@ TEST(PeriodicOrbit, TwoReturnsOfAPeriodOneMotionSquareItsMultipliers) {
 TEST(PeriodicOrbit, TheDeadlineBoundsTheWholeSearch) {
   SimOptions o = tight();
   o.deadline_ms = 1e-3;
-  const PeriodicOrbit orbit = find_periodic_orbit(impact_oscillator(5.5), o, from_guess(0.12, 0.15));
+  const PeriodicOrbit orbit =
+      find_periodic_orbit(impact_oscillator(5.5), o, from_guess(0.12, 0.15));
   EXPECT_FALSE(orbit.converged);
   EXPECT_NE(orbit.message.find("deadline"), std::string::npos) << orbit.message;
 }
@@ -346,7 +352,8 @@ TEST(OrbitContinuation, PassesAndLocatesTheFoldWhereTheLowMotionEnds) {
                                        Vec::Map(&folds[0].state[0].phi, 2));
   const Eigen::EigenSolver<Mat> eig(at.jacobian, false);
   double nearest = INFINITY;
-  for (Eigen::Index k = 0; k < 2; ++k) nearest = std::min(nearest, std::abs(eig.eigenvalues()[k] - 1.0));
+  for (Eigen::Index k = 0; k < 2; ++k)
+    nearest = std::min(nearest, std::abs(eig.eigenvalues()[k] - 1.0));
   EXPECT_LT(nearest, 1e-3);
   // The branch turns back: values below the fold on both its sides, the second unstable.
   bool turned = false;

@@ -1,11 +1,11 @@
-// Event roots are polished on a precise state (core/simulate.cpp, Simulation::polish): the
+// Event roots are polished on a precise state (core/run/simulate.cpp, Simulation::polish): the
 // long chains of impacts where a root's small error repeats at every impact show it.
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -22,18 +22,21 @@ TEST(Polish, TenThousandBouncesOfAnElasticPairKeepTheirTimes) {
   model.R = 0.0018839204526546504;
   model.friction = FrictionLaw::bilateral;
   model.k_c = 1.0;
-  model.limiters = {Limiter{.angle = -0.3021582625387551, .k = 0.0, .pellets = {2, 3}},
-                    Limiter{.angle = -2.9979796944364527, .k = 0.5395717620849609,
-                            .mobile = true, .rearm_by = 0},
-                    Limiter{.angle = 0.648226725130737, .k = 0.16356945037841797}};
-  model.pellets = {
-      Pellet{.m = 0.015810444929436916, .phi0 = -0.16805145732231733,
-             .force = {0.17453284119739795, 17.1422536460621, 4.563197364537905}},
-      Pellet{.m = 9.966984123721339, .phi0 = 8.650561079208629, .dphi0 = -79.9026492423013,
-             .force = {288.48548895759836, 4.135341168010528, 1.2619988036585739}},
-      Pellet{.m = 0.2554616686570595, .phi0 = 0.0},
-      Pellet{.m = 0.05078787033519329, .phi0 = 2e-09,
-             .force = {0.9985496183907803, 2.5383555829351945, 3.813014846024848}}};
+  model.limiters = {
+      Limiter{.angle = -0.3021582625387551, .k = 0.0, .pellets = {2, 3}},
+      Limiter{.angle = -2.9979796944364527, .k = 0.5395717620849609, .mobile = true, .rearm_by = 0},
+      Limiter{.angle = 0.648226725130737, .k = 0.16356945037841797}};
+  model.pellets = {Pellet{.m = 0.015810444929436916,
+                          .phi0 = -0.16805145732231733,
+                          .force = {0.17453284119739795, 17.1422536460621, 4.563197364537905}},
+                   Pellet{.m = 9.966984123721339,
+                          .phi0 = 8.650561079208629,
+                          .dphi0 = -79.9026492423013,
+                          .force = {288.48548895759836, 4.135341168010528, 1.2619988036585739}},
+                   Pellet{.m = 0.2554616686570595, .phi0 = 0.0},
+                   Pellet{.m = 0.05078787033519329,
+                          .phi0 = 2e-09,
+                          .force = {0.9985496183907803, 2.5383555829351945, 3.813014846024848}}};
   SimOptions o;
   o.t_end = 0.01873089362510622;
   o.method = Method::dop853;

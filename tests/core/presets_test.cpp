@@ -1,11 +1,12 @@
 // Every preset finishes under every method, without NaN, and the paper scene answers the
 // paper's question as MODEL.md describes it.
+#include "io/presets.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 
-#include "core/simulate.h"
-#include "io/presets.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -35,7 +36,7 @@ TEST_P(EveryPreset, FinishesWithoutNaN) {
 }
 
 TEST_P(EveryPreset, CalmStepsFindTheSameEvents) {
-  // Searching a calm step at its end alone (core/watch.h) finds the events that searching
+  // Searching a calm step at its end alone (core/events/watch.h) finds the events that searching
   // inside every step finds, at the same times to well below the tolerance.
   for (const PresetText& p : presets()) {
     const Scene scene = testing::preset(std::string(p.name));

@@ -8,8 +8,8 @@
 #include <set>
 #include <tuple>
 
-#include "core/first_integral.h"
-#include "core/simulate.h"
+#include "core/model/first_integral.h"
+#include "core/run/simulate.h"
 #include "tests/core/scenes.h"
 
 namespace vibro {
@@ -46,7 +46,8 @@ TEST(Recorder, ASampleBudgetThinsTheBranchesAndKeepsTheirEnds) {
   EXPECT_GT(kept, 800 / 3);
   // The run itself is the same: thinning only drops samples.
   ASSERT_EQ(full.events.size(), thin.events.size());
-  for (std::size_t k = 0; k < full.events.size(); ++k) EXPECT_EQ(full.events[k].t, thin.events[k].t);
+  for (std::size_t k = 0; k < full.events.size(); ++k)
+    EXPECT_EQ(full.events[k].t, thin.events[k].t);
 }
 
 TEST(Recorder, EachBranchAdvancesInTime) {

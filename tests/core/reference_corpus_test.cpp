@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "io/scene_json.h"
 
 #ifndef VIBRO_REFERENCE_CORPUS

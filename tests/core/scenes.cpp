@@ -60,8 +60,10 @@ std::vector<const Event*> events_of(const RunResult& run, EventKind kind) {
 bool all_finite(const RunResult& run) {
   for (const Event& e : run.events) {
     if (!std::isfinite(e.t) || !std::isfinite(e.phi)) return false;
-    for (double v : e.dphi_before) if (!std::isfinite(v)) return false;
-    for (double v : e.dphi_after) if (!std::isfinite(v)) return false;
+    for (double v : e.dphi_before)
+      if (!std::isfinite(v)) return false;
+    for (double v : e.dphi_after)
+      if (!std::isfinite(v)) return false;
   }
   for (const PelletTrack& t : run.tracks)
     for (const Branch& b : t.branches)

@@ -4,9 +4,9 @@
 #include <string>
 #include <vector>
 
-#include "core/model.h"
-#include "core/result.h"
-#include "core/sim_options.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
+#include "core/run/sim_options.h"
 #include "io/scene.h"
 
 namespace vibro::testing {

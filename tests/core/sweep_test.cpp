@@ -1,15 +1,16 @@
-// Parameter sweeps (core/sweep.h): section points against plain runs, the period a person reads
-// off the diagram, continuation's hysteresis, any thread count giving the same output, and bad
-// sweeps refused with the field named.
+// Parameter sweeps (core/analysis/sweep.h): section points against plain runs, the period a person
+// reads off the diagram, continuation's hysteresis, any thread count giving the same output, and
+// bad sweeps refused with the field named.
+#include "core/analysis/sweep.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <tuple>
 
-#include "core/parameter.h"
-#include "core/simulate.h"
-#include "core/sweep.h"
+#include "core/model/parameter.h"
+#include "core/run/simulate.h"
 #include "tests/core/impact_oscillator.h"
 
 namespace vibro {
@@ -151,7 +152,7 @@ TEST(Sweep, TheImpactSectionKeepsTheStateBeforeEveryLimiterImpact) {
   for (const SectionPoint& p : run.points) {
     EXPECT_EQ(p.limiter, 0);
     EXPECT_NEAR(std::remainder(p.phi, 2.0 * M_PI), 0.0, 1e-12);
-    EXPECT_LT(p.dphi, 0.0);  // arriving from above the stop, moving down
+    EXPECT_LT(p.dphi, 0.0);                           // arriving from above the stop, moving down
     EXPECT_NEAR(p.phase, run.points[0].phase, 1e-4);  // a period-1 motion strikes at one phase
   }
 }

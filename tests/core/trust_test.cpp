@@ -1,14 +1,15 @@
 // The trust fields of API.md: the event-time error estimate against the true error, the trust
 // horizon of an ill-conditioned scene, the check turned off, and whether a run ends while
 // impacts still go on.
+#include "core/analysis/trust.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
 #include <limits>
 
-#include "core/simulate.h"
-#include "core/trust.h"
+#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -331,8 +332,7 @@ TEST(Trust, AShadowDoesNotShareTheRunsCappedSteps) {
   model.alpha0 = 0.0;
   model.k_c = 0.612208366394043;
   model.limiters.push_back(Limiter{.angle = -1.526718347592995, .k = 0.247161865234375});
-  const auto pellet = [](double m, double phi0, double dphi0, double F0, double Omega,
-                         double psi) {
+  const auto pellet = [](double m, double phi0, double dphi0, double F0, double Omega, double psi) {
     return Pellet{.m = m, .phi0 = phi0, .dphi0 = dphi0, .force = {F0, Omega, psi}};
   };
   model.pellets = {

@@ -1,10 +1,11 @@
 // Work-precision: the true error falls as the tolerance shrinks, for every method, against
 // each kind of reference.
+#include "core/analysis/work_precision.h"
+
 #include <gtest/gtest.h>
 
 #include <map>
 
-#include "core/work_precision.h"
 #include "scenes.h"
 
 namespace vibro {

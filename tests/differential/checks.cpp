@@ -7,7 +7,7 @@
 #include <tuple>
 #include <vector>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "tests/differential/conditioning.h"
 
 namespace vibro::differential {

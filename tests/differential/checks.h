@@ -10,8 +10,8 @@
 #include <string>
 #include <utility>
 
-#include "core/result.h"
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
+#include "core/run/result.h"
 #include "tests/differential/compare.h"
 #include "tests/differential/conditioning.h"
 #include "tests/differential/scene_gen.h"

@@ -5,18 +5,19 @@
 #include <optional>
 #include <string>
 
-#include "core/model.h"
-#include "core/result.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
 
 namespace vibro::differential {
 
 // Two runs agree on an event time when |Δt| ≤ factor·rtol·(T0 + t), T0 = sqrt(R/g), rtol the
 // looser of the two runs' tolerances, times v/w for an impact at approach speed w below the
-// speed scale v = 1/T0 (a slow impact's time is that much less well determined). The global error of a tolerance-controlled run grows
-// about linearly in time, and an event time errs by the state's error over its speed (about
-// 1/T0 in these units), hence rtol·(T0 + t). The factor is measured (README.md in this folder):
-// it is above the 99th percentile of |Δt|/(rtol·(T0 + t)) between the explicit methods, and
-// between each and itself at rtol/10, over random scenes listing the same events.
+// speed scale v = 1/T0 (a slow impact's time is that much less well determined). The global error
+// of a tolerance-controlled run grows about linearly in time, and an event time errs by the state's
+// error over its speed (about 1/T0 in these units), hence rtol·(T0 + t). The factor is measured
+// (README.md in this folder): it is above the 99th percentile of |Δt|/(rtol·(T0 + t)) between the
+// explicit methods, and between each and itself at rtol/10, over random scenes listing the same
+// events.
 struct TimeTolerance {
   static constexpr double kFactor = 1e3;
   double rtol = 1e-9;

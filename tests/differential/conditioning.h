@@ -7,8 +7,8 @@
 #include <string>
 #include <string_view>
 
-#include "core/model.h"
-#include "core/result.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
 
 namespace vibro::differential {
 

@@ -6,8 +6,9 @@
 // differences below the tolerance: there the methods must agree only before the engine's trust
 // horizon (stats.trusted_until). One whose name starts with "physics-only-" has its sequence
 // change within the trust check's blind spot (a grazing impact decided alike by a run and its
-// same-method shadow, docs/ACCURACY.md): only its physics is checked. The presets (presets/) run the same way, before their trust
-// horizon (the grazing preset is ill-conditioned by design; the others are trusted to the end).
+// same-method shadow, docs/ACCURACY.md): only its physics is checked. The presets (presets/) run
+// the same way, before their trust horizon (the grazing preset is ill-conditioned by design; the
+// others are trusted to the end).
 #include <gtest/gtest.h>
 
 #include <algorithm>
@@ -46,8 +47,8 @@ TEST_P(Corpus, MethodsAgreeAndKeepThePhysics) {
       << std::get<FieldError>(read).field << ": " << std::get<FieldError>(read).message;
   const Scene& scene = std::get<Scene>(read);
   const std::string name = GetParam().filename().string();
-  const bool ill = name.starts_with("ill-conditioned-") ||
-                   GetParam().parent_path() == fs::path(VIBRO_PRESETS);
+  const bool ill =
+      name.starts_with("ill-conditioned-") || GetParam().parent_path() == fs::path(VIBRO_PRESETS);
   const bool physics_only = name.starts_with("physics-only-");
   SceneRuns runs({scene.model, scene.sim.t_end}, ill, /*bounded=*/false);
   for (double rtol : {1e-11, 1e-12}) {

@@ -24,7 +24,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/validate.h"
+#include "core/run/validate.h"
 #include "tests/differential/checks.h"
 #include "tests/differential/minimize.h"
 

@@ -13,7 +13,7 @@
 #include <cstdlib>
 #include <sstream>
 
-#include "core/validate.h"
+#include "core/run/validate.h"
 #include "tests/differential/checks.h"
 
 namespace vibro::differential {

@@ -6,7 +6,7 @@
 #include <functional>
 #include <vector>
 
-#include "core/validate.h"
+#include "core/run/validate.h"
 
 namespace vibro::differential {
 namespace {

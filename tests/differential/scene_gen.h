@@ -12,8 +12,8 @@
 #include <iosfwd>
 #include <string>
 
-#include "core/model.h"
-#include "core/sim_options.h"
+#include "core/model/model.h"
+#include "core/run/sim_options.h"
 #include "io/scene.h"
 
 namespace vibro::differential {
@@ -33,7 +33,7 @@ rc::Gen<RandomScene> gen_scene();
 // Thread-safe (RapidCheck's generation context is global: one scene is generated at a time).
 RandomScene scene_at(std::uint64_t seed, long i);
 
-// Event-time tolerances and run lengths scale with the scene's time scale (core/model.h).
+// Event-time tolerances and run lengths scale with the scene's time scale (core/model/model.h).
 
 // The run options the instrument uses: the scene's t_end, the method and tolerances, and the
 // bounds on work (events, steps, wall clock) that keep a random run cheap.

@@ -31,9 +31,9 @@
 #include <thread>
 #include <vector>
 
-#include "core/simulate.h"
-#include "core/trust.h"
-#include "core/validate.h"
+#include "core/analysis/trust.h"
+#include "core/run/simulate.h"
+#include "core/run/validate.h"
 #include "tests/differential/compare.h"
 #include "tests/differential/scene_gen.h"
 
@@ -53,8 +53,8 @@ struct Row {
   bool trusted_to_end = false;
   bool missed = false;
   double window = 0.0, estimate = 0.0, truth = 0.0;
-  double asked = 0.0;  // what the tolerance asks of the event times: rtol·(T0 + window)
-  int events = 0;  // compared
+  double asked = 0.0;        // what the tolerance asks of the event times: rtol·(T0 + window)
+  int events = 0;            // compared
   double check_ratio = 0.0;  // wall time with the check over without it
 };
 
@@ -187,7 +187,8 @@ void show(const RandomScene& scene, Method method, double rtol) {
   std::cout << "run " << method_name(method) << " rtol " << rtol << ": event_time_error "
             << run.stats.event_time_error << " s, trusted until " << run.stats.trusted_until
             << " of " << run.stats.t_reached << " s; shadow " << run.stats.check_method
-            << "; steps " << run.stats.steps << ", " << shadow.stats.steps << ", " << ref.stats.steps;
+            << "; steps " << run.stats.steps << ", " << shadow.stats.steps << ", "
+            << ref.stats.steps;
   for (const RunResult& a : alternates) {
     lists.push_back(by_instant(a.events));
     std::cout << ", " << a.stats.steps;
@@ -214,8 +215,10 @@ void show(const RandomScene& scene, Method method, double rtol) {
       }
       const Event& e = lists[j][k];
       const Event* against = j >= 3 && k < lists[2].size() ? &lists[2][k] : base;
-      if (j == 0 || !against || !same(e, *against)) std::cout << name(e) << " t=" << std::setprecision(15) << e.t;
-      else std::cout << std::setprecision(3) << e.t - against->t;
+      if (j == 0 || !against || !same(e, *against))
+        std::cout << name(e) << " t=" << std::setprecision(15) << e.t;
+      else
+        std::cout << std::setprecision(3) << e.t - against->t;
     }
     std::cout << std::setprecision(6) << "\n";
   }
@@ -243,13 +246,20 @@ int main(int argc, char** argv) {
   std::string out, dump, show_run;
   for (int k = 1; k + 1 < argc; k += 2) {
     const std::string key = argv[k];
-    if (key == "--count") count = std::atol(argv[k + 1]);
-    else if (key == "--seed") seed = std::strtoull(argv[k + 1], nullptr, 10);
-    else if (key == "--jobs") jobs = std::max(1, std::atoi(argv[k + 1]));
-    else if (key == "--first") first = std::atol(argv[k + 1]);
-    else if (key == "--out") out = argv[k + 1];
-    else if (key == "--dump") dump = argv[k + 1];
-    else if (key == "--show") show_run = argv[k + 1];
+    if (key == "--count")
+      count = std::atol(argv[k + 1]);
+    else if (key == "--seed")
+      seed = std::strtoull(argv[k + 1], nullptr, 10);
+    else if (key == "--jobs")
+      jobs = std::max(1, std::atoi(argv[k + 1]));
+    else if (key == "--first")
+      first = std::atol(argv[k + 1]);
+    else if (key == "--out")
+      out = argv[k + 1];
+    else if (key == "--dump")
+      dump = argv[k + 1];
+    else if (key == "--show")
+      show_run = argv[k + 1];
     else {
       std::cerr << "usage: trust_scan --count N [--seed S] [--first I] [--jobs J] [--out runs.csv] "
                    "[--dump DIR]\n";
@@ -282,7 +292,8 @@ int main(int argc, char** argv) {
   std::ofstream csv;
   if (!out.empty()) {
     csv.open(out);
-    csv << "scene,method,rtol,trusted_to_end,missed,window,events,estimate,truth,asked,check_ratio\n";
+    csv << "scene,method,rtol,trusted_to_end,missed,window,events,estimate,truth,asked,check_"
+           "ratio\n";
   }
   struct Cell {
     long runs = 0, trusted = 0, missed = 0, low = 0, low_that_matters = 0;
@@ -293,9 +304,9 @@ int main(int argc, char** argv) {
     if (!dump.empty() && std::any_of(rows.begin(), rows.end(), flagged)) {
       const long i = rows.front().scene;
       std::ofstream(dump + "/scene-" + std::to_string(seed) + "-" + std::to_string(i) + ".json")
-          << scene_json_text(scene_at(seed, i), Method::automatic, 1e-8,
-                             "trust_scan seed " + std::to_string(seed) + " scene " +
-                                 std::to_string(i))
+          << scene_json_text(
+                 scene_at(seed, i), Method::automatic, 1e-8,
+                 "trust_scan seed " + std::to_string(seed) + " scene " + std::to_string(i))
           << "\n";
     }
     for (const Row& r : rows) {
@@ -321,12 +332,13 @@ int main(int argc, char** argv) {
                "missed (wrong events trusted) | check cost, median |\n"
             << "|---|---|---:|---:|---:|---:|---:|---:|---:|\n";
   for (const auto& [key, c] : cells) {
-    std::cout << "| " << method_name(static_cast<Method>(key.first)) << " | " << std::setprecision(0)
-              << std::scientific << key.second << " | " << std::defaultfloat << c.runs << " | "
-              << std::fixed << std::setprecision(1) << 100.0 * c.trusted / c.runs << " % | "
-              << std::setprecision(2) << median(c.ratios) << " | " << std::setprecision(1)
-              << (c.ratios.empty() ? 0.0 : 100.0 * c.low / c.ratios.size()) << " % | "
-              << c.low_that_matters << " | " << c.missed << " | " << std::setprecision(2) << median(c.check) << "× |\n"
+    std::cout << "| " << method_name(static_cast<Method>(key.first)) << " | "
+              << std::setprecision(0) << std::scientific << key.second << " | " << std::defaultfloat
+              << c.runs << " | " << std::fixed << std::setprecision(1) << 100.0 * c.trusted / c.runs
+              << " % | " << std::setprecision(2) << median(c.ratios) << " | "
+              << std::setprecision(1) << (c.ratios.empty() ? 0.0 : 100.0 * c.low / c.ratios.size())
+              << " % | " << c.low_that_matters << " | " << c.missed << " | " << std::setprecision(2)
+              << median(c.check) << "× |\n"
               << std::defaultfloat;
   }
   return 0;

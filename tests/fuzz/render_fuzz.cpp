@@ -26,7 +26,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "io/scene_json.h"
 #include "render/figure.h"
 #include "render/run_plan.h"

@@ -5,7 +5,7 @@
 #include <numbers>
 #include <string>
 
-#include "core/validate.h"
+#include "core/run/validate.h"
 #include "render/figure.h"
 #include "server/config.h"
 #include "tests/differential/scene_gen.h"

@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "io/orbit_json.h"
 #include "io/orbit_request.h"
 #include "io/scene_json.h"
@@ -54,7 +54,8 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   // 3-D panels load OSMesa and work-precision panels run a sweep of whole simulations: both
   // too slow for fuzzing, so they are drawn as phase portraits of the same pellet.
   for (PlotSpec& p : scene->figure.plots)
-    if (p.kind == PlotKind::cylinder || p.kind == PlotKind::work_precision) p.kind = PlotKind::phase;
+    if (p.kind == PlotKind::cylinder || p.kind == PlotKind::work_precision)
+      p.kind = PlotKind::phase;
   // Both output formats, chosen by the input's length so each is covered.
   const ImageFormat format = size % 2 ? ImageFormat::svg : ImageFormat::png;
   if (validate_figure(scene->figure, scene->model, format)) return 0;
@@ -68,8 +69,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   check(violation.empty(), violation);
 
   const RenderResult image = render_figure(scene->figure, scene->model, run, format);
-  if (image.ok()) check(!image.bytes.empty(), "a drawn figure has bytes");
-  else check(!image.error->field.empty(), "a render error names its field");
+  if (image.ok())
+    check(!image.bytes.empty(), "a drawn figure has bytes");
+  else
+    check(!image.error->field.empty(), "a render error names its field");
 
   if (!scene->periodic_orbit) return 0;
   OrbitRequest request = *scene->periodic_orbit;
@@ -87,8 +90,10 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   const PeriodicOrbit& o = found.orbit;
   if (o.converged) {
     check(std::isfinite(o.residual), "a converged orbit's residual is finite");
-    for (const auto& mu : o.multipliers) check(std::isfinite(std::abs(mu)), "multipliers are finite");
-    for (const PhasePoint& p : o.state) check(std::isfinite(p.phi) && std::isfinite(p.dphi), "the state is finite");
+    for (const auto& mu : o.multipliers)
+      check(std::isfinite(std::abs(mu)), "multipliers are finite");
+    for (const PhasePoint& p : o.state)
+      check(std::isfinite(p.phi) && std::isfinite(p.dphi), "the state is finite");
   } else {
     check(!o.message.empty(), "an orbit not found says why");
   }

@@ -5,7 +5,7 @@
 #include <new>
 #include <string>
 
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
 #include "tests/integrators/test_problems.h"
 
 namespace {

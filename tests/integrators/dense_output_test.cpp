@@ -5,7 +5,7 @@
 #include <cmath>
 #include <string>
 
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
 #include "tests/integrators/test_problems.h"
 
 namespace vibro::testing {
@@ -106,8 +106,8 @@ TEST_P(IntegratorsDense, PreciseStateIsAsAccurateAsAStepsEnd) {
   auto s = make_stepper(GetParam(), o);
   s->start(sys, 0.0, Oscillator::initial());
   const auto from = [](const Vec& y0, double dt) {  // the exact flow over dt
-    return Vec{{y0[0] * std::cos(dt) + y0[1] * std::sin(dt),
-                y0[1] * std::cos(dt) - y0[0] * std::sin(dt)}};
+    return Vec{
+        {y0[0] * std::cos(dt) + y0[1] * std::sin(dt), y0[1] * std::cos(dt) - y0[0] * std::sin(dt)}};
   };
   double end_worst = 0.0, dense_worst = 0.0, precise_worst = 0.0;
   Vec start(2), out(2);

@@ -7,7 +7,7 @@
 #include <string>
 
 #include "core/integrators/radau5.h"
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
 #include "tests/integrators/test_problems.h"
 
 namespace vibro::testing {

@@ -6,15 +6,14 @@
 #include "core/integrators/dop853.h"
 #include "core/integrators/dopri5.h"
 #include "core/integrators/radau5.h"
+#include "core/integrators/stepper.h"
 #include "core/integrators/stiffness.h"
-#include "core/stepper.h"
 #include "tests/integrators/test_problems.h"
 
 namespace vibro::testing {
 namespace {
 
 using integrators::AutoSwitch;
-using integrators::Dop853;
 using integrators::Dop853;
 using integrators::Dopri5;
 using integrators::Radau5;

@@ -6,8 +6,8 @@
 #include <limits>
 #include <vector>
 
-#include "core/ode.h"
-#include "core/stepper.h"
+#include "core/integrators/ode.h"
+#include "core/integrators/stepper.h"
 
 namespace vibro::testing {
 

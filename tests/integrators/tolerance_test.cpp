@@ -4,7 +4,7 @@
 #include <string>
 #include <vector>
 
-#include "core/stepper.h"
+#include "core/integrators/stepper.h"
 #include "tests/integrators/test_problems.h"
 
 namespace vibro::testing {

@@ -34,7 +34,8 @@ TEST(LyapunovJson, ASceneAsksForTheExponentsOfItsRun) {
 TEST(LyapunovJson, TheRunsExponentsAreWrittenWithNullForMinusInfinity) {
   RunResult run;
   run.lyapunov = LyapunovSpectrum{{0.21, -std::numeric_limits<double>::infinity()}, 300.0, ""};
-  const json j = result_to_json(run, std::get<Scene>(scene_from_json(testing::impact_oscillator_orbit())).model);
+  const json j = result_to_json(
+      run, std::get<Scene>(scene_from_json(testing::impact_oscillator_orbit())).model);
   EXPECT_EQ(j["lyapunov"]["exponents"][0], 0.21);
   EXPECT_TRUE(j["lyapunov"]["exponents"][1].is_null());
   EXPECT_EQ(j["lyapunov"]["span"], 300.0);

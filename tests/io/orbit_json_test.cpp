@@ -1,13 +1,14 @@
 // The scene's "periodic_orbit" (io/orbit_json.h): read strictly with every bad field named, kept
 // through the canonical form; and an orbit's result in the shape of API.md, with null where a
 // number is not finite.
+#include "io/orbit_json.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
 #include <nlohmann/json.hpp>
 
-#include "io/orbit_json.h"
 #include "io/scene_json.h"
 #include "tests/io/orbit_scene.h"
 

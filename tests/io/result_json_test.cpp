@@ -1,10 +1,10 @@
 // Run results as JSON: the API's shape, and no NaN ever in the output.
+#include "io/result_json.h"
+
 #include <gtest/gtest.h>
 
 #include <cmath>
 #include <limits>
-
-#include "io/result_json.h"
 
 namespace vibro {
 namespace {
@@ -23,7 +23,8 @@ TEST(ResultJson, HasTheApiShapeAndNoNonFiniteNumbers) {
   e.dphi_before = {2.0};
   e.dphi_after = {std::numeric_limits<double>::quiet_NaN()};
   run.events.push_back(e);
-  run.summary.final = {{0.5, std::numeric_limits<double>::infinity(), PelletState::resting_at_limiter, 0}};
+  run.summary.final = {
+      {0.5, std::numeric_limits<double>::infinity(), PelletState::resting_at_limiter, 0}};
   run.summary.last_impact = {1, 0.1};
   run.summary.limiter_impacts = 1;
   run.summary.impacts_by_limiter = {{1}};

@@ -1,11 +1,12 @@
 // Scene reading: every kind of bad scene is answered with its field named; presets parse; the
 // canonical form is stable.
+#include "io/scene_json.h"
+
 #include <gtest/gtest.h>
 
 #include <nlohmann/json.hpp>
 
 #include "io/presets.h"
-#include "io/scene_json.h"
 
 namespace vibro {
 namespace {
@@ -50,7 +51,8 @@ TEST(SceneJson, EveryBadFieldIsNamed) {
       {"k_c over 1", json::json_pointer("/model/k_c"), 1.5, "model.k_c"},
       {"friction unknown", json::json_pointer("/model/friction"), "sticky", "model.friction"},
       {"mass zero", json::json_pointer("/model/pellets/1/m"), 0.0, "model.pellets[1].m"},
-      {"mass missing", json::json_pointer("/model/pellets/1"), json{{"phi0", 0.3}}, "model.pellets[1].m"},
+      {"mass missing", json::json_pointer("/model/pellets/1"), json{{"phi0", 0.3}},
+       "model.pellets[1].m"},
       {"phi0 a bool", json::json_pointer("/model/pellets/0/phi0"), true, "model.pellets[0].phi0"},
       {"dphi0 huge", json::json_pointer("/model/pellets/0/dphi0"), 1e300, "model.pellets[0].dphi0"},
       {"pellets coincide", json::json_pointer("/model/pellets/1/phi0"), 0.1 + 6.283185307179586,
@@ -60,10 +62,12 @@ TEST(SceneJson, EveryBadFieldIsNamed) {
        json(std::vector<json>(9, json{{"m", 1}, {"phi0", 0}})), "model.pellets"},
       {"pellet not an object", json::json_pointer("/model/pellets/0"), 3, "model.pellets[0]"},
       {"k over 1", json::json_pointer("/model/limiters/1/k"), 2.0, "model.limiters[1].k"},
-      {"angle missing", json::json_pointer("/model/limiters/1"), json{{"k", 0.5}}, "model.limiters[1].angle"},
+      {"angle missing", json::json_pointer("/model/limiters/1"), json{{"k", 0.5}},
+       "model.limiters[1].angle"},
       {"rearm_by out of range", json::json_pointer("/model/limiters/0/rearm_by"), 5,
        "model.limiters[0].rearm_by"},
-      {"rearm_by itself", json::json_pointer("/model/limiters/0/rearm_by"), 0, "model.limiters[0].rearm_by"},
+      {"rearm_by itself", json::json_pointer("/model/limiters/0/rearm_by"), 0,
+       "model.limiters[0].rearm_by"},
       {"limiters coincide", json::json_pointer("/model/limiters/1/angle"), 0.7 - 6.283185307179586,
        "model.limiters[1].angle"},
       {"limiter pellets out of range", json::json_pointer("/model/limiters/1/pellets"), json{0, 4},
@@ -76,18 +80,24 @@ TEST(SceneJson, EveryBadFieldIsNamed) {
       {"atol negative", json::json_pointer("/solver"), json{{"atol", -1.0}}, "solver.atol"},
       {"plot kind unknown", json::json_pointer("/plots/0/kind"), "polar", "plots[0].kind"},
       {"plot pellet out of range", json::json_pointer("/plots/0/pellet"), 2, "plots[0].pellet"},
-      {"plot pellets out of range", json::json_pointer("/plots/1/pellets"), json{0, 7}, "plots[1].pellets[1]"},
+      {"plot pellets out of range", json::json_pointer("/plots/1/pellets"), json{0, 7},
+       "plots[1].pellets[1]"},
       {"plot window empty", json::json_pointer("/plots/0/t_to"), -1.0, "plots[0].t_to"},
-      {"plot branch zero", json::json_pointer("/plots/0/branches"), json{0}, "plots[0].branches[0]"},
-      {"phi_range reversed", json::json_pointer("/plots/0/phi_range"), json{1.0, 0.0}, "plots[0].phi_range"},
-      {"dphi_range one number", json::json_pointer("/plots/1/dphi_range"), json{1.0}, "plots[1].dphi_range"},
-      {"phi_range a string", json::json_pointer("/plots/0/phi_range"), json{"a", 1.0}, "plots[0].phi_range[0]"},
+      {"plot branch zero", json::json_pointer("/plots/0/branches"), json{0},
+       "plots[0].branches[0]"},
+      {"phi_range reversed", json::json_pointer("/plots/0/phi_range"), json{1.0, 0.0},
+       "plots[0].phi_range"},
+      {"dphi_range one number", json::json_pointer("/plots/1/dphi_range"), json{1.0},
+       "plots[1].dphi_range"},
+      {"phi_range a string", json::json_pointer("/plots/0/phi_range"), json{"a", 1.0},
+       "plots[0].phi_range[0]"},
       {"wrap not a boolean", json::json_pointer("/plots/0/wrap"), 1, "plots[0].wrap"},
       {"width zero", json::json_pointer("/width"), 0, "width"},
       {"height over the limit", json::json_pointer("/height"), 100000, "height"},
       {"width fractional", json::json_pointer("/width"), 100.5, "width"},
       {"typo in a key", json::json_pointer("/model/alpah0"), 0.1, "model.alpah0"},
-      {"typo in a pellet key", json::json_pointer("/model/pellets/0/dphi"), 0.1, "model.pellets[0].dphi"},
+      {"typo in a pellet key", json::json_pointer("/model/pellets/0/dphi"), 0.1,
+       "model.pellets[0].dphi"},
       {"unknown top-level key", json::json_pointer("/tend"), 3, "tend"},
   };
   for (const BadCase& c : cases) {
@@ -157,7 +167,8 @@ TEST(SceneJson, ASyntaxErrorSaysWhereAndAnOverflowSaysWhat) {
 TEST(SceneJson, EveryPresetParsesAndItsCanonicalFormIsStable) {
   for (const PresetText& p : presets()) {
     const SceneOrError first = scene_from_text(p.json);
-    ASSERT_TRUE(std::holds_alternative<Scene>(first)) << p.name << ": " << std::get<FieldError>(first).field;
+    ASSERT_TRUE(std::holds_alternative<Scene>(first))
+        << p.name << ": " << std::get<FieldError>(first).field;
     const json canonical = scene_to_json(std::get<Scene>(first));
     const SceneOrError again = scene_from_json(canonical);
     ASSERT_TRUE(std::holds_alternative<Scene>(again)) << p.name;
@@ -192,7 +203,8 @@ TEST(SceneJson, AMechanismPanelReadsItsTimeWithinTheRun) {
   const PlotSpec& plot = std::get<Scene>(read).figure.plots[1];
   EXPECT_EQ(plot.kind, PlotKind::mechanism);
   EXPECT_EQ(plot.t, 1.5);
-  EXPECT_EQ(scene_to_json(std::get<Scene>(read))["plots"][1], json({{"kind", "mechanism"}, {"t", 1.5}}));
+  EXPECT_EQ(scene_to_json(std::get<Scene>(read))["plots"][1],
+            json({{"kind", "mechanism"}, {"t", 1.5}}));
   scene["plots"][1].erase("t");
   EXPECT_EQ(std::get<Scene>(scene_from_json(scene)).figure.plots[1].t, 0.0);
   for (const json& bad : {json(-0.1), json(2.5), json("1")}) {
@@ -216,8 +228,8 @@ TEST(SceneJson, ThePaperPresetStatesItsAssumptionsAndComesFirst) {
 }
 
 TEST(SceneJson, DefaultsAreThoseOfTheApi) {
-  const Scene s = std::get<Scene>(scene_from_json(json::parse(
-      R"({"model": {"R": 1, "pellets": [{"m": 1, "phi0": 0}]}, "t_end": 1})")));
+  const Scene s = std::get<Scene>(scene_from_json(
+      json::parse(R"({"model": {"R": 1, "pellets": [{"m": 1, "phi0": 0}]}, "t_end": 1})")));
   EXPECT_EQ(s.model.g, 9.81);
   EXPECT_EQ(s.model.friction, FrictionLaw::paper);
   EXPECT_EQ(s.model.k_c, 1.0);

@@ -5,8 +5,8 @@
 
 #include <string>
 
-#include "core/orbit_continuation.h"
-#include "core/sweep.h"
+#include "core/analysis/orbit_continuation.h"
+#include "core/analysis/sweep.h"
 #include "png_decode.h"
 #include "render/figure.h"
 #include "svg_check.h"
@@ -54,7 +54,8 @@ RenderResult draw(const Continued& c, ImageFormat format, const SweepSpec* sweep
 
 long dark_pixels(const testing::Decoded& image) {
   long n = 0;
-  for (std::uint32_t p : image.argb) n += ((p >> 16) & 0xff) < 80 && (p & 0xff) < 80 && ((p >> 8) & 0xff) < 80;
+  for (std::uint32_t p : image.argb)
+    n += ((p >> 16) & 0xff) < 80 && (p & 0xff) < 80 && ((p >> 8) & 0xff) < 80;
   return n;
 }
 
@@ -95,7 +96,8 @@ TEST(BranchPlot, WithoutABranchItIsRefused) {
   PlotSpec plot;
   plot.kind = PlotKind::branch;
   figure.plots = {plot};
-  const RenderResult r = render_figure(figure, impact_oscillator(6.0), RunResult{}, ImageFormat::png);
+  const RenderResult r =
+      render_figure(figure, impact_oscillator(6.0), RunResult{}, ImageFormat::png);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error->field, "plots[0].kind");
 }

@@ -6,16 +6,16 @@
 
 #include <string>
 
-#include "core/simulate.h"
-#include "core/validate.h"
+#include "core/run/simulate.h"
+#include "core/run/validate.h"
 #include "paper_scene.h"
 #include "png_decode.h"
 #include "render/axes.h"
 #include "render/cylinder_panel.h"
 #include "render/layout.h"
 #include "render/phase_jumps.h"
-#include "render/track_window.h"
 #include "render/style.h"
+#include "render/track_window.h"
 #include "svg_check.h"
 #include "synthetic_run.h"
 
@@ -239,7 +239,8 @@ TEST(RealRun, ALoopingPelletFillsThePlotHeight) {
   int top = image.height, bottom = -1;
   for (int y = 0; y < image.height; ++y)
     for (int x = static_cast<int>(area.x); x < static_cast<int>(area.right()); ++x)
-      if (testing::near_colour(image.at(x, y), kBranch1, 6)) top = std::min(top, y), bottom = std::max(bottom, y);
+      if (testing::near_colour(image.at(x, y), kBranch1, 6))
+        top = std::min(top, y), bottom = std::max(bottom, y);
   ASSERT_GE(bottom, 0);
   EXPECT_GT((bottom - top) / area.h, 0.6) << top << " " << bottom;
 }

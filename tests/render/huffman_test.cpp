@@ -29,7 +29,8 @@ TEST(Huffman, RfcExampleGivesItsCanonicalCodes) {
   const auto codes = canonical_codes(lengths);
   for (std::size_t s = 0; s < lengths.size(); ++s) {
     unsigned reversed = 0;
-    for (int i = 0; i < lengths[s]; ++i) reversed |= ((msb_first[s] >> i) & 1u) << (lengths[s] - 1 - i);
+    for (int i = 0; i < lengths[s]; ++i)
+      reversed |= ((msb_first[s] >> i) & 1u) << (lengths[s] - 1 - i);
     EXPECT_EQ(codes[s], reversed) << "symbol " << s;
   }
 }

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "paper_scene.h"
 #include "render/figure.h"
 
@@ -14,7 +14,8 @@ namespace {
 
 // The anchor of every <text> element whose content is `label`: render/svg_text.h writes each as
 // transform="translate(x y) ...".
-std::vector<std::pair<double, double>> text_positions(const std::string& svg, const std::string& label) {
+std::vector<std::pair<double, double>> text_positions(const std::string& svg,
+                                                      const std::string& label) {
   std::vector<std::pair<double, double>> at;
   for (std::size_t p = svg.find("<text"); p != std::string::npos; p = svg.find("<text", p + 1)) {
     const std::size_t close = svg.find('>', p), end = svg.find("</text>", p);
@@ -43,9 +44,10 @@ TEST(LegendRoom, InASmallFigureThePortraitsLegendsStayOutOfTheirPlots) {
   ASSERT_EQ(labels.size(), 2u);
   for (const auto& [x, y] : labels) {
     for (const PlotAxes& p : svg.plot_axes) {
-      const bool inside = x >= p.left && x <= p.left + p.width && y >= p.top && y <= p.top + p.height;
-      EXPECT_FALSE(inside) << "a legend label at (" << x << ", " << y << ") inside the plot of pellet "
-                           << p.pellet + 1;
+      const bool inside =
+          x >= p.left && x <= p.left + p.width && y >= p.top && y <= p.top + p.height;
+      EXPECT_FALSE(inside) << "a legend label at (" << x << ", " << y
+                           << ") inside the plot of pellet " << p.pellet + 1;
     }
   }
   // At the full size the same legends fit in a free corner: inside their plots.

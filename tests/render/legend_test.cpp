@@ -74,7 +74,8 @@ TEST(LegendFit, ALegendWithNoFreeCornerIsReportedAndMovedOutOfThePlot) {
   const Rect area{100, 150, 400, 300};
   Obstacles everywhere;
   for (double y = 160; y < 450; y += 20) everywhere.lines.push_back({{100, y}, {500, y}});
-  const std::vector<LegendEntry> entries = {{"pellet 1", kInk}, {"limiter impact", kInk, Swatch::marker}};
+  const std::vector<LegendEntry> entries = {{"pellet 1", kInk},
+                                            {"limiter impact", kInk, Swatch::marker}};
   LegendFit fit;
   watch_legends(cr.get(), &fit);
   draw_legend(cr.get(), entries, area, everywhere, style);
@@ -105,7 +106,8 @@ TEST(LegendFit, ALegendWithNoFreeCornerIsReportedAndMovedOutOfThePlot) {
     return n;
   };
   EXPECT_GT(ink_in({area.right() + 1, area.y, 190, fit.size.y}), 100);
-  EXPECT_GT(ink_in({area.right() - fit.size.x, area.y - fit.size.y - 10, fit.size.x, fit.size.y}), 100);
+  EXPECT_GT(ink_in({area.right() - fit.size.x, area.y - fit.size.y - 10, fit.size.x, fit.size.y}),
+            100);
 }
 
 }  // namespace

@@ -3,8 +3,8 @@
 
 #include <numbers>
 
-#include "core/model.h"
-#include "core/sim_options.h"
+#include "core/model/model.h"
+#include "core/run/sim_options.h"
 
 namespace vibro::testing {
 

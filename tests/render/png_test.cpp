@@ -82,8 +82,8 @@ void expect_round_trip(const Words& w) {
 
 // A figure-like image: white, a grid, horizontal and vertical lines, a curve, noise in a box.
 Words figure_like(int width, int height, unsigned seed) {
-  Words w{width, height, std::vector<std::uint32_t>(static_cast<std::size_t>(width) * height,
-                                                    0xFFFFFFFFu)};
+  Words w{width, height,
+          std::vector<std::uint32_t>(static_cast<std::size_t>(width) * height, 0xFFFFFFFFu)};
   std::mt19937 rng(seed);
   for (int y = 0; y < height; ++y)
     for (int x = 0; x < width; ++x) {
@@ -125,14 +125,14 @@ TEST(Png, NoiseSpansManyBlocksAndStillRoundTrips) {
 TEST(Png, EdgeShapesRoundTrip) {
   // Widths 9 and 301 end a row on a whole four-pixel quad plus one pixel: the vector row
   // conversion must not store past the row's end (found by fuzzing under ASan).
-  for (const auto& [width, height] : {std::pair{1, 1}, {1, 50}, {50, 1}, {2, 3}, {258, 4},
-                                      {87, 3}, {86, 5}, {9, 2}, {301, 3}}) {
+  for (const auto& [width, height] :
+       {std::pair{1, 1}, {1, 50}, {50, 1}, {2, 3}, {258, 4}, {87, 3}, {86, 5}, {9, 2}, {301, 3}}) {
     SCOPED_TRACE(std::to_string(width) + "x" + std::to_string(height));
     expect_round_trip(figure_like(width, height, 3));
     // One colour everywhere: runs of every length, split at 258 bytes without short pieces.
-    expect_round_trip(Words{width, height,
-                            std::vector<std::uint32_t>(static_cast<std::size_t>(width) * height,
-                                                       0xFF336699u)});
+    expect_round_trip(
+        Words{width, height,
+              std::vector<std::uint32_t>(static_cast<std::size_t>(width) * height, 0xFF336699u)});
   }
 }
 
@@ -161,8 +161,8 @@ TEST(Png, DividesOutPremultipliedAlpha) {
   EXPECT_EQ(png[25], 6);  // IHDR colour type: RGBA
   const auto raw = inflated_rows(png, 2 * (1 + 8));
   ASSERT_EQ(raw.size(), 18u);
-  EXPECT_EQ(raw[1 + 3], 0);       // fully transparent: alpha 0
-  EXPECT_EQ(raw[1 + 4], 0x80);    // (0x40 · 255 + 64) / 128
+  EXPECT_EQ(raw[1 + 3], 0);     // fully transparent: alpha 0
+  EXPECT_EQ(raw[1 + 4], 0x80);  // (0x40 · 255 + 64) / 128
   EXPECT_EQ(raw[1 + 4 + 3], 0x80);
   const auto decoded = testing::decode_png(png);
   ASSERT_EQ(decoded.width, 2);

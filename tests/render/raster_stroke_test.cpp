@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "png_decode.h"
 #include "render/cairo_ptr.h"
 #include "render/figure.h"

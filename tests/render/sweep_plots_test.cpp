@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 #include "png_decode.h"
 #include "render/figure.h"
 #include "render/layout.h"

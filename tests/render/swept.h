@@ -2,7 +2,7 @@
 // pellet forced at 0.3 N striking a stop at the bottom).
 #pragma once
 
-#include "core/sweep.h"
+#include "core/analysis/sweep.h"
 #include "render/figure.h"
 #include "tests/core/impact_oscillator.h"
 

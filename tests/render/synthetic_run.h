@@ -3,8 +3,8 @@
 // recorded the way core/ reports them (branches between events, events in time order).
 #pragma once
 
-#include "core/model.h"
-#include "core/result.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
 
 namespace vibro::testing {
 

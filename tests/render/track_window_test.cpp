@@ -27,9 +27,10 @@ TEST(ClipToWindow, WholeOrNothing) {
 }
 
 // Two branches with a gap between them (a pellet at rest that the run stopped sampling).
-const PelletTrack kTrack{0, {Branch{1, {{0.5, 0.0, 2.0}, {1.0, 1.0, 2.0}}},
-                             Branch{2, {{1.0, 1.0, -1.0}, {1.5, 0.5, -1.0}}},
-                             Branch{3, {{3.0, 0.5, 0.0}, {4.0, 0.5, 0.0}}}}};
+const PelletTrack kTrack{
+    0,
+    {Branch{1, {{0.5, 0.0, 2.0}, {1.0, 1.0, 2.0}}}, Branch{2, {{1.0, 1.0, -1.0}, {1.5, 0.5, -1.0}}},
+     Branch{3, {{3.0, 0.5, 0.0}, {4.0, 0.5, 0.0}}}}};
 
 TEST(StateAt, InterpolatesInsideABranch) {
   EXPECT_DOUBLE_EQ(state_at(kTrack, 0.75)->phi, 0.5);
@@ -39,9 +40,9 @@ TEST(StateAt, InterpolatesInsideABranch) {
 }
 
 TEST(StateAt, HoldsThePlaceWhereNoBranchSpansTheTime) {
-  EXPECT_DOUBLE_EQ(state_at(kTrack, 2.0)->phi, 0.5);   // between branches
-  EXPECT_DOUBLE_EQ(state_at(kTrack, 9.0)->phi, 0.5);   // after the record
-  EXPECT_DOUBLE_EQ(state_at(kTrack, 0.0)->phi, 0.0);   // before it
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 2.0)->phi, 0.5);  // between branches
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 9.0)->phi, 0.5);  // after the record
+  EXPECT_DOUBLE_EQ(state_at(kTrack, 0.0)->phi, 0.0);  // before it
   EXPECT_DOUBLE_EQ(state_at(kTrack, 9.0)->t, 9.0);
   EXPECT_FALSE(state_at(PelletTrack{0, {Branch{1, {}}}}, 1.0));
 }

@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-#include "core/simulate.h"
+#include "core/run/simulate.h"
 #include "paper_scene.h"
 #include "render/figure.h"
 #include "render/gl/offscreen_context.h"

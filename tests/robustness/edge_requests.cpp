@@ -12,7 +12,7 @@
 #include <stop_token>
 #include <thread>
 
-#include "core/parameter.h"
+#include "core/model/parameter.h"
 #include "io/orbit_json.h"
 #include "io/scene_json.h"
 #include "io/sweep_json.h"
@@ -51,7 +51,7 @@ const json* at_path(const json& j, const std::string& path) {
   return field_at(const_cast<json&>(j), path);
 }
 
-// The model fields a request varies: a refusal may name one of them (core/sweep.h,
+// The model fields a request varies: a refusal may name one of them (core/analysis/sweep.h,
 // validate_sweep: "a model field that a swept value makes invalid").
 bool varied(const json& request, const std::string& field) {
   for (const char* path :

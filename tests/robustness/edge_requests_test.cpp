@@ -19,7 +19,7 @@
 #include <string>
 #include <vector>
 
-#include "core/validate.h"
+#include "core/run/validate.h"
 #include "io/presets.h"
 #include "tests/robustness/edge_values.h"
 
@@ -52,7 +52,7 @@ server::Limits limits() {
   return l;
 }
 
-// A model field and the bound validate_model holds it to (core/validate.cpp).
+// A model field and the bound validate_model holds it to (core/run/validate.cpp).
 struct Bounded {
   std::string path;  // "model.pellets[0].F0"
   double lo, hi;

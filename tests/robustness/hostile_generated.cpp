@@ -35,8 +35,8 @@ std::vector<HostileCase> non_finite_cases() {
                                             "\"1e999\""};
   // Literals that overflow a double (nlohmann::json refuses them as invalid JSON rather than
   // reading infinity), and the bare words, which are not JSON at all.
-  const std::vector<std::string> not_json = {"1e999", "-1e999", "1E+400", "NaN", "Infinity",
-                                             "-Infinity"};
+  const std::vector<std::string> not_json = {"1e999", "-1e999",   "1E+400",
+                                             "NaN",   "Infinity", "-Infinity"};
   std::vector<HostileCase> cases;
   for (const Leaf& leaf : leaves(scene)) {
     if (!scene[leaf.pointer].is_number()) continue;
@@ -56,8 +56,8 @@ std::vector<HostileCase> huge_array_cases() {
   std::vector<HostileCase> cases;
   for (const Leaf& leaf : leaves(scene))
     if (scene[leaf.pointer].is_array())
-      cases.push_back({leaf.field + " with 10^6 items", with_raw(scene, leaf.pointer, million),
-                       leaf.field});
+      cases.push_back(
+          {leaf.field + " with 10^6 items", with_raw(scene, leaf.pointer, million), leaf.field});
   return cases;
 }
 

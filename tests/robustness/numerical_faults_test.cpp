@@ -67,7 +67,8 @@ TEST(NumericalFaults, NonFiniteStateIsNamedWithItsTime) {
 // g/R = 1e301 and dphi² = 1e14: the Jacobian's entries overflow and Newton cannot converge.
 TEST(NumericalFaults, RadauNewtonFailureIsNamedWithItsTime) {
   expect_failure(R"({"model": {"R": 1e-300, "pellets": [{"m": 1, "phi0": 0.1, "dphi0": 1e7}]},
-      "t_end": 5})", {Method::radau5}, "0", "the implicit method's Newton iteration failed");
+      "t_end": 5})",
+                 {Method::radau5}, "0", "the implicit method's Newton iteration failed");
 }
 
 // Extreme scenes that the reader accepts. Each ends by any termination, within its deadline,

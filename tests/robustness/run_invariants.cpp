@@ -14,7 +14,8 @@ bool has_word(const std::string& text, std::string_view word) {
   const auto letter = [](char c) { return std::isalpha(static_cast<unsigned char>(c)) != 0; };
   for (std::size_t at = text.find(word); at != std::string::npos; at = text.find(word, at + 1)) {
     const std::size_t end = at + word.size();
-    if ((at == 0 || !letter(text[at - 1])) && (end == text.size() || !letter(text[end]))) return true;
+    if ((at == 0 || !letter(text[at - 1])) && (end == text.size() || !letter(text[end])))
+      return true;
   }
   return false;
 }
@@ -22,7 +23,8 @@ bool has_word(const std::string& text, std::string_view word) {
 std::string event_violation(const RunResult& run, const Model& model, double t_end) {
   double t_prev = 0.0;
   for (const Event& e : run.events) {
-    if (!std::isfinite(e.t) || !std::isfinite(e.phi)) return "an event's time or angle is not finite";
+    if (!std::isfinite(e.t) || !std::isfinite(e.phi))
+      return "an event's time or angle is not finite";
     if (e.t < t_prev) return "events are out of time order";
     if (e.t > t_end * (1.0 + 1e-9) + 1e-12) return "an event lies after t_end";
     if (e.dphi_before.size() != e.pellets.size() || e.dphi_after.size() != e.pellets.size())

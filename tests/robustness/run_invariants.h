@@ -1,12 +1,12 @@
-// The contract every run keeps, however hostile its scene (core/simulate.h, io/result_json.h):
+// The contract every run keeps, however hostile its scene (core/run/simulate.h, io/result_json.h):
 // finite numbers, events in time order inside the run, an early stop that names its time, and
 // no NaN or infinity in the JSON. Shared by the robustness tests and the fuzz target.
 #pragma once
 
 #include <string>
 
-#include "core/model.h"
-#include "core/result.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
 
 namespace vibro::robustness {
 

@@ -36,24 +36,28 @@ RunResult expect_stopped(const char* text, const std::function<void(SimOptions&)
 
 TEST(RunLimits, DeadlineStopsALongRunPromptly) {
   const auto start = std::chrono::steady_clock::now();
-  const RunResult run = expect_stopped(kLongForcedRun, [](SimOptions& o) { o.deadline_ms = 100.0; },
-                                       Termination::deadline, "deadline of 100 ms");
+  const RunResult run = expect_stopped(
+      kLongForcedRun, [](SimOptions& o) { o.deadline_ms = 100.0; }, Termination::deadline,
+      "deadline of 100 ms");
   const std::chrono::duration<double> wall = std::chrono::steady_clock::now() - start;
   EXPECT_LT(run.stats.t_reached, 1e6);
-  EXPECT_LT(wall.count(), 5.0);  // generous: sanitizer builds on a busy machine, not a timing target
+  EXPECT_LT(wall.count(),
+            5.0);  // generous: sanitizer builds on a busy machine, not a timing target
 }
 
 TEST(RunLimits, EventLimitStopsARattleCleanly) {
-  const RunResult run = expect_stopped(kRattle, [](SimOptions& o) { o.max_events = 500; },
-                                       Termination::event_limit, "its limit of 500 events");
+  const RunResult run = expect_stopped(
+      kRattle, [](SimOptions& o) { o.max_events = 500; }, Termination::event_limit,
+      "its limit of 500 events");
   EXPECT_LE(run.events.size(), 500u);
   EXPECT_GT(run.stats.t_reached, 0.5);  // about 1 s of rattling at 2 ms per impact
   EXPECT_LT(run.stats.t_reached, 2.0);
 }
 
 TEST(RunLimits, StepLimitStopsALongRunCleanly) {
-  const RunResult run = expect_stopped(kLongForcedRun, [](SimOptions& o) { o.max_steps = 1000; },
-                                       Termination::step_limit, "its limit of 1000 steps");
+  const RunResult run = expect_stopped(
+      kLongForcedRun, [](SimOptions& o) { o.max_steps = 1000; }, Termination::step_limit,
+      "its limit of 1000 steps");
   EXPECT_LE(run.stats.steps, 1000);
 }
 

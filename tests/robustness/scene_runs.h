@@ -4,7 +4,7 @@
 
 #include <string_view>
 
-#include "core/result.h"
+#include "core/run/result.h"
 #include "io/scene.h"
 
 namespace vibro::robustness {

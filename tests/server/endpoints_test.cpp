@@ -87,7 +87,8 @@ TEST_F(Endpoints, SimulateGivesEventsOrTheTrajectoryAsCsv) {
   auto run = server->client().Post("/api/simulate", paper_scene(3.0), "application/json");
   ASSERT_TRUE(run);
   const json events = json::parse(run->body)["events"];
-  auto res = server->client().Post("/api/simulate?format=csv", paper_scene(3.0), "application/json");
+  auto res =
+      server->client().Post("/api/simulate?format=csv", paper_scene(3.0), "application/json");
   ASSERT_TRUE(res);
   ASSERT_EQ(res->status, 200) << res->body;
   EXPECT_EQ(res->get_header_value("Content-Type"), "text/csv");
@@ -99,7 +100,8 @@ TEST_F(Endpoints, SimulateGivesEventsOrTheTrajectoryAsCsv) {
   for (; std::getline(rows, line); ++k) {
     ASSERT_LT(k, events.size());
     EXPECT_EQ(std::stod(line.substr(0, line.find(','))), events[k]["t"].get<double>());
-    EXPECT_NE(line.find("," + events[k]["kind"].get<std::string>() + ","), std::string::npos) << line;
+    EXPECT_NE(line.find("," + events[k]["kind"].get<std::string>() + ","), std::string::npos)
+        << line;
   }
   EXPECT_EQ(k, events.size());
   // A collision lists its pellets and their speeds joined by ';', no limiter (−1).
@@ -112,8 +114,9 @@ TEST_F(Endpoints, SimulateGivesEventsOrTheTrajectoryAsCsv) {
   EXPECT_GT(std::count(res->body.begin(), res->body.end(), '\n'), 100);
   EXPECT_NE(res->body.find("\n0,1,1,"), std::string::npos);  // pellet 1 (index) from t = 0
 
-  for (const char* bad : {"/api/simulate?preset=paper&format=xml", "/api/simulate?preset=paper&what=events",
-                          "/api/simulate?preset=paper&format=csv&what=branches"}) {
+  for (const char* bad :
+       {"/api/simulate?preset=paper&format=xml", "/api/simulate?preset=paper&what=events",
+        "/api/simulate?preset=paper&format=csv&what=branches"}) {
     res = server->client().Get(bad);
     ASSERT_TRUE(res);
     EXPECT_EQ(res->status, 400) << bad;
@@ -202,15 +205,15 @@ TEST_F(Endpoints, WorkPrecisionGivesTheTableOrTheDiagramUncached) {
   ASSERT_EQ(body["points"].size(), 40u);  // 4 methods × 10 tolerances
   for (const json& p : body["points"]) EXPECT_TRUE(p["error"].is_number());
 
-  auto svg = server->client().Post("/api/work-precision?format=svg", paper_scene(2.0),
-                                    "application/json");
+  auto svg =
+      server->client().Post("/api/work-precision?format=svg", paper_scene(2.0), "application/json");
   ASSERT_TRUE(svg);
   ASSERT_EQ(svg->status, 200);
   EXPECT_EQ(svg->get_header_value("Content-Type"), "image/svg+xml");
   EXPECT_NE(svg->body.find("<svg"), std::string::npos);
 
-  auto bad = server->client().Post("/api/work-precision?format=gif", paper_scene(2.0),
-                                   "application/json");
+  auto bad =
+      server->client().Post("/api/work-precision?format=gif", paper_scene(2.0), "application/json");
   ASSERT_TRUE(bad);
   EXPECT_EQ(bad->status, 400);
   EXPECT_EQ(json::parse(bad->body)["field"], "format");

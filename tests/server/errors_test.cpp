@@ -3,7 +3,6 @@
 #include <gtest/gtest.h>
 
 #include <fstream>
-
 #include <nlohmann/json.hpp>
 
 #include "tests/server/test_server.h"
@@ -102,7 +101,7 @@ TEST_F(Errors, AQueryParameterGivenTwiceIsRefusedAndValuesAreReadWhole) {
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 400);
   EXPECT_NE(res->body.find("dop853=x"), std::string::npos) << res->body;  // not "x"
-  res = get("/api/simulate?preset=paper&t_end=0%2E5&method=dop853");  // still decoded
+  res = get("/api/simulate?preset=paper&t_end=0%2E5&method=dop853");      // still decoded
   ASSERT_TRUE(res);
   EXPECT_EQ(res->status, 200) << res->body;
 }
@@ -182,10 +181,11 @@ TEST_F(Errors, AnOverlongTargetIsRefused) {
 // other way (request smuggling): refused, and the connection ends.
 TEST_F(Errors, TwoContentLengthsAreRefused) {
   const std::string body = paper_scene(0.5);
-  const RawReply reply = raw_exchange(
-      server->port(), "POST /api/simulate HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
-                      "Content-Length: " + std::to_string(body.size()) +
-                      "\r\nContent-Length: 5\r\n\r\n" + body);
+  const RawReply reply =
+      raw_exchange(server->port(),
+                   "POST /api/simulate HTTP/1.1\r\nHost: x\r\nContent-Type: application/json\r\n"
+                   "Content-Length: " +
+                       std::to_string(body.size()) + "\r\nContent-Length: 5\r\n\r\n" + body);
   EXPECT_EQ(reply.status(), 400) << reply.bytes;
   EXPECT_NE(reply.bytes.find("\"field\":\"Content-Length\""), std::string::npos);
   EXPECT_TRUE(reply.announces_close());
@@ -217,7 +217,8 @@ TEST_F(Errors, AHeaderFloodIsRefusedAndItsMemoryGivenBack) {
     return 0L;
   };
   std::string request = "GET /api/health HTTP/1.1\r\nHost: x\r\n";
-  for (int i = 0; i < 400000; ++i) request += "X-Flood-" + std::to_string(i) + ": aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa\r\n";
+  for (int i = 0; i < 400000; ++i)
+    request += "X-Flood-" + std::to_string(i) + ": aaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaaa\r\n";
   request += "\r\n";
   const long before = rss_kib();
   const RawReply reply = raw_exchange(server->port(), request, 20000);

@@ -97,11 +97,13 @@ TEST_F(PeriodicOrbitApi, BadRequestsAreRefusedNamingTheField) {
 
 TEST_F(PeriodicOrbitApi, AskedForAnImageItDrawsOneReturnOfTheMotion) {
   auto c = server->client();
-  auto png = c.Post("/api/periodic-orbit?format=png", impact_oscillator_orbit().dump(), "application/json");
+  auto png = c.Post("/api/periodic-orbit?format=png", impact_oscillator_orbit().dump(),
+                    "application/json");
   ASSERT_EQ(png->status, 200) << png->body;
   EXPECT_EQ(png->get_header_value("Content-Type"), "image/png");
   EXPECT_TRUE(png->body.starts_with("\x89PNG"));
-  auto bad = c.Post("/api/periodic-orbit?format=gif", impact_oscillator_orbit().dump(), "application/json");
+  auto bad = c.Post("/api/periodic-orbit?format=gif", impact_oscillator_orbit().dump(),
+                    "application/json");
   EXPECT_EQ(bad->status, 400);
   EXPECT_EQ(json::parse(bad->body)["field"], "format");
 }

@@ -99,7 +99,8 @@ TEST(SweepJobs, ASweepRunsAsAJobAndAnswersInEveryFormat) {
   EXPECT_EQ(json::parse(lyapunov->body)["field"], "sweep.lyapunov");
   auto unknown = c.Get((location + "/result?format=png&plot=orbit").c_str());
   EXPECT_EQ(unknown->status, 400);
-  EXPECT_NE(json::parse(unknown->body)["error"].get<std::string>().find("lyapunov_map"), std::string::npos);
+  EXPECT_NE(json::parse(unknown->body)["error"].get<std::string>().find("lyapunov_map"),
+            std::string::npos);
 }
 
 TEST(SweepJobs, AJobIsCancelledAndAFullQueueAnswers503) {
@@ -177,7 +178,8 @@ TEST(SweepJobs, BadSweepsAreRefusedNamingTheField) {
   zero["sweep"]["count"] = 0;
   EXPECT_EQ(field(zero), "sweep.count");
   json grid = s;
-  grid["sweep"]["parameter2"] = {{"parameter", "model.pellets[0].F0"}, {"from", 0.5}, {"to", 0.1}, {"count", 3}};
+  grid["sweep"]["parameter2"] = {
+      {"parameter", "model.pellets[0].F0"}, {"from", 0.5}, {"to", 0.1}, {"count", 3}};
   EXPECT_EQ(field(grid), "sweep.parameter2.to");
   json unforced = s;
   unforced["model"]["pellets"][0]["F0"] = 0.0;

@@ -1,0 +1,559 @@
+#include "core/analysis/orbit_continuation.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <cmath>
+#include <sstream>
+
+#include "core/model/parameter.h"
+#include "core/run/simulate.h"
+
+namespace vibro {
+namespace {
+
+// The continuation works in scaled unknowns v = (x with speeds times sqrt(R/g), (p − p0)/span),
+// so that a step of arclength weighs angles, speeds and the parameter alike. The section lies
+// at time `phase` of the forcing: the stroboscopic map jumps where an impact crosses the section
+// (the state before it becomes the state after it), so the phase is kept away from the impacts.
+class ScaledMap {
+ public:
+  ScaledMap(const Model& model, const SimOptions& options, int periods,
+            const std::string& parameter, double p0, double span)
+      : model_(model),
+        options_(options),
+        periods_(periods),
+        parameter_(parameter),
+        p0_(p0),
+        span_(span),
+        time_(time_scale(model)) {}
+
+  // A point on or near the branch: the map there, its residual and Jacobian in scaled unknowns.
+  struct Point {
+    Vec v;
+    MapPoint map;
+    Vec residual;  // scaled
+    Mat J;         // n × (n + 1): ∂residual/∂v
+    bool ok = false;
+    std::vector<std::complex<double>> multipliers;
+    double norm = INFINITY;
+  };
+
+  int size() const { return 2 * model_.size(); }
+  int periods() const { return periods_; }
+  double phase() const { return phase_; }
+  double value(const Vec& v) const { return p0_ + span_ * v[size()]; }
+  Vec scaled(const Vec& x, double p) const {
+    Vec v(size() + 1);
+    for (int k = 0; k < size(); ++k) v[k] = x[k] * (k % 2 ? time_ : 1.0);
+    v[size()] = (p - p0_) / span_;
+    return v;
+  }
+  Vec state(const Vec& v) const {
+    Vec x(size());
+    for (int k = 0; k < size(); ++k) x[k] = v[k] / (k % 2 ? time_ : 1.0);
+    return x;
+  }
+  // The model at parameter value p.
+  Model plain(double p) const {
+    Model m = model_;
+    set_parameter(m, parameter_, p);
+    return m;
+  }
+  // The same seen from the section's phase.
+  Model at(double p) const { return at_phase(plain(p), phase_); }
+  const SimOptions& options() const { return options_; }
+
+  Point evaluate(const Vec& v) const {
+    Point pt;
+    pt.v = v;
+    const double p = value(v);
+    // The model at p must be valid; the one seen from the section's phase has its psi shifted.
+    if (validate_model(plain(p))) return pt;
+    const Model m = at(p);
+    pt.map = stroboscopic_map(m, options_, periods_, state(v));
+    if (!pt.map.ok) return pt;
+    const int n = size();
+    const Vec r = orbit_residual(pt.map);
+    Mat D = Mat::Identity(n, n);
+    for (int k = 1; k < n; k += 2) D(k, k) = time_;
+    pt.residual = D * r;
+    pt.J.resize(n, n + 1);
+    pt.J.leftCols(n) = D * (pt.map.jacobian - Mat::Identity(n, n)) * D.inverse();
+    // The parameter's column by central differences of the map: the saltations give the state's.
+    const double h = 1e-6 * std::max(std::abs(p), std::abs(span_));
+    const MapPoint up = stroboscopic_map(at(p + h), options_, periods_, state(v));
+    const MapPoint down = stroboscopic_map(at(p - h), options_, periods_, state(v));
+    if (!up.ok || !down.ok) return pt;
+    pt.J.col(n) = D * (up.image - down.image) / (2.0 * h) * span_;
+    const Eigen::EigenSolver<Mat> eig(pt.map.jacobian, false);
+    for (Eigen::Index k = 0; k < eig.eigenvalues().size(); ++k)
+      pt.multipliers.push_back(eig.eigenvalues()[k]);
+    std::sort(pt.multipliers.begin(), pt.multipliers.end(),
+              [](auto a, auto b) { return std::abs(a) > std::abs(b); });
+    pt.norm = residual_norm(model_, r);
+    pt.ok = true;
+    return pt;
+  }
+
+  // The state `dt` later along the motion from x at the section, at value p.
+  Vec advance(const Vec& x, double p, double dt) const {
+    if (!(dt > 0.0)) return x;
+    Model m = at(p);
+    for (int i = 0; i < m.size(); ++i) {
+      m.pellets[i].phi0 = x[2 * i];
+      m.pellets[i].dphi0 = x[2 * i + 1];
+    }
+    SimOptions o = options_;
+    o.t_end = dt;
+    o.check = false;
+    o.record.clear();
+    o.stops.clear();
+    const RunResult run = simulate(m, o);
+    Vec y(size());
+    for (int i = 0; i < m.size(); ++i)
+      y.segment(2 * i, 2) << run.summary.final[i].phi, run.summary.final[i].dphi;
+    return y;
+  }
+
+  // Moves the section `dt` later; returns the point's state there.
+  Vec shift_phase(const Point& pt, double dt) {
+    const Vec x = advance(state(pt.v), value(pt.v), dt);
+    phase_ += dt;
+    return x;
+  }
+
+  // The state of a point on the stroboscopic section t = k·T.
+  std::vector<PhasePoint> section_state(const Vec& v) const {
+    const double T = forcing_period(at(value(v)));
+    const double dt = T * std::ceil(phase_ / T - 1e-12) - phase_;
+    const Vec x = advance(state(v), value(v), dt);
+    std::vector<PhasePoint> out;
+    for (Eigen::Index k = 0; k + 1 < x.size(); k += 2) out.push_back({x[k], x[k + 1]});
+    return out;
+  }
+
+ private:
+  const Model& model_;
+  const SimOptions& options_;
+  int periods_;
+  std::string parameter_;
+  double p0_, span_, time_;
+  double phase_ = 0.0;
+};
+
+using Point = ScaledMap::Point;
+
+bool is_impact(const Event& e) {
+  return e.kind == EventKind::limiter || e.kind == EventKind::collision ||
+         e.kind == EventKind::chatter;
+}
+
+// The unit tangent at a point, oriented along `previous`: the null vector of J bordered by it.
+Vec tangent(const Point& pt, const Vec& previous) {
+  const int n = static_cast<int>(pt.J.rows());
+  Mat A(n + 1, n + 1);
+  A.topRows(n) = pt.J;
+  A.row(n) = previous.transpose();
+  Vec rhs = Vec::Zero(n + 1);
+  rhs[n] = 1.0;
+  const Vec t = A.fullPivLu().solve(rhs);
+  return t / t.norm();
+}
+
+// Newton's method on the map's residual and the pseudo-arclength condition t·(v − predicted) = 0.
+Point correct(const ScaledMap& map, const Vec& predicted, const Vec& t, double tol) {
+  Point pt = map.evaluate(predicted);
+  const int n = map.size();
+  for (int it = 0; it < 12 && pt.ok; ++it) {
+    Mat A(n + 1, n + 1);
+    A.topRows(n) = pt.J;
+    A.row(n) = t.transpose();
+    Vec rhs(n + 1);
+    rhs.head(n) = -pt.residual;
+    rhs[n] = -t.dot(pt.v - predicted);
+    const Vec dv = A.fullPivLu().solve(rhs);
+    if (!dv.allFinite()) break;
+    pt = map.evaluate(pt.v + dv);
+    if (pt.ok && pt.norm <= tol && dv.lpNorm<Eigen::Infinity>() < 1e-7) return pt;
+  }
+  pt.ok = pt.ok && pt.norm <= tol;
+  return pt;
+}
+
+// The motion's impacts over one return, as a cycle: the same impacts seen from another phase
+// are the same pattern.
+std::vector<std::string> impact_pattern(const RunResult& run) {
+  std::vector<std::string> out;
+  for (const Event& e : run.events) {
+    if (!is_impact(e)) continue;
+    std::ostringstream s;
+    s << event_kind_name(e.kind) << e.limiter;
+    for (int i : e.pellets) s << ':' << i;
+    out.push_back(s.str());
+  }
+  std::vector<std::string> least = out;
+  for (std::size_t k = 1; k < out.size(); ++k) {
+    std::rotate(out.begin(), out.begin() + 1, out.end());
+    least = std::min(least, out);
+  }
+  return least;
+}
+
+// What the bifurcations are told by: signs and counts that change across one.
+struct Signature {
+  double fold = 0.0;       // the tangent's parameter component
+  double doubling = 0.0;   // det(M + I): a real multiplier through −1
+  int unstable_pairs = 0;  // complex multipliers outside the unit circle
+  std::vector<std::string> impacts;
+};
+
+Signature signature(const Point& pt, const Vec& t) {
+  Signature s;
+  s.fold = t[t.size() - 1];
+  std::complex<double> det = 1.0;
+  for (const auto& mu : pt.multipliers) {
+    det *= mu + 1.0;
+    if (std::abs(mu.imag()) > 1e-9 * std::abs(mu) && std::abs(mu) > 1.0) ++s.unstable_pairs;
+  }
+  s.doubling = det.real();
+  s.impacts = impact_pattern(pt.map.run);
+  return s;
+}
+
+bool crossed(BifurcationKind k, const Signature& a, const Signature& b) {
+  switch (k) {
+    case BifurcationKind::fold:
+      return (a.fold > 0.0) != (b.fold > 0.0);
+    case BifurcationKind::period_doubling:
+      return (a.doubling > 0.0) != (b.doubling > 0.0);
+    case BifurcationKind::neimark_sacker:
+      return a.unstable_pairs != b.unstable_pairs;
+    case BifurcationKind::grazing:
+      return a.impacts != b.impacts;
+  }
+  return false;
+}
+
+// The nearest an impact comes to the section, and the middle of the longest stretch without
+// impacts, as times from the section (s).
+struct Clearance {
+  double nearest = INFINITY;
+  double middle = 0.0;
+};
+
+Clearance clearance(const RunResult& run, double span) {
+  std::vector<double> times = {0.0};
+  for (const Event& e : run.events)
+    if (is_impact(e)) times.push_back(e.t);
+  times.push_back(span);
+  Clearance c;
+  double longest = -1.0;
+  for (std::size_t k = 1; k < times.size(); ++k) {
+    if (times[k] - times[k - 1] > longest) {
+      longest = times[k] - times[k - 1];
+      c.middle = 0.5 * (times[k] + times[k - 1]);
+    }
+    if (k < times.size() - 1) c.nearest = std::min({c.nearest, times[k], span - times[k]});
+  }
+  return c;
+}
+
+// How near the motion is to a grazing, rad (speeds times the time scale): the slowest impact, or
+// the turn that comes nearest to a limiter. At zero an impact appears or vanishes, and the map has
+// a square root there that Newton's method cannot step across.
+double grazing_distance(const Model& model, const RunResult& run) {
+  const double time = time_scale(model);
+  double d = INFINITY;
+  for (const Event& e : run.events) {
+    if (e.kind == EventKind::limiter) d = std::min(d, std::abs(e.dphi_before[0]) * time);
+    if (e.kind == EventKind::collision)
+      d = std::min(d, std::abs(e.dphi_before[0] - e.dphi_before[1]) * time);
+    if (e.kind != EventKind::reversal) continue;
+    for (const Limiter& l : model.limiters)
+      if (l.acts_on(e.pellets[0])) d = std::min(d, std::abs(wrap_angle(e.phi - l.angle)));
+  }
+  return d;
+}
+
+bool stable(const std::vector<std::complex<double>>& multipliers) {
+  return std::all_of(multipliers.begin(), multipliers.end(),
+                     [](auto m) { return std::abs(m) < 1.0; });
+}
+
+BranchPoint branch_point(const ScaledMap& map, const Point& pt) {
+  int impacts = 0;
+  for (const Event& e : pt.map.run.events)
+    impacts += e.kind == EventKind::limiter || e.kind == EventKind::collision;
+  return {map.value(pt.v), map.section_state(pt.v), pt.multipliers, stable(pt.multipliers),
+          static_cast<double>(impacts) / map.periods()};
+}
+
+// Whether the located point is what its kind says: a multiplier at −1 for a period doubling, a
+// complex pair on the unit circle for Neimark–Sacker. The signs that tell them also change where
+// a multiplier passes through infinity (a motion through the inverted position, where the map's
+// derivative is unbounded), which is neither.
+bool confirmed(BifurcationKind kind, const Point& at) {
+  for (const auto& mu : at.multipliers) {
+    if (kind == BifurcationKind::period_doubling && std::abs(mu + 1.0) < 0.05) return true;
+    if (kind == BifurcationKind::neimark_sacker && std::abs(mu.imag()) > 1e-9 &&
+        std::abs(std::abs(mu) - 1.0) < 0.05)
+      return true;
+  }
+  return kind == BifurcationKind::fold || kind == BifurcationKind::grazing;
+}
+
+// Locates a bifurcation of `kind` inside the step from `here` (signature `sig`) along t by ds:
+// bisection on corrections at fractions of the step.
+Point locate(const ScaledMap& map, BifurcationKind kind, const Point& here, const Signature& sig,
+             const Vec& t, double ds, const Point& next, double tol) {
+  double lo = 0.0, hi = 1.0;
+  Point at = next;
+  for (int k = 0; k < 40 && (hi - lo) * ds > 1e-10; ++k) {
+    const double mid = 0.5 * (lo + hi);
+    const Point p = correct(map, here.v + mid * ds * t, t, tol);
+    if (!p.ok) break;
+    if (crossed(kind, sig, signature(p, tangent(p, t)))) {
+      hi = mid;
+      at = p;
+    } else {
+      lo = mid;
+    }
+  }
+  return at;
+}
+
+// Past a period doubling (on the side where the branch is unstable, `past` = ±1), the period-2
+// motion it sheds: sought from the doubling's state moved along the eigenvector of the multiplier
+// −1, farther and farther until Newton's method finds a motion that one period does not return.
+void find_doubled(const ScaledMap& map, const Point& at, double past, double span, Bifurcation& b) {
+  const Eigen::EigenSolver<Mat> eig(at.map.jacobian, true);
+  Eigen::Index nearest = 0;
+  for (Eigen::Index k = 1; k < eig.eigenvalues().size(); ++k)
+    if (std::abs(eig.eigenvalues()[k] + 1.0) < std::abs(eig.eigenvalues()[nearest] + 1.0))
+      nearest = k;
+  const Vec v = eig.eigenvectors().col(nearest).real();
+  const double value = map.value(at.v) + past * 0.02 * std::abs(span);
+  const Model m = map.plain(value);
+  if (validate_model(m)) return;
+  for (double a : {1e-2, 3e-2, 0.1, 0.3}) {
+    for (double side : {1.0, -1.0}) {
+      Vec moved = at.v;
+      moved.head(map.size()) +=
+          side * a * map.scaled(v / v.lpNorm<Eigen::Infinity>(), 0.0).head(map.size());
+      OrbitSpec spec;
+      spec.periods = 2 * map.periods();
+      spec.guess = map.section_state(moved);
+      const PeriodicOrbit two = find_periodic_orbit(m, map.options(), spec);
+      if (!two.converged) continue;
+      Vec x(map.size());
+      for (std::size_t i = 0; i < two.state.size(); ++i)
+        x.segment(2 * i, 2) << two.state[i].phi, two.state[i].dphi;
+      const MapPoint once = stroboscopic_map(m, map.options(), map.periods(), x);
+      if (once.ok && residual_norm(m, orbit_residual(once)) > 1e-6) {
+        b.doubled_value = value;
+        b.doubled_state = two.state;
+        return;
+      }
+    }
+  }
+}
+
+}  // namespace
+
+std::string_view bifurcation_kind_name(BifurcationKind kind) {
+  switch (kind) {
+    case BifurcationKind::fold:
+      return "fold";
+    case BifurcationKind::period_doubling:
+      return "period_doubling";
+    case BifurcationKind::neimark_sacker:
+      return "neimark_sacker";
+    case BifurcationKind::grazing:
+      return "grazing";
+  }
+  return "fold";
+}
+
+std::optional<FieldError> validate_continuation(const Model& model, const ContinuationSpec& spec) {
+  const std::string field = "periodic_orbit.continuation.";
+  const std::optional<double> from = get_parameter(model, spec.parameter);
+  if (!from)
+    return FieldError{field + "parameter",
+                      "names no numeric field of this model: \"" + spec.parameter + "\""};
+  if (!std::isfinite(spec.to) || spec.to == *from)
+    return FieldError{field + "to", "expected a finite value other than the parameter's own"};
+  Model end = model;
+  set_parameter(end, spec.parameter, spec.to);
+  if (auto e = validate_model(end))
+    return FieldError{field + "to", "makes the model invalid: " + e->field + " " + e->message};
+  if (auto e = validate_orbit(end, {}))
+    if (e->field.rfind("model.", 0) == 0)
+      return FieldError{field + "to",
+                        "leaves no periodic orbit to seek: " + e->field + " " + e->message};
+  if (spec.max_points < 2 || spec.max_points > 10000)
+    return FieldError{field + "max_points", "expected a whole number from 2 to 10000"};
+  return std::nullopt;
+}
+
+OrbitBranch continue_orbit(const Model& model, const SimOptions& options,
+                           const PeriodicOrbit& start, const ContinuationSpec& spec,
+                           const std::function<void(double)>& progress,
+                           const std::atomic<bool>* cancel) {
+  OrbitBranch branch;
+  const double p0 = *get_parameter(model, spec.parameter);
+  const double span = spec.to - p0;
+  ScaledMap map(model, options, start.periods, spec.parameter, p0, span);
+  const double tol = std::max(1e-10, 100.0 * options.rtol);
+  const int n = map.size();
+  Vec x(n);
+  for (int i = 0; i < model.size(); ++i)
+    x.segment(2 * i, 2) << start.state[i].phi, start.state[i].dphi;
+  Point here = map.evaluate(map.scaled(x, p0));
+  Vec t = Vec::Zero(n + 1);
+  t[n] = 1.0;  // toward `to`: the scaled parameter grows to 1
+  // Keeps the section a twentieth of a period or more away from every impact.
+  auto keep_clear = [&]() {
+    const double T = forcing_period(map.at(map.value(here.v)));
+    const Clearance c = clearance(here.map.run, map.periods() * T);
+    if (c.nearest >= 0.05 * T) return;
+    const Vec moved = map.shift_phase(here, c.middle);
+    here = map.evaluate(map.scaled(moved, map.value(here.v)));
+    Vec along = Vec::Zero(n + 1);
+    along[n] = t[n] > 0.0 ? 1.0 : -1.0;
+    if (here.ok) t = tangent(here, std::abs(t[n]) > 0.1 ? along : t);
+  };
+  if (!here.ok) {
+    branch.message = "the start is no orbit the map can follow: " + here.map.run.stats.message;
+    return branch;
+  }
+  keep_clear();
+  t = tangent(here, t);
+  Signature sig = signature(here, t);
+  branch.points.push_back(branch_point(map, here));
+  double ds = std::min(0.05, 2.0 / spec.max_points);
+  const double ds_min = 1e-7, ds_max = 0.1;
+
+  while (static_cast<int>(branch.points.size()) < spec.max_points) {
+    if (cancel && cancel->load()) {
+      branch.message = "cancelled";
+      return branch;
+    }
+    const Vec predicted = here.v + ds * t;
+    Point next = correct(map, predicted, t, tol);
+    Vec t_next;
+    Signature sig_next;
+    if (next.ok) {
+      t_next = tangent(next, t);
+      sig_next = signature(next, t_next);
+      // A step that strays far from its prediction, or turns sharply where the motion's
+      // impacts stay the same, may have jumped to another motion: take it shorter.
+      const bool strayed = (next.v - predicted).norm() > 0.5 * ds + 10.0 * tol;
+      const bool turned = sig_next.impacts == sig.impacts && t.dot(t_next) < std::cos(0.3);
+      if (strayed || turned) next.ok = false;
+    }
+    if (!next.ok) {
+      ds /= 2.0;
+      if (ds >= ds_min) continue;
+      std::ostringstream why;
+      why << "the branch could not be followed past " << spec.parameter << " = "
+          << map.value(here.v);
+      if (grazing_distance(map.at(map.value(here.v)), here.map.run) > 1e-3) {
+        branch.message = why.str() + ": no nearby motion continues it";
+        return branch;
+      }
+      // Stalled at a grazing: record it, and step across at fixed values of the parameter.
+      branch.bifurcations.push_back(
+          {BifurcationKind::grazing, map.value(here.v), map.section_state(here.v), {}, {}});
+      Vec fixed = Vec::Zero(n + 1);
+      fixed[n] = 1.0;
+      const double way = t[n] > 0.0 ? 1.0 : -1.0;
+      Point across;
+      double step = 0.0;
+      for (double dp : {1e-4, 1e-3, 1e-2, 3e-2, 0.1}) {
+        Vec predicted = here.v;
+        predicted[n] += way * dp;
+        across = correct(map, predicted, fixed, tol);
+        step = dp;
+        // Past the grazing, near it: an impact more or less, the state close by.
+        if (across.ok && impact_pattern(across.map.run) != sig.impacts &&
+            (across.v - here.v).head(n).norm() < 0.3)
+          break;
+        across.ok = false;
+      }
+      if (!across.ok) {
+        branch.message = why.str() + ": it ends at a grazing there (an impact of zero speed), " +
+                         "and no motion past it continues it";
+        return branch;
+      }
+      // The branch leaves a grazing like a square root: walk back toward it from the far side,
+      // so that the steep part is drawn too.
+      std::vector<BranchPoint> nearer;
+      Point walk = across;
+      for (double dp = step / 2.0; dp > step / 100.0; dp /= 2.0) {
+        Vec predicted = walk.v;
+        predicted[n] = here.v[n] + way * dp;
+        const Point p = correct(map, predicted, fixed, tol);
+        if (!p.ok) break;
+        nearer.push_back(branch_point(map, p));
+        walk = p;
+      }
+      branch.points.insert(branch.points.end(), nearer.rbegin(), nearer.rend());
+      here = std::move(across);
+      t = tangent(here, way * fixed);
+      keep_clear();
+      sig = signature(here, t);
+      branch.points.push_back(branch_point(map, here));
+      ds = 1e-3;
+      continue;
+    }
+    // At a grazing the multipliers jump: a sign change found at it is the grazing's own.
+    std::optional<double> grazing;
+    for (BifurcationKind kind :
+         {BifurcationKind::grazing, BifurcationKind::fold, BifurcationKind::period_doubling,
+          BifurcationKind::neimark_sacker}) {
+      if (!crossed(kind, sig, sig_next)) continue;
+      const Point at = locate(map, kind, here, sig, t, ds, next, tol);
+      const double value = map.value(at.v);
+      if (grazing && std::abs(value - *grazing) <= 1e-6 * std::abs(span)) continue;
+      if (!confirmed(kind, at)) continue;
+      if (kind == BifurcationKind::grazing) grazing = value;
+      Bifurcation b{kind, value, map.section_state(at.v), {}, {}};
+      if (kind == BifurcationKind::period_doubling)
+        find_doubled(map, at,
+                     (stable(here.multipliers) ? 1.0 : -1.0) * (t[n] * span > 0.0 ? 1.0 : -1.0),
+                     span, b);
+      branch.bifurcations.push_back(std::move(b));
+    }
+    if ((map.value(next.v) - spec.to) * (span > 0 ? 1 : -1) >= 0.0) {
+      // The last point exactly at `to`, where the branch crosses it.
+      Vec on = next.v;
+      on[n] = 1.0;
+      Vec fixed = Vec::Zero(n + 1);
+      fixed[n] = 1.0;
+      const Point end = correct(map, on, fixed, tol);
+      branch.points.push_back(branch_point(map, end.ok ? end : next));
+      branch.reached = true;
+      if (progress) progress(1.0);
+      return branch;
+    }
+    here = std::move(next);
+    t = t_next;
+    keep_clear();
+    sig = signature(here, t);
+    // Steps shortened to a crawl (before a grazing) add nothing a figure shows.
+    if (std::abs(map.value(here.v) - branch.points.back().value) > 1e-6 * std::abs(span) ||
+        ds > 1e-4)
+      branch.points.push_back(branch_point(map, here));
+    if (progress)
+      progress(std::max(static_cast<double>(branch.points.size()) / spec.max_points,
+                        std::clamp(here.v[n], 0.0, 1.0)));
+    ds = std::min(ds_max, ds * 1.5);
+  }
+  std::ostringstream why;
+  why << "stopped at " << spec.parameter << " = " << branch.points.back().value << " after "
+      << spec.max_points << " points (periodic_orbit.continuation.max_points)";
+  branch.message = why.str();
+  return branch;
+}
+
+}  // namespace vibro

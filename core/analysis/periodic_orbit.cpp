@@ -1,0 +1,307 @@
+#include "core/analysis/periodic_orbit.h"
+
+#include <Eigen/Eigenvalues>
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <sstream>
+
+#include "core/analysis/monodromy.h"
+#include "core/run/simulate.h"
+
+namespace vibro {
+namespace {
+
+Model started_at(const Model& model, const Vec& x) {
+  Model m = model;
+  for (int i = 0; i < m.size(); ++i) {
+    m.pellets[i].phi0 = x[2 * i];
+    m.pellets[i].dphi0 = x[2 * i + 1];
+  }
+  return m;
+}
+
+Vec final_state(const RunResult& run) {
+  Vec y(2 * run.summary.final.size());
+  for (std::size_t i = 0; i < run.summary.final.size(); ++i) {
+    y[2 * i] = run.summary.final[i].phi;
+    y[2 * i + 1] = run.summary.final[i].dphi;
+  }
+  return y;
+}
+
+// The run of the map alone: no shadow, no branches.
+RunResult map_run(const Model& model, const SimOptions& options, double t_end, const Vec& x,
+                  bool keep_path) {
+  SimOptions o = options;
+  o.t_end = t_end;
+  o.check = false;
+  o.keep_path = keep_path;
+  o.record.clear();
+  o.stops.clear();
+  o.max_samples = 0;
+  return simulate(started_at(model, x), o);
+}
+
+using Clock = std::chrono::steady_clock;
+
+// The moment `deadline_ms` from now; none for an infinite one.
+Clock::time_point deadline_in(double deadline_ms) {
+  if (!(deadline_ms < 1e12)) return Clock::time_point::max();
+  return Clock::now() + std::chrono::duration_cast<Clock::duration>(
+                            std::chrono::duration<double, std::milli>(std::max(deadline_ms, 0.0)));
+}
+
+// The options with what is left until `deadline` as their deadline.
+SimOptions until(SimOptions options, Clock::time_point deadline) {
+  if (deadline != Clock::time_point::max())
+    options.deadline_ms =
+        std::chrono::duration<double, std::milli>(deadline - Clock::now()).count();
+  return options;
+}
+
+// Central differences of the map, where the saltations do not reach: steps of 1e-6 rad and
+// 1e-6 rad/s per unit of the scene's time scale. Its runs share options.deadline_ms.
+Mat differenced_jacobian(const Model& model, const SimOptions& options, double t_end,
+                         const Vec& x) {
+  const Clock::time_point deadline = deadline_in(options.deadline_ms);
+  const double speed = speed_scale(model);
+  Mat J(x.size(), x.size());
+  for (Eigen::Index k = 0; k < x.size(); ++k) {
+    const double h = 1e-6 * (k % 2 ? speed : 1.0);
+    Vec xp = x, xm = x;
+    xp[k] += h;
+    xm[k] -= h;
+    J.col(k) = (final_state(map_run(model, until(options, deadline), t_end, xp, false)) -
+                final_state(map_run(model, until(options, deadline), t_end, xm, false))) /
+               (2.0 * h);
+  }
+  return J;
+}
+
+double tolerance_for(const SimOptions& options) { return std::max(1e-10, 100.0 * options.rtol); }
+
+std::string number(double v) {
+  std::ostringstream s;
+  s.precision(3);
+  s << v;
+  return s.str();
+}
+
+}  // namespace
+
+Model at_phase(const Model& model, double theta) {
+  Model m = model;
+  for (Pellet& p : m.pellets)
+    if (p.force.active()) p.force.psi += p.force.Omega * theta;
+  return m;
+}
+
+double forcing_period(const Model& model) {
+  for (const Pellet& p : model.pellets)
+    if (p.force.active() && p.force.Omega > 0.0) return kTwoPi / p.force.Omega;
+  return 0.0;
+}
+
+std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& spec) {
+  const double T = forcing_period(model);
+  if (T == 0.0)
+    return FieldError{
+        "model.pellets",
+        "a periodic orbit needs a periodic force: no pellet has F0 ≠ 0 and Omega > 0"};
+  for (int i = 0; i < model.size(); ++i) {
+    const Forcing& f = model.pellets[i].force;
+    // A constant force (Omega = 0, F0 cos psi) repeats with every period.
+    if (!f.active() || f.Omega == 0.0) continue;
+    const double cycles = f.Omega * T / kTwoPi;
+    if (!(f.Omega > 0.0) || std::abs(cycles - std::round(cycles)) > 1e-9 * cycles)
+      return FieldError{"model.pellets[" + std::to_string(i) + "].Omega",
+                        "every force must repeat with the first forced pellet's period 2π/Ω: Omega "
+                        "must be a whole multiple of it"};
+  }
+  for (std::size_t l = 0; l < model.limiters.size(); ++l)
+    if (model.limiters[l].mobile)
+      return FieldError{"model.limiters[" + std::to_string(l) + "].mobile",
+                        "periodic orbits are sought with fixed limiters only: a mobile limiter's "
+                        "armed state is not part of the section's state"};
+  if (spec.periods < 1 || spec.periods > 64)
+    return FieldError{"periodic_orbit.periods",
+                      "expected a whole number of forcing periods from 1 to 64"};
+  if (spec.transient < 0 || spec.transient > 100000)
+    return FieldError{"periodic_orbit.transient",
+                      "expected a whole number of forcing periods from 0 to 100000"};
+  if (!spec.guess.empty() && static_cast<int>(spec.guess.size()) != model.size())
+    return FieldError{"periodic_orbit.guess", "expected one {\"phi\", \"dphi\"} per pellet (" +
+                                                  std::to_string(model.size()) + "), got " +
+                                                  std::to_string(spec.guess.size())};
+  for (std::size_t i = 0; i < spec.guess.size(); ++i)
+    if (auto e = validate_state("periodic_orbit.guess[" + std::to_string(i) + "]",
+                                spec.guess[i].phi, spec.guess[i].dphi))
+      return e;
+  if (spec.max_iterations < 1 || spec.max_iterations > 1000)
+    return FieldError{"periodic_orbit.max_iterations", "expected a whole number from 1 to 1000"};
+  return std::nullopt;
+}
+
+MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int periods,
+                          const Vec& x) {
+  const Clock::time_point deadline = deadline_in(options.deadline_ms);
+  MapPoint p;
+  const double t_end = periods * forcing_period(model);
+  p.x = x;
+  p.run = map_run(model, options, t_end, x, true);
+  p.ok = p.run.stats.termination == Termination::completed;
+  p.image = final_state(p.run);
+  if (!p.ok) return p;
+  const PathJacobian J = path_jacobian(started_at(model, x), p.run.path, options.rtol, deadline);
+  p.run.path.clear();
+  if (J.out_of_time) {
+    p.ok = false;
+    p.run.stats.termination = Termination::deadline;
+    p.run.stats.message =
+        "took longer than its deadline of " + number(options.deadline_ms) + " ms with its Jacobian";
+  } else if (J.unsupported.empty()) {
+    p.jacobian = J.matrix;
+  } else {
+    p.exact = false;
+    p.jacobian_note =
+        "central differences of the map: the saltation matrices do not cover " + J.unsupported;
+    p.jacobian = differenced_jacobian(model, until(options, deadline), t_end, x);
+  }
+  return p;
+}
+
+Vec orbit_residual(const MapPoint& p) {
+  Vec r = p.image - p.x;
+  for (Eigen::Index k = 0; k < r.size(); k += 2) r[k] = wrap_angle(r[k]);
+  return r;
+}
+
+double residual_norm(const Model& model, const Vec& r) {
+  const double time = time_scale(model);
+  double n = 0.0;
+  for (Eigen::Index k = 0; k < r.size(); ++k)
+    n = std::max(n, std::abs(r[k]) * (k % 2 ? time : 1.0));
+  return n;
+}
+
+PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
+                                  const OrbitSpec& spec) {
+  // options.deadline_ms bounds the whole search: each map's run gets what is left of it.
+  const auto started = std::chrono::steady_clock::now();
+  auto within = [&] {
+    SimOptions o = options;
+    o.deadline_ms = options.deadline_ms - std::chrono::duration<double, std::milli>(
+                                              std::chrono::steady_clock::now() - started)
+                                              .count();
+    return o;
+  };
+  PeriodicOrbit orbit;
+  orbit.periods = spec.periods;
+  orbit.period = forcing_period(model);
+  orbit.t0 = spec.guess.empty() ? spec.transient * orbit.period : 0.0;
+  const int n = model.size();
+  Vec x(2 * n);
+  if (!spec.guess.empty()) {
+    for (int i = 0; i < n; ++i) x.segment(2 * i, 2) << spec.guess[i].phi, spec.guess[i].dphi;
+  } else {
+    for (int i = 0; i < n; ++i)
+      x.segment(2 * i, 2) << model.pellets[i].phi0, model.pellets[i].dphi0;
+    if (spec.transient > 0) {
+      const RunResult warmup = map_run(model, within(), orbit.t0, x, false);
+      if (warmup.stats.termination != Termination::completed) {
+        orbit.message = "the run that gives the starting guess " + warmup.stats.message;
+        return orbit;
+      }
+      x = final_state(warmup);
+    }
+  }
+  const double tol = tolerance_for(options);
+  MapPoint p = stroboscopic_map(model, within(), spec.periods, x);
+  double norm = residual_norm(model, orbit_residual(p));
+  for (orbit.iterations = 0; p.ok && norm > tol && orbit.iterations < spec.max_iterations;
+       ++orbit.iterations) {
+    if (within().deadline_ms <= 0.0) {
+      orbit.message =
+          "the search took longer than its deadline of " + number(options.deadline_ms) + " ms";
+      break;
+    }
+    const Mat A = p.jacobian - Mat::Identity(2 * n, 2 * n);
+    const Vec dx = A.fullPivLu().solve(-orbit_residual(p));
+    if (!dx.allFinite()) break;
+    // Damped: the map is only piecewise smooth, and a full step may cross onto another
+    // sequence of events.
+    bool accepted = false;
+    for (double lambda = 1.0; lambda >= 1.0 / 256.0 && !accepted; lambda /= 2.0) {
+      MapPoint trial = stroboscopic_map(model, within(), spec.periods, p.x + lambda * dx);
+      const double trial_norm = trial.ok ? residual_norm(model, orbit_residual(trial)) : INFINITY;
+      if (trial_norm < (1.0 - 1e-4 * lambda) * norm) {
+        p = std::move(trial);
+        norm = trial_norm;
+        accepted = true;
+      }
+    }
+    if (!accepted) break;
+  }
+  for (int i = 0; i < n; ++i) orbit.state.push_back({p.x[2 * i], p.x[2 * i + 1]});
+  orbit.residual = norm;
+  if (!p.ok) {
+    orbit.message = "the map's run " + p.run.stats.message;
+    return orbit;
+  }
+  orbit.converged = norm <= tol;
+  if (!orbit.converged) {
+    if (orbit.message.empty())
+      orbit.message =
+          "Newton's method stopped after " + std::to_string(orbit.iterations) +
+          " iterations with the state returning " + number(norm) + " away (needed " + number(tol) +
+          "): no periodic motion near the guess, or one the map's events make nonsmooth there";
+    return orbit;
+  }
+  orbit.exact_jacobian = p.exact;
+  orbit.jacobian_note = p.jacobian_note;
+  const Eigen::EigenSolver<Mat> eig(p.jacobian, false);
+  for (Eigen::Index k = 0; k < eig.eigenvalues().size(); ++k)
+    orbit.multipliers.push_back(eig.eigenvalues()[k]);
+  std::sort(orbit.multipliers.begin(), orbit.multipliers.end(),
+            [](auto a, auto b) { return std::abs(a) > std::abs(b); });
+  orbit.stable = std::all_of(orbit.multipliers.begin(), orbit.multipliers.end(),
+                             [](auto m) { return std::abs(m) < 1.0; });
+  int impacts = 0;
+  for (Event e : p.run.events) {
+    if (e.kind == EventKind::limiter || e.kind == EventKind::collision) ++impacts;
+    e.t += orbit.t0;
+    e.t_accumulation += orbit.t0;
+    orbit.events.push_back(std::move(e));
+  }
+  orbit.impacts_per_period = static_cast<double>(impacts) / spec.periods;
+
+  // The check: the orbit run with the shadow at a tighter tolerance must return to itself, with
+  // its events vouched for and no near miss that could change them.
+  SimOptions check = within();
+  check.t_end = spec.periods * orbit.period;
+  check.check = true;
+  check.record.clear();
+  check.stops.clear();
+  const RunResult run = simulate(started_at(model, p.x), check);
+  orbit.stats = run.stats;
+  const double returned =
+      residual_norm(model, orbit_residual({p.x, final_state(run), {}, true, {}, {}, true}));
+  if (run.stats.termination != Termination::completed) {
+    orbit.message = "the check run " + run.stats.message;
+  } else if (run.graze) {
+    orbit.message = "the orbit grazes: a near miss at t = " + number(orbit.t0 + run.graze->t) +
+                    " s may add or remove an event, so the motion is at a grazing bifurcation and "
+                    "not vouched for";
+  } else if (run.stats.trusted_until < check.t_end * (1.0 - 1e-12)) {
+    orbit.message = "the check run vouches for its events only up to t = " +
+                    number(orbit.t0 + run.stats.trusted_until) + " s";
+  } else if (returned > 10.0 * tol) {
+    orbit.message = "the check run returns " + number(returned) + " away from the orbit";
+  } else {
+    orbit.admissible = true;
+  }
+  return orbit;
+}
+
+}  // namespace vibro

@@ -1,0 +1,81 @@
+// Periodic motions on the stroboscopic section (API.md, "Periodic motions and their stability"):
+// a state at t = k·T that returns to itself after `periods` forcing periods, found by Newton's
+// method on P(x) − x with the exact Jacobian of the map (core/analysis/monodromy.h), and its
+// Floquet multipliers. The map is the simulator itself, so an orbit obeys every limiter, collision
+// and stick test; docs/ORBITS.md says how it is found and checked.
+#pragma once
+
+#include <complex>
+#include <optional>
+#include <string>
+#include <vector>
+
+#include "core/integrators/ode.h"
+#include "core/model/model.h"
+#include "core/run/result.h"
+#include "core/run/sim_options.h"
+#include "core/run/validate.h"
+
+namespace vibro {
+
+struct OrbitSpec {
+  int periods = 1;                // forcing periods until the state returns
+  int transient = 100;            // periods of the scene's own run that give the starting guess
+  std::vector<PhasePoint> guess;  // one per pellet; given, it replaces the run's guess
+  int max_iterations = 40;
+};
+
+// Why an orbit cannot be sought, naming the field ("periodic_orbit.periods", ...).
+std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& spec);
+
+// The forcing period T of a model whose forces share one, s (the first forced pellet's 2π/Ω).
+double forcing_period(const Model& model);
+
+// The model seen from time theta: every force's phase advanced by Ω·theta, so that its t = 0 is
+// the original's t = theta. A section at another phase of the forcing is a section of it.
+Model at_phase(const Model& model, double theta);
+
+// The stroboscopic map over `periods` forcing periods from x (phi, dphi per pellet), and its
+// Jacobian (unset, with the reason, where the path holds what it does not differentiate).
+struct MapPoint {
+  Vec x, image;  // 2N
+  Mat jacobian;  // 2N × 2N, exact (saltation) or, failing that, central differences
+  bool exact = true;
+  std::string jacobian_note;  // why it is not exact
+  RunResult run;              // the run from x, with its events
+  bool ok = true;             // the run reached its end
+};
+MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int periods, const Vec& x);
+
+// The residual P(x) − x with angles compared modulo 2π, and its size with speeds scaled by
+// sqrt(R/g) (rad).
+Vec orbit_residual(const MapPoint& p);
+double residual_norm(const Model& model, const Vec& r);
+
+struct PeriodicOrbit {
+  bool converged = false;
+  std::string message;  // what failed, or why the orbit is not vouched for
+  int periods = 1;
+  double period = 0.0;  // T, s
+  double t0 = 0.0;      // the section time of `state`, s
+  std::vector<PhasePoint> state;
+  int iterations = 0;
+  double residual = 0.0;                          // rad, speeds scaled by sqrt(R/g)
+  std::vector<std::complex<double>> multipliers;  // eigenvalues of the monodromy matrix
+  bool stable = false;                            // all multipliers inside the unit circle
+  bool exact_jacobian = true;
+  std::string jacobian_note;
+  double impacts_per_period = 0.0;  // limiter impacts and collisions
+  // The motion checked as a physical one: a run of the orbit at tighter tolerance returns to it,
+  // its events are vouched for, and no near miss (a grazing) makes its sequence uncertain.
+  bool admissible = false;
+  std::vector<Event> events;  // over one return, times from t0
+  Stats stats;                // of the check run
+};
+
+// Runs the scene for spec.transient periods (or takes spec.guess) and corrects the state by
+// Newton's method. Call validate_orbit first.
+PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
+                                  const OrbitSpec& spec);
+
+}  // namespace vibro

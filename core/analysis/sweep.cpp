@@ -1,0 +1,408 @@
+#include "core/analysis/sweep.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <mutex>
+#include <random>
+#include <thread>
+#include <tuple>
+
+#include "core/model/parameter.h"
+#include "core/run/simulate.h"
+
+namespace vibro {
+namespace {
+
+// Every value of a sweep is checked up front (validate_sweep): about 3 µs each for 8 pellets and
+// 16 limiters, so a million runs take some 3 s to check.
+constexpr long kMaxRuns = 1000000;
+constexpr int kMaxPeriods = 1000000;
+
+// The initial state a run starts from: the scene's, or the last state of the run before it.
+struct Start {
+  std::vector<double> phi, dphi;
+};
+
+Model with_values(const Model& model, const SweepSpec& spec, double v, double v2) {
+  Model m = model;
+  set_parameter(m, spec.axis.parameter, v);
+  if (spec.axis2) set_parameter(m, spec.axis2->parameter, v2);
+  return m;
+}
+
+std::optional<FieldError> check_axis(const Model& model, const SweepAxis& axis,
+                                     const std::string& at) {
+  Model copy = model;
+  if (auto why = set_parameter(copy, axis.parameter, 0.0))
+    return FieldError{at + "parameter", "\"" + axis.parameter + "\" " + *why};
+  if (axis.count < 1 || axis.count > kMaxRuns)
+    return FieldError{at + "count", "must be from 1 to " + std::to_string(kMaxRuns)};
+  if (!std::isfinite(axis.from)) return FieldError{at + "from", "must be a finite number"};
+  if (!std::isfinite(axis.to)) return FieldError{at + "to", "must be a finite number"};
+  if (axis.to < axis.from) return FieldError{at + "to", "must not be below " + at + "from"};
+  return std::nullopt;
+}
+
+// Why the model at one value (pair) of the sweep is not one a scene of its own could hold: the
+// model's error, named by the swept parameter's path (the first axis's, unless the failing field
+// is the second's) and with the values in its message; or a stroboscopic section without forcing.
+std::optional<FieldError> check_value(const Model& m, const SweepSpec& spec, double v, double v2) {
+  std::optional<FieldError> e = validate_model(m);
+  if (!e) {
+    if (spec.section == SectionKind::stroboscopic &&
+        std::none_of(m.pellets.begin(), m.pellets.end(),
+                     [](const Pellet& p) { return p.force.Omega > 0.0; }))
+      e = FieldError{"sweep.section",
+                     "a stroboscopic section needs a forced pellet (Omega > 0); without forcing "
+                     "use \"impact\""};
+    else
+      return std::nullopt;
+  }
+  std::string at = spec.axis.parameter + " = " + shortest_text(v);
+  if (spec.axis2) at += ", " + spec.axis2->parameter + " = " + shortest_text(v2);
+  const bool named = e->field == spec.axis.parameter || e->field == "sweep.section" ||
+                     (spec.axis2 && e->field == spec.axis2->parameter);
+  if (!named) {
+    e->message = e->field + " " + e->message;
+    e->field = spec.axis.parameter;
+  }
+  e->message += " (at " + at + ", a value of the sweep)";
+  return e;
+}
+
+// Every value (pair) of the sweep, each model checked as a scene of its own would be: the checks
+// are not all ranges (pellets and limiters must not coincide mod 2π, a stroboscopic section
+// needs forcing), so the ends alone do not vouch for the values between them.
+std::optional<FieldError> check_every_value(const Model& model, const SweepSpec& spec) {
+  const SweepAxis one{"", 0.0, 0.0, 1};
+  const SweepAxis& a2 = spec.axis2 ? *spec.axis2 : one;
+  // An axis from a value to itself has one value however many runs it makes.
+  const int n = spec.axis.from == spec.axis.to ? 1 : spec.axis.count;
+  const int n2 = a2.from == a2.to ? 1 : a2.count;
+  Model m = model;
+  double* x = parameter_field(m, spec.axis.parameter);  // check_axis found both
+  double* x2 = spec.axis2 ? parameter_field(m, a2.parameter) : nullptr;
+  for (int j = 0; j < n2; ++j) {
+    const double v2 = a2.value(j);
+    if (x2) *x2 = v2;
+    for (int i = 0; i < n; ++i) {
+      const double v = spec.axis.value(i);
+      *x = v;
+      if (auto e = check_value(m, spec, v, v2)) return e;
+    }
+  }
+  return std::nullopt;
+}
+
+// The speeds of start s > 0, as fractions of 2·sqrt(g/R) in [−1, 1], one per pellet.
+std::vector<double> seeded_speeds(std::uint64_t seed, int start, int pellets) {
+  std::mt19937_64 rng(seed * 0x9E3779B97F4A7C15ULL + static_cast<std::uint64_t>(start));
+  std::uniform_real_distribution<double> u(-1.0, 1.0);
+  std::vector<double> f(pellets);
+  for (double& x : f) x = u(rng);
+  return f;
+}
+
+// The smallest period p of the section over the record (points per pellet at k = 0..K), or 0.
+int section_period(const std::vector<StateAt>& stops, double speed_scale) {
+  const int K = static_cast<int>(stops.size()) - 1;
+  if (K < 2) return 0;
+  const int n = static_cast<int>(stops.front().pellets.size());
+  std::vector<double> tol_phi(n), tol_dphi(n);
+  for (int i = 0; i < n; ++i) {
+    double lo = 1e300, hi = -1e300, vlo = 1e300, vhi = -1e300;
+    for (const StateAt& s : stops) {
+      const double w = wrap_angle(s.pellets[i].phi);
+      lo = std::min(lo, w);
+      hi = std::max(hi, w);
+      vlo = std::min(vlo, s.pellets[i].dphi);
+      vhi = std::max(vhi, s.pellets[i].dphi);
+    }
+    tol_phi[i] = 1e-5 * (1.0 + (hi - lo));
+    tol_dphi[i] = 1e-5 * (speed_scale + (vhi - vlo));
+  }
+  for (int p = 1; 2 * p <= K; ++p) {
+    bool repeats = true;
+    for (int k = 0; repeats && k + p <= K; ++k)
+      for (int i = 0; repeats && i < n; ++i) {
+        const FinalState& a = stops[k].pellets[i];
+        const FinalState& b = stops[k + p].pellets[i];
+        repeats = std::abs(std::remainder(b.phi - a.phi, kTwoPi)) <= tol_phi[i] &&
+                  std::abs(b.dphi - a.dphi) <= tol_dphi[i];
+      }
+    if (repeats) return p;
+  }
+  return 0;
+}
+
+bool held(const FinalState& s) { return s.state != PelletState::sliding; }
+
+// One run of the sweep, from `start`; `last` receives its last state.
+SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec& spec,
+                 const Start& start, Start& last) {
+  const double T = sweep_period(model);
+  const double t_record = spec.transient * T;
+  SimOptions o = options;
+  o.t_end = (spec.transient + spec.record) * T;
+  o.record.clear();
+  o.stops.clear();
+  o.keep_events_from = t_record;
+  o.lyapunov = spec.lyapunov;
+  if (spec.section == SectionKind::stroboscopic)
+    for (int k = spec.transient; k <= spec.transient + spec.record; ++k) o.stops.push_back(k * T);
+  Model m = model;
+  for (int i = 0; i < m.size(); ++i) {
+    m.pellets[i].phi0 = start.phi[i];
+    m.pellets[i].dphi0 = start.dphi[i];
+  }
+  const RunResult r = simulate(m, o);
+
+  SweepRun run;
+  auto phase = [&](double t) { return kTwoPi * (t / T - std::floor(t / T)); };
+  if (spec.section == SectionKind::stroboscopic) {
+    run.points.reserve(r.stops.size() * m.pellets.size());
+    for (const StateAt& s : r.stops)
+      for (int i = 0; i < m.size(); ++i) {
+        run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase(s.t), -1,
+                              s.t <= r.stats.trusted_until});
+        run.sticks = run.sticks || held(s.pellets[i]);
+      }
+    run.period = section_period(r.stops, speed_scale(m));
+  }
+  int impacts = 0;
+  for (const Event& e : r.events) {
+    if (e.t < t_record) continue;
+    if (e.kind == EventKind::limiter || e.kind == EventKind::collision ||
+        e.kind == EventKind::chatter)
+      ++impacts;
+    if (e.kind == EventKind::stick) run.sticks = true;
+    if (spec.section == SectionKind::impact && e.kind == EventKind::limiter)
+      run.points.push_back({e.pellets[0], e.t, e.phi, e.dphi_before[0], phase(e.t), e.limiter,
+                            e.t <= r.stats.trusted_until});
+  }
+  // A vector's growth leaves up to half of it spare: a sweep keeps exactly its points.
+  run.points.shrink_to_fit();
+  run.impacts_per_period = static_cast<double>(impacts) / spec.record;
+  run.at_rest = std::all_of(r.summary.final.begin(), r.summary.final.end(), held);
+  run.termination = r.stats.termination;
+  run.message = r.stats.message;
+  run.trusted =
+      run.termination == Termination::completed && r.stats.trusted_until >= r.stats.t_reached;
+  run.error_estimate = r.stats.error_estimate;
+  run.trusted_until = r.stats.trusted_until;
+  if (r.lyapunov && r.lyapunov->unsupported.empty() && !r.lyapunov->exponents.empty())
+    run.lyapunov = r.lyapunov->exponents.front();
+  last.phi.clear();
+  last.dphi.clear();
+  for (const FinalState& f : r.summary.final) {
+    last.phi.push_back(f.phi);
+    last.dphi.push_back(f.dphi);
+  }
+  return run;
+}
+
+// One chain of runs made in order, each from the state the one before it left (or each from
+// its own start, without continuation).
+struct Link {
+  int i = 0;  // value index on the axis
+  int direction = 0;
+};
+struct Chain {
+  int start = 0;
+  int j = 0;  // value index on axis2
+  std::vector<Link> links;
+};
+
+// Chain c, in the order start, value2, and (without continuation) value.
+Chain chain_at(const SweepSpec& spec, int c) {
+  const int n = spec.axis.count;
+  const int n2 = spec.axis2 ? spec.axis2->count : 1;
+  if (spec.continuation == Continuation::none) return {c / (n2 * n), (c / n) % n2, {{c % n, 0}}};
+  Chain chain{c / n2, c % n2, {}};
+  if (spec.continuation != Continuation::backward)
+    for (int i = 0; i < n; ++i) chain.links.push_back({i, +1});
+  if (spec.continuation != Continuation::forward)
+    for (int i = n - 1; i >= 0; --i) chain.links.push_back({i, -1});
+  return chain;
+}
+
+}  // namespace
+
+double SweepAxis::value(int i) const {
+  if (count <= 1) return from;
+  if (i == count - 1) return to;  // from + (to − from) may round past it
+  const double v = from + (to - from) * static_cast<double>(i) / (count - 1);
+  return std::clamp(v, std::min(from, to), std::max(from, to));
+}
+
+double sweep_period(const Model& model) {
+  for (const Pellet& p : model.pellets)
+    if (p.force.Omega > 0.0) return kTwoPi / p.force.Omega;
+  return kTwoPi * time_scale(model);
+}
+
+long stroboscopic_points_per_run(const Model& model, const SweepSpec& spec) {
+  return (static_cast<long>(spec.record) + 1) * model.size();
+}
+
+long sweep_runs(const SweepSpec& spec) {
+  const long per_start = static_cast<long>(spec.axis.count) * (spec.axis2 ? spec.axis2->count : 1);
+  const long directions = spec.continuation == Continuation::both ? 2 : 1;
+  return per_start * directions * spec.initial_states;
+}
+
+std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& spec) {
+  if (auto e = check_axis(model, spec.axis, "sweep.")) return e;
+  if (spec.axis2) {
+    if (auto e = check_axis(model, *spec.axis2, "sweep.parameter2.")) return e;
+    if (spec.axis2->parameter == spec.axis.parameter)
+      return FieldError{"sweep.parameter2.parameter", "must differ from sweep.parameter"};
+  }
+  if (spec.transient < 0 || spec.transient > kMaxPeriods)
+    return FieldError{"sweep.transient",
+                      "must be from 0 to " + std::to_string(kMaxPeriods) + " periods"};
+  if (spec.record < 1 || spec.record > kMaxPeriods)
+    return FieldError{"sweep.record",
+                      "must be from 1 to " + std::to_string(kMaxPeriods) + " periods"};
+  if (spec.initial_states < 1 || spec.initial_states > 1000)
+    return FieldError{"sweep.initial_states", "must be from 1 to 1000"};
+  if (sweep_runs(spec) > kMaxRuns)
+    return FieldError{"sweep.count",
+                      "the sweep would make more than " + std::to_string(kMaxRuns) + " runs"};
+  return check_every_value(model, spec);
+}
+
+int sweep_chain_count(const SweepSpec& spec) {
+  const long rows = static_cast<long>(spec.initial_states) * (spec.axis2 ? spec.axis2->count : 1);
+  return static_cast<int>(spec.continuation == Continuation::none ? rows * spec.axis.count : rows);
+}
+
+std::vector<SweepRun> run_sweep_chain(const Model& model, const SimOptions& options,
+                                      const SweepSpec& spec, int c, const std::atomic<bool>* cancel,
+                                      const std::function<void()>& run_done,
+                                      const std::function<void(double v, double v2)>& before_run,
+                                      const std::function<bool(const SweepRun&)>& admit) {
+  const Chain chain = chain_at(spec, c);
+  const int n = model.size();
+  const double v2 = spec.axis2 ? spec.axis2->value(chain.j) : 0.0;
+  std::vector<SweepRun> runs;
+  Start state;
+  bool fresh = true;
+  for (const Link& link : chain.links) {
+    if (cancel && cancel->load()) break;
+    const double v = spec.axis.value(link.i);
+    const Model m = with_values(model, spec, v, v2);
+    if (fresh || spec.continuation == Continuation::none) {
+      state = Start{};
+      const std::vector<double> speeds =
+          chain.start > 0 ? seeded_speeds(spec.seed, chain.start, n) : std::vector<double>{};
+      for (int p = 0; p < n; ++p) {
+        state.phi.push_back(m.pellets[p].phi0);
+        state.dphi.push_back(chain.start > 0 ? 2.0 * speed_scale(m) * speeds[p]
+                                             : m.pellets[p].dphi0);
+      }
+      fresh = false;
+    }
+    if (before_run) before_run(v, v2);
+    Start last;
+    SweepRun run = run_one(m, options, spec, state, last);
+    run.value = v;
+    run.value2 = v2;
+    run.start = chain.start;
+    run.direction = link.direction;
+    if (admit && !admit(run)) break;
+    runs.push_back(std::move(run));
+    state = std::move(last);
+    if (run_done) run_done();
+  }
+  return runs;
+}
+
+void order_sweep_runs(std::vector<SweepRun>& runs) {
+  auto key = [](const SweepRun& r) {
+    return std::make_tuple(r.start, r.value2, r.direction < 0 ? 1 : 0, r.value);
+  };
+  std::stable_sort(runs.begin(), runs.end(),
+                   [&](const SweepRun& a, const SweepRun& b) { return key(a) < key(b); });
+}
+
+SweepResult run_sweep(const Model& model, const SimOptions& options, const SweepSpec& spec,
+                      const SweepControl& control) {
+  const auto t0 = std::chrono::steady_clock::now();
+  const int chains = sweep_chain_count(spec);
+  std::vector<std::vector<SweepRun>> done_chains(chains);
+  const long total = sweep_runs(spec);
+  std::atomic<int> next{0};
+  std::atomic<long> done{0};
+  std::atomic<long> kept{0};  // section points of the runs kept
+  std::atomic<bool> cancelled{false};
+  // Set when the sweep is cancelled or a bound is reached: no new run starts.
+  std::atomic<bool> halt{false};
+  std::mutex stop_mutex;
+  std::optional<FieldError> stopped;
+  auto stop = [&](FieldError why) {
+    const std::lock_guard lock(stop_mutex);
+    if (!stopped) stopped = std::move(why);
+    halt = true;
+  };
+  auto runs_done = [&] {
+    return " after " + std::to_string(done.load()) + " of " + std::to_string(total) + " runs";
+  };
+  // The bounds and the cancel flag, looked at between runs.
+  auto look = [&] {
+    if (control.cancel && control.cancel->load()) {
+      cancelled = true;
+      halt = true;
+    }
+    const double ms =
+        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+    if (ms > control.budget_ms)
+      stop({"sweep.count", "the sweep ran past its wall-clock budget of " +
+                               shortest_text(control.budget_ms / 1000.0) + " s" + runs_done() +
+                               ": sweep fewer values, or record fewer periods"});
+    return !halt;
+  };
+  auto admit = [&](const SweepRun& run) {
+    if (control.max_points <= 0) return true;
+    const long n = static_cast<long>(run.points.size());
+    if (kept.fetch_add(n) + n <= control.max_points) return true;
+    kept -= n;
+    stop({"sweep.record", "the sweep's runs would keep more than its limit of " +
+                              std::to_string(control.max_points) + " section points" + runs_done() +
+                              ": record fewer periods, or sweep fewer values"});
+    return false;
+  };
+  auto run_done = [&] {
+    const long d = ++done;
+    if (control.progress) control.progress(d, total);
+    look();
+  };
+  auto work = [&] {
+    for (int c = next++; c < chains && look(); c = next++) {
+      if (control.skip && control.skip(c)) continue;
+      done_chains[c] = run_sweep_chain(model, options, spec, c, &halt, run_done, {}, admit);
+      if (halt) return;  // a chain cut short is not whole: no checkpoint keeps it
+      if (control.chain_done) control.chain_done(c, done_chains[c]);
+    }
+  };
+  const int threads = std::max(1, control.threads);
+  std::vector<std::thread> pool;
+  for (int k = 1; k < threads; ++k) pool.emplace_back(work);
+  work();
+  for (std::thread& t : pool) t.join();
+
+  SweepResult result;
+  for (auto& runs : done_chains)
+    for (SweepRun& r : runs) result.runs.push_back(std::move(r));
+  // A fixed order, whatever thread made which run.
+  order_sweep_runs(result.runs);
+  result.threads = threads;
+  result.cancelled = cancelled;
+  result.stopped = std::move(stopped);
+  result.wall_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
+  return result;
+}
+
+}  // namespace vibro

@@ -1,0 +1,461 @@
+#include "core/analysis/trust.h"
+
+#include <algorithm>
+#include <chrono>
+#include <cmath>
+#include <iomanip>
+#include <limits>
+#include <sstream>
+#include <tuple>
+
+#include "core/analysis/monodromy.h"
+#include "core/events/event_tolerances.h"
+#include "core/model/motion.h"
+
+namespace vibro {
+namespace {
+
+constexpr double kSmallestRtol = 1e-14;  // validate_options' lower bound
+constexpr double kSmallestAtol = 1e-16;
+
+bool listed_alike(const Event& a, const Event& b) {
+  return a.kind == b.kind && a.pellets == b.pellets && a.limiter == b.limiter;
+}
+
+std::string describe(const Event& e) {
+  std::ostringstream s;
+  s << event_kind_name(e.kind) << " of pellet";
+  if (e.pellets.size() > 1) s << "s";
+  for (std::size_t k = 0; k < e.pellets.size(); ++k) s << (k ? " and " : " ") << e.pellets[k] + 1;
+  if (e.limiter >= 0) s << " at limiter " << e.limiter + 1;
+  s.precision(7);
+  s << " at t = " << e.t << " s";
+  return s.str();
+}
+
+std::string describe_run_end(const RunResult& run) {
+  std::ostringstream s;
+  s.precision(7);
+  s << "ends at t = " << run.stats.t_reached << " s";
+  return s.str();
+}
+
+// The time from event k to the nearest event at another instant (or the run's start or end).
+double spacing(const std::vector<Event>& events, std::size_t k, double t_end) {
+  const double t = events[k].t;
+  const double same = 1e-12 * (1.0 + std::abs(t));
+  double before = t, after = t_end - t;
+  for (std::size_t j = k; j-- > 0;)
+    if (events[j].t < t - same) {
+      before = t - events[j].t;
+      break;
+    }
+  for (std::size_t j = k + 1; j < events.size(); ++j)
+    if (events[j].t > t + same) {
+      after = events[j].t - t;
+      break;
+    }
+  return std::min(before, after);
+}
+
+// How early a grazing event may come that a run and its shadow put at t, s: a contact decided by
+// a position error δ (ten times what the tolerance holds an angle to) under accelerations up to
+// a (gravity and the largest force) moves by up to sqrt(2δ/a). A run and its shadow that part
+// at a grazing collision both put it 5e-5 s after a reference did, far more than their events'
+// error before it.
+double grazing_window(const Model& model, const Stats& st, double phi) {
+  double a = model.g / model.R;
+  for (const Pellet& p : model.pellets) a += std::abs(p.force.F0) / (p.m * model.R);
+  const double delta = 10.0 * (st.rtol * (1.0 + angle_size(phi)) + st.atol);
+  return a > 0.0 ? std::sqrt(2.0 * delta / a) : 0.0;
+}
+
+// Where the trust ends when the runs part at event k: `margin` before the earlier of their
+// events k, but never before the last event both list alike (or the start), less ten times the
+// event times' error. The true sequence may part earlier than either run: a reference listed an
+// impact 1.4 ms before the first event the runs listed otherwise, their times 0.5 ms apart, and
+// a chatter 8.5e-11 s before the collision both listed last, 2e-13 s before their stick (trust
+// scan, seed 25, scene 463). The margin is ten times the event times' error (the bound the
+// estimate keeps), and where the runs list different events, at least the grazing window.
+double trust_end(const std::vector<Event>& run, const std::vector<Event>& shadow, std::size_t k,
+                 double margin, double error) {
+  double first = std::numeric_limits<double>::infinity();
+  if (k < run.size()) first = run[k].t;
+  if (k < shadow.size()) first = std::min(first, shadow[k].t);
+  const double last =
+      k == 0 ? 0.0 : std::max(0.0, std::min(run[k - 1].t, shadow[k - 1].t) - 10.0 * error);
+  return std::max(last, first - margin);
+}
+
+// The round-off of an impact's time from the round-off of the angles it is found at: a hundred
+// ulps of the angle over the speed of approach. Pellets near 7 rad meeting at 1e-3 rad/s
+// collide at times that round-off alone moves by 1e-11 s; every run agreed with its shadow to
+// 1e-14 s, a reference at rtol 1e-13 put them 7e-11 s away.
+double placement_round_off(const Event& e) {
+  double approach = 0.0;
+  if (e.kind == EventKind::limiter && !e.dphi_before.empty()) approach = std::abs(e.dphi_before[0]);
+  if (e.kind == EventKind::collision && e.dphi_before.size() == 2)
+    approach = std::abs(e.dphi_before[0] - e.dphi_before[1]);
+  if (!(approach > 0.0)) return 0.0;
+  return 1e2 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(e.phi)) / approach;
+}
+
+// How far a start a round-off apart moves an instant, to first order (from the variational
+// equations along the shadow's path, instant_shifts).
+struct StartShift {
+  // The shadow's own start 64 ulps ahead (check_model). A chain that amplifies errors amplifies
+  // it as it amplifies the run's own error, and where the two are alike the shadow lands where
+  // the run did: Radau IIA at rtol 1e-8 put an event 6.39e-9 s early, the start 64 ulps ahead
+  // put the shadow's 6.35e-9 s early, and the two agreed to 5e-13 s (trust scan, seed 20, scene
+  // 657). Less this shift, the shadow is where it would be from the run's start.
+  double start = 0.0;
+  // Every angle a few ulps on (4ε·(1 + |φ|)), the resting pellets' too (not those exactly on a
+  // limiter's angle), every other pellet's back: the round-off a run carries, as the chain
+  // amplifies it. The shadow cannot move resting pellets (it would break equilibria), and a
+  // chain from rest amplified round-off it did not see: two resting pellets 1e-6 rad apart, one
+  // forced, collided 112 times, and the last collision scattered by ±3e-9 s over every
+  // tolerance from 1e-8 to 1e-13 while a run and its shadow agreed to 3e-10 s (seed 28, scene
+  // 859). Pellets at one place moved alike would keep their gaps; 64 ulps over-stated that
+  // scatter sixtyfold.
+  double round_off = 0.0;
+};
+
+// The shadow's instants with their StartShift; none where the path holds what the saltations do
+// not cover (pellets moving together).
+class StartShifts {
+ public:
+  StartShifts(const Model& model, const RunResult& shadow, double budget_ms) {
+    if (shadow.path.empty()) return;
+    const Model moved = check_model(model);
+    const double ulps = 4.0 * std::numeric_limits<double>::epsilon();
+    Mat deltas = Mat::Zero(2 * model.size(), 2);
+    for (int i = 0; i < model.size(); ++i) {
+      const Pellet& p = model.pellets[i];
+      deltas(2 * i, 0) = moved.pellets[i].phi0 - p.phi0;
+      deltas(2 * i + 1, 0) = moved.pellets[i].dphi0 - p.dphi0;
+      const bool on_a_limiter = std::any_of(model.limiters.begin(), model.limiters.end(),
+                                            [&](const Limiter& l) { return l.angle == p.phi0; });
+      const double sign = i % 2 == 0 ? 1.0 : -1.0;
+      deltas(2 * i, 1) = on_a_limiter ? 0.0 : sign * ulps * (1.0 + std::abs(p.phi0));
+      deltas(2 * i + 1, 1) = sign * ulps * p.dphi0;
+    }
+    // A tenth of the shift is all the estimate needs: `auto` at rtol 1e-4 put the shifts within
+    // 1 % of the difference of shadows started with and without the 64 ulps.
+    const InstantShifts s = instant_shifts(model, shadow.path, deltas, 1e-4, budget_ms);
+    for (Eigen::Index k = 0; k < s.dt.rows(); ++k)
+      if (!shadow.path[k].events.empty())
+        at_.push_back({shadow.path[k].t, {s.dt(k, 0), s.dt(k, 1)}});
+  }
+  // The instant at t's (none where none is known).
+  StartShift at(double t) const {
+    const double same = 1e-12 * (1.0 + std::abs(t));
+    auto it = std::lower_bound(at_.begin(), at_.end(), t - same,
+                               [](const Instant& x, double v) { return x.t < v; });
+    return it != at_.end() && it->t <= t + same ? it->shift : StartShift{};
+  }
+
+ private:
+  struct Instant {
+    double t;
+    StartShift shift;
+  };
+  std::vector<Instant> at_;  // in time order
+};
+
+// The final states' difference completes a report.
+TrustReport finish(const Model& model, const RunResult& run, const RunResult& shadow,
+                   TrustReport r) {
+  const double time_scale = event_tolerances(model).time_scale;
+  if (run.stats.t_reached == shadow.stats.t_reached) {
+    for (std::size_t i = 0; i < run.summary.final.size() && i < shadow.summary.final.size(); ++i) {
+      const FinalState& a = run.summary.final[i];
+      const FinalState& b = shadow.summary.final[i];
+      r.state_error = std::max(
+          {r.state_error, std::abs(a.phi - b.phi), time_scale * std::abs(a.dphi - b.dphi)});
+    }
+  } else {
+    r.state_error = std::numeric_limits<double>::infinity();  // not comparable: no estimate
+  }
+  return r;
+}
+
+// Ends the trust before the run's first near miss, if that comes before where it ends already,
+// with a warning a person reads; true if it did. The shadow cannot see it: run by the same
+// method, it may miss the same way.
+bool ends_at_graze(RunResult& run) {
+  Stats& st = run.stats;
+  if (!run.graze || !(run.graze->earliest < st.trusted_until)) return false;
+  const Graze& g = *run.graze;
+  st.trusted_until = g.earliest;
+  std::ostringstream why;
+  why.precision(3);
+  why << "events are trusted until t = " << std::setprecision(7) << g.earliest
+      << " s: at t = " << g.t << " s " << std::setprecision(3);
+  // A minimum below zero is a crossing that would have turned that far past (a grazing one).
+  const bool struck = g.value < 0.0;
+  switch (g.of) {
+    case Graze::Of::speed:
+      why << "the speed of pellet " << g.pellet + 1 << " fell to " << g.value
+          << " rad/s and turned away";
+      break;
+    case Graze::Of::gap:
+      why << "pellets " << g.pellet + 1 << " and " << g.other + 1
+          << (struck ? " collided so slowly that they would have turned " : " came within ")
+          << std::abs(g.value) << (struck ? " rad past each other" : " rad and turned away");
+      break;
+    case Graze::Of::limiter:
+      why << "pellet " << g.pellet + 1;
+      if (struck)
+        why << " struck limiter " << g.other + 1 << " so slowly that it would have turned "
+            << -g.value << " rad past it";
+      else
+        why << " came within " << g.value << " rad of limiter " << g.other + 1
+            << " and turned away";
+      break;
+    case Graze::Of::order:
+      why << "pellet " << g.pellet + 1 << " took two impacts at one instant, each closing within "
+          << "the contact radius of the other: which came first, and with it what they left,";
+      break;
+  }
+  if (g.of != Graze::Of::order)
+    why << ", within the " << g.error << " the tolerance leaves uncertain: whether it "
+        << (g.of == Graze::Of::speed ? "stops"
+            : g.of == Graze::Of::gap ? "collides"
+                                     : "strikes")
+        << " there";
+  why << " depends on differences below the tolerance ("
+      << (g.of == Graze::Of::order ? "a near-simultaneous impact" : "a grazing event")
+      << "); tighten rtol to see whether the events after it converge";
+  run.warnings.push_back({"not_trusted", why.str(), -1, st.trusted_until, st.t_reached});
+  return true;
+}
+
+double largest_of_estimates(const Model& model, const Stats& st) {
+  const double time_scale = event_tolerances(model).time_scale;
+  return std::max({st.event_time_error / time_scale, st.state_error, st.energy_defect,
+                   st.first_integral_residual});
+}
+
+}  // namespace
+
+std::vector<Event> by_instant(const std::vector<Event>& events) {
+  auto order = [](const Event& x, const Event& y) {
+    return std::tie(x.kind, x.limiter, x.pellets) < std::tie(y.kind, y.limiter, y.pellets);
+  };
+  std::vector<Event> out;
+  for (std::size_t i = 0; i < events.size();) {
+    const double t = events[i].t;
+    const auto first = static_cast<std::ptrdiff_t>(out.size());
+    for (; i < events.size() && events[i].t <= t + 1e-12 * (1.0 + std::abs(t)); ++i) {
+      const Event& e = events[i];
+      const bool merges = e.kind == EventKind::collision || e.kind == EventKind::limiter;
+      auto same = std::find_if(out.begin() + first, out.end(), [&](const Event& x) {
+        return merges && x.kind == e.kind && x.limiter == e.limiter;
+      });
+      if (same == out.end()) {
+        out.push_back(e);
+        same = out.end() - 1;
+      } else {
+        same->pellets.insert(same->pellets.end(), e.pellets.begin(), e.pellets.end());
+      }
+      if (merges) {
+        std::sort(same->pellets.begin(), same->pellets.end());
+        same->pellets.erase(std::unique(same->pellets.begin(), same->pellets.end()),
+                            same->pellets.end());
+      }
+    }
+    std::stable_sort(out.begin() + first, out.end(), order);
+  }
+  return out;
+}
+
+SimOptions check_options(const SimOptions& run) {
+  SimOptions o = run;
+  // Another method errs independently where the same one at a tighter tolerance may take the
+  // same steps: DOP853 checks DOPRI5 (it is the cheaper at the tighter tolerance), and `auto`
+  // (an explicit method where the scene is not stiff) checks Radau IIA, whose own shadow shared
+  // its bias on an ill-conditioned cascade. `auto` weighing DOPRI5 against DOP853 (rtol 1e-6
+  // and looser) is checked by `auto` on DOP853, more accurate than either (a run mostly on
+  // DOP853 checked by DOPRI5 was blind to the error of its first DOPRI5 steps, which DOPRI5
+  // shared at every tolerance).
+  //
+  // DOP853 (and `auto` on it) checks itself: DOPRI5, checking it above rtol 1e-8 at a
+  // thirtieth of the tolerance (a hundredth would have cost 3.3×), erred as much as DOP853 and
+  // cancelled its error (trust scan, seed 4, scene 52: 3e-3 s estimated at 1.1e-4 s). DOP853's
+  // run and shadow share their steps only where the longest step holds both, and the shadow's is
+  // half the run's: a capped step errs 2⁹ times less (2⁶ for DOPRI5). Held alike, a run at rtol
+  // 1e-6 and its shadow at 1e-8 took the same 280 steps of 1/Ω and shared an error a chaotic
+  // chain amplified to 1.6e-7 s (seed 1, scene 380: estimated at 6.7e-10 s).
+  //
+  // The shadow's error must be well below the run's, whatever the methods' error constants
+  // and whatever luck a run has: it runs at a hundredth of both tolerances (at a thirtieth
+  // DOP853 missed a lucky run's error: seed 7, scene 809, the run at rtol 1e-8 erred 3.6e-10 s,
+  // the shadow 3.3e-10 s as much). Over 640,000 runs of trust_scan (seeds 1-32) these choices
+  // took the estimates ten times short from 21 to 17 at the same cost (median 2.25× the bare
+  // run for DOP853, 2.11× for DOPRI5, 1.31× for Radau IIA).
+  if (run.method == Method::dopri5) o.method = Method::dop853;
+  if (run.method == Method::radau5) o.method = Method::automatic;
+  if (run.method == Method::automatic &&
+      auto_explicit_for(run.rtol, run.auto_explicit) == AutoExplicit::dopri5)
+    o.auto_explicit = AutoExplicit::dop853;  // covers the runs that weigh DOPRI5 against DOP853
+  o.rtol = std::max(run.rtol / 100.0, kSmallestRtol);
+  o.atol = std::max(run.atol / 100.0, kSmallestAtol);
+  o.longest_step_scale = 0.5 * run.longest_step_scale;
+  o.record.clear();
+  o.stops.clear();
+  o.check = false;
+  // The start's shifts are found along its path, over its first 20,000 instants (about 20 MB; a
+  // run may list 200,000): past them the shadow is taken as it is.
+  o.keep_path = true;
+  o.path_limit = 20000;
+  o.lyapunov = false;
+  return o;
+}
+
+Model check_model(const Model& model) {
+  Model m = model;
+  const double ulps = 64.0 * std::numeric_limits<double>::epsilon();
+  for (Pellet& p : m.pellets) {
+    if (p.dphi0 != 0.0) p.phi0 += ulps * (1.0 + std::abs(p.phi0));
+    p.dphi0 *= 1.0 + ulps;
+  }
+  return m;
+}
+
+TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow,
+                         double budget_ms) {
+  TrustReport r;
+  const double t_common = std::min(run.stats.t_reached, shadow.stats.t_reached);
+  r.trusted_until = t_common;
+  const EventTolerances tol = event_tolerances(model);
+  const double time_scale = tol.time_scale;
+  const std::vector<Event> a = by_instant(run.events), b = by_instant(shadow.events);
+  const std::size_t n = std::min(a.size(), b.size());
+  const StartShifts shifts(model, shadow, budget_ms);
+  std::size_t k = 0;
+  bool summed = false;  // a chatter series was summed at or before event k
+  for (; k < n && listed_alike(a[k], b[k]); ++k) {
+    const double t = a[k].t;
+    if (t > t_common) break;
+    // The shadow as it is, and less its start's shift: the start is there to part round-off the
+    // run and the shadow would share (check_model), the shift to keep it from hiding the error.
+    const StartShift shift = shifts.at(b[k].t);
+    const double dt = std::max(std::abs(t - b[k].t), std::abs(t - (b[k].t - shift.start)));
+    const double round_off =
+        std::max({1e3 * std::numeric_limits<double>::epsilon() * (time_scale + t),
+                  placement_round_off(a[k]), std::abs(shift.round_off)});
+    // Times that differ by more than a tenth of the time to the neighbouring events, and by
+    // more than the tolerance explains (a thousand times rtol over the time scale and the time
+    // run: sensitive dynamics amplified them), leave the events' order and spacing unresolved,
+    // however alike the lists look. A squeeze's impacts, 1e-11 s apart and shifted alike by
+    // 5e-11 s, are resolved. So is a spacing that the two put ten times apart, whatever the
+    // tolerance explains: a chaotic run at rtol 1e-7 and its shadow put a turn and an impact
+    // 5.7e-7 s and 6.9e-6 s apart (each 2e-5 s off, less than the 9e-5 s the tolerance
+    // explains), and a reference listed them the other way round.
+    const double explained = 1e3 * run.stats.rtol * (time_scale + t);
+    const double gap_a = t - (k == 0 ? 0.0 : a[k - 1].t),
+                 gap_b = b[k].t - (k == 0 ? 0.0 : b[k - 1].t);
+    const double gap_difference = std::abs(gap_a - gap_b);
+    if ((dt > 0.1 * spacing(a, k, run.stats.t_reached) && dt > explained) ||
+        (gap_difference > 0.1 * std::min(gap_a, gap_b) && gap_difference > round_off)) {
+      r.unresolved = static_cast<int>(k);
+      r.trusted_until =
+          std::min(r.trusted_until,
+                   trust_end(a, b, k, 10.0 * std::max(dt, r.event_time_error), r.event_time_error));
+      return finish(model, run, shadow, r);
+    }
+    // Errors the run and its shadow share, the shadow cannot see: the round-off of event times
+    // (a thousand ulps of the time scale and the time run, or of the angles an impact is found
+    // at, or of the start as the chain amplifies it), from a summed chatter on, the summation's
+    // own error (chatter_time²/T0, docs/MODEL.md:
+    // both sum the same way), and a bias of one method.
+    summed = summed || a[k].kind == EventKind::chatter;
+    const double chatter = summed ? tol.chatter_time * tol.chatter_time / time_scale : 0.0;
+    // A run vouches for no less than a hundredth of what its tolerance asks, rtol·(T0 + t): a
+    // run and its shadow of one method that agree far better than asked may share the error
+    // (both 1e-12 s apart, a reference 2e-11 s away, rtol asking 1e-9 s).
+    const double asked = 1e-2 * run.stats.rtol * (time_scale + t);
+    r.event_time_error = std::max({r.event_time_error, dt, round_off, chatter, asked});
+  }
+  // The first event one run lists and the other does not (or lists otherwise).
+  if (k < n && !listed_alike(a[k], b[k])) {
+    r.first_difference = static_cast<int>(k);
+    const Event& e = a[k].t < b[k].t ? a[k] : b[k];
+    const double window = grazing_window(model, run.stats, e.phi);
+    r.trusted_until = std::min(
+        r.trusted_until,
+        trust_end(a, b, k, std::max(10.0 * r.event_time_error, window), r.event_time_error));
+  } else if (k == n && a.size() != b.size()) {
+    const std::vector<Event>& longer = a.size() > n ? a : b;
+    if (longer[n].t <= t_common) {
+      r.first_difference = static_cast<int>(n);
+      const double window = grazing_window(model, run.stats, longer[n].phi);
+      r.trusted_until = std::min(
+          r.trusted_until,
+          trust_end(a, b, n, std::max(10.0 * r.event_time_error, window), r.event_time_error));
+    }
+  }
+  return finish(model, run, shadow, r);
+}
+
+void apply_check(const Model& model, const RunResult& shadow, RunResult& run, double budget_ms) {
+  const auto started = std::chrono::steady_clock::now();
+  const TrustReport r = compare_runs(model, run, shadow, budget_ms);
+  const double compared_ms =
+      std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started).count();
+  Stats& st = run.stats;
+  st.check = true;
+  std::ostringstream method;
+  method << std::setprecision(3) << shadow.stats.method << " at rtol " << shadow.stats.rtol;
+  st.check_method = method.str();
+  st.check_wall_ms = shadow.stats.wall_ms + compared_ms;
+  st.wall_ms += st.check_wall_ms;
+  st.event_time_error = r.event_time_error;
+  st.state_error = r.state_error;
+  st.trusted_until = r.trusted_until;
+  st.error_estimate = largest_of_estimates(model, st);
+  if (ends_at_graze(run)) return;
+
+  const std::vector<Event> listed = by_instant(run.events), checked = by_instant(shadow.events);
+  std::ostringstream why;
+  why.precision(7);
+  if (r.unresolved >= 0) {
+    const auto k = static_cast<std::size_t>(r.unresolved);
+    why << "events are trusted until t = " << r.trusted_until << " s: after that this run lists "
+        << describe(listed[k]) << ", and the check run (" << st.check_method
+        << ") lists it at t = " << checked[k].t
+        << " s, more than a tenth of the time to the neighbouring events. "
+        << "The events from there on are not resolved (sensitive dynamics); tighten rtol to see "
+           "whether they converge";
+    run.warnings.push_back({"not_trusted", why.str(), -1, r.trusted_until, st.t_reached});
+  } else if (r.first_difference >= 0) {
+    const auto k = static_cast<std::size_t>(r.first_difference);
+    why << "events are trusted until t = " << r.trusted_until << " s: after that this run lists ";
+    why << (k < listed.size() ? describe(listed[k]) : "no more events");
+    why << ", and the check run (" << st.check_method << ") lists ";
+    why << (k < checked.size() ? describe(checked[k]) : "no more events");
+    why << ". The events from there on depend on differences below the tolerance (a grazing "
+           "impact, a stick test at its threshold, or sensitive dynamics); tighten rtol to see "
+           "whether they converge";
+    run.warnings.push_back({"not_trusted", why.str(), -1, r.trusted_until, st.t_reached});
+  } else if (shadow.stats.t_reached < st.t_reached) {
+    why << "events are trusted until t = " << r.trusted_until << " s: the check run ("
+        << st.check_method << ") " << describe_run_end(shadow) << " (" << shadow.stats.message
+        << "), so later events are not checked";
+    run.warnings.push_back({"not_trusted", why.str(), -1, r.trusted_until, st.t_reached});
+  }
+}
+
+void apply_unchecked(const Model& model, RunResult& run) {
+  Stats& st = run.stats;
+  st.check = false;
+  st.check_method.clear();
+  const double consistency = std::max(st.energy_defect, st.first_integral_residual);
+  st.event_time_error = consistency * event_tolerances(model).time_scale;
+  st.state_error = consistency;
+  st.trusted_until = st.t_reached;
+  st.error_estimate = largest_of_estimates(model, st);
+  ends_at_graze(run);
+}
+
+}  // namespace vibro

@@ -1,0 +1,150 @@
+#include "core/events/contacts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <numeric>
+
+#include "core/model/dynamics.h"
+
+namespace vibro {
+
+std::vector<Neighbours> circular_neighbours(const Vec& y, int n) {
+  std::vector<int> order(n);
+  std::iota(order.begin(), order.end(), 0);
+  auto place = [&](int i) {
+    const double w = std::fmod(y[phi_index(i)], kTwoPi);
+    return w < 0.0 ? w + kTwoPi : w;
+  };
+  std::sort(order.begin(), order.end(), [&](int a, int b) { return place(a) < place(b); });
+  std::vector<Neighbours> neighbours;
+  for (int k = 0; k < n; ++k) {
+    const int behind = order[k], ahead = order[(k + 1) % n];
+    const double raw = y[phi_index(ahead)] - y[phi_index(behind)];
+    double gap = std::fmod(raw, kTwoPi);
+    if (gap <= 0.0) gap += kTwoPi;
+    neighbours.push_back({behind, ahead, gap - raw});
+  }
+  return neighbours;
+}
+
+void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact,
+                   std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
+                   std::vector<PairContact>& pairs) {
+  for (std::size_t pass = 0; pass <= neighbours.size(); ++pass) {
+    bool changed = false;
+    for (const Neighbours& nb : neighbours) {
+      if (std::any_of(apart.begin(), apart.end(), [&](const PairContact& c) {
+            return c.behind == nb.behind && c.ahead == nb.ahead;
+          }))
+        continue;
+      double& pb = y[phi_index(nb.behind)];
+      double& pa = y[phi_index(nb.ahead)];
+      const double gap = pa - pb + nb.offset;
+      const bool listed = std::any_of(pairs.begin(), pairs.end(), [&](const PairContact& c) {
+        return c.behind == nb.behind && c.ahead == nb.ahead;
+      });
+      // A pair already in contact stays at one place, however far an earlier snap of this
+      // loop moved one of them (onto a pellet at a limiter).
+      if (!listed && gap > contact) continue;
+      if (!listed) pairs.push_back({nb.behind, nb.ahead});
+      if (gap == 0.0) continue;
+      if (at_limiter[nb.ahead]) {
+        pb = pa + nb.offset;
+        at_limiter[nb.behind] = true;
+      } else {
+        pa = pb - nb.offset;
+        at_limiter[nb.ahead] = at_limiter[nb.behind];
+      }
+      changed = true;
+    }
+    if (!changed) break;
+  }
+}
+
+std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
+                                const std::vector<PairContact>& pairs,
+                                const std::vector<LimiterContact>& limiter_contacts,
+                                const std::vector<bool>& armed, const JoinCriteria& criteria) {
+  const int n = model.size();
+  std::vector<int> next(n, -1), prev(n, -1);
+  // Force, mass and momentum of the chain that `link` leads to from `from`, and the side of an
+  // armed limiter one of its pellets touches (0: none).
+  struct Chain {
+    double F = 0.0, M = 0.0, P = 0.0;
+    int limiter_side = 0;
+  };
+  auto chain = [&](int from, const std::vector<int>& link) {
+    Chain c;
+    for (int i = from, guard = 0; i >= 0 && guard < n; i = link[i], ++guard) {
+      c.F += model.pellets[i].force.at(t);
+      c.M += model.pellets[i].m;
+      c.P += model.pellets[i].m * y[dphi_index(i)];
+      for (const LimiterContact& l : limiter_contacts)
+        if (l.pellet == i && armed[l.limiter]) c.limiter_side = l.side;
+    }
+    return c;
+  };
+  // The acceleration of a chain at rest, given what holds it: static friction up to its
+  // capacity, and a limiter at its back (side +1 stops it going down, −1 going up).
+  auto held = [&](const Chain& c, double phi) {
+    const double a = c.F / (c.M * model.R) - model.g / model.R * std::sin(phi);
+    const double capacity = stick_capacity(model, phi);
+    const double up = std::max(a - capacity, 0.0), down = std::min(a + capacity, 0.0);
+    return (c.limiter_side > 0 ? 0.0 : down) + (c.limiter_side < 0 ? 0.0 : up);
+  };
+  // How fast the chain behind closes on the chain ahead, rad/s². Moving at one speed, friction
+  // and gravity per mass are the same for both: the forces per mass decide. At rest, what holds
+  // each decides; one at rest and one moving (parting from a pellet that a limiter stopped):
+  // each one's own acceleration.
+  const SlidingLaw law(model);
+  auto relative_acceleration = [&](const Chain& b, const Chain& a, double phi) {
+    const double vb = b.P / b.M, va = a.P / a.M;
+    const bool rest_b = std::abs(vb) <= criteria.v_merge, rest_a = std::abs(va) <= criteria.v_merge;
+    if (!rest_b && !rest_a) return (b.F / b.M - a.F / a.M) / model.R;
+    auto own = [&](const Chain& c, double v, bool rest) {
+      return rest ? held(c, phi)
+                  : law.acceleration(c.F, c.M, std::cos(phi), std::sin(phi), v, v > 0.0 ? 1 : -1);
+    };
+    return own(b, vb, rest_b) - own(a, va, rest_a);
+  };
+  // Chains grow until nothing more joins: a pair's press depends on the chains behind and ahead.
+  for (bool grew = true; grew;) {
+    grew = false;
+    for (const PairContact& p : pairs) {
+      if (next[p.behind] >= 0 || prev[p.ahead] >= 0) continue;
+      if (separated_by_limiter(model, limiter_contacts, armed, p)) continue;
+      const Chain b = chain(p.behind, prev), a = chain(p.ahead, next);
+      const double approach = b.P / b.M - a.P / a.M;
+      const double phi = y[phi_index(p.behind)];
+      const double press = relative_acceleration(b, a, phi);
+      // Parting at w and pressed back at p, they meet again after 2w/p, and at k_c·w after
+      // that: the whole chatter lasts 2w/(p(1 − k_c)). They part by w²/(2p) at most, a gap
+      // that round-off alone may close or open.
+      const double chatter = 2.0 * std::abs(approach) / (press * (1.0 - model.k_c));
+      const double flight = approach * approach / (2.0 * press);
+      if (press >= 0.0 && (std::abs(approach) <= criteria.v_merge ||
+                           chatter <= criteria.chatter_time || flight <= criteria.flight)) {
+        next[p.behind] = p.ahead;
+        prev[p.ahead] = p.behind;
+        grew = true;
+      }
+    }
+  }
+  std::vector<Body> bodies;
+  std::vector<bool> placed(n, false);
+  for (int start = 0; start < n; ++start) {
+    if (placed[start]) continue;
+    int first = start;
+    for (int guard = 0; prev[first] >= 0 && prev[first] != start && guard < n; ++guard)
+      first = prev[first];
+    Body body;
+    for (int i = first, guard = 0; i >= 0 && !placed[i] && guard < n; i = next[i], ++guard) {
+      body.members.push_back(i);
+      placed[i] = true;
+    }
+    bodies.push_back(body);
+  }
+  return bodies;
+}
+
+}  // namespace vibro

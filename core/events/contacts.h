@@ -1,0 +1,52 @@
+// Who touches whom around the circle: neighbours and their gaps, pellets close enough to touch
+// at an instant, and which touching pellets move on together as one body.
+#pragma once
+
+#include <vector>
+
+#include "core/events/impacts.h"
+#include "core/integrators/ode.h"
+#include "core/model/model.h"
+#include "core/model/motion.h"
+
+namespace vibro {
+
+// Two pellets next to each other around the circle; their gap phi_ahead − phi_behind + offset
+// lies in [0, 2π] for the whole run, because pellets never pass each other.
+struct Neighbours {
+  int behind;
+  int ahead;
+  double offset;
+};
+
+// The neighbours of n pellets (n ≥ 2) in their circular order at the state y.
+std::vector<Neighbours> circular_neighbours(const Vec& y, int n);
+
+// Neighbours closer than `contact` (rad) touch at this instant too: they are added to `pairs` and
+// snapped onto one place (the one at a limiter stays put, and one snapped onto it is at the
+// limiter too). Pairs listed in `apart` (a limiter between them) never touch. An inelastic
+// cascade among several pellets closes their gaps geometrically, and only treating the
+// near-touching ones together ends it in bounded work (and never lets round-off push one pellet
+// through another).
+void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact,
+                   std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
+                   std::vector<PairContact>& pairs);
+
+// When touching pellets move on as one body: their forces press them together, and they would
+// otherwise collide again at once — equal speeds within `v_merge`, a remaining chatter between
+// them shorter than `chatter_time` (its plastic limit), or a flight apart within the round-off
+// of the gap (`flight`).
+struct JoinCriteria {
+  double v_merge = 0.0;       // rad/s
+  double chatter_time = 0.0;  // s
+  double flight = 0.0;        // rad
+};
+
+// The bodies after an instant, members in +φ order (modes are left to the caller). Pairs on the
+// two sides of an armed limiter that acts on both never join.
+std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
+                                const std::vector<PairContact>& pairs,
+                                const std::vector<LimiterContact>& limiter_contacts,
+                                const std::vector<bool>& armed, const JoinCriteria& criteria);
+
+}  // namespace vibro

@@ -1,0 +1,191 @@
+#include "core/events/impacts.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+
+namespace vibro {
+
+void collide(double m_i, double m_j, double k_c, double& v_i, double& v_j) {
+  const double M = m_i + m_j;
+  const double vi = v_i, vj = v_j;
+  v_i = ((m_i - k_c * m_j) * vi + m_j * (1.0 + k_c) * vj) / M;
+  v_j = ((m_j - k_c * m_i) * vj + m_i * (1.0 + k_c) * vi) / M;
+}
+
+bool separated_by_limiter(const Model& model, const std::vector<LimiterContact>& lc,
+                          const std::vector<bool>& armed, const PairContact& p) {
+  auto touches = [&](int pellet, int limiter, int side) {
+    return std::any_of(lc.begin(), lc.end(), [&](const LimiterContact& c) {
+      return c.pellet == pellet && c.limiter == limiter && c.side == side;
+    });
+  };
+  for (const LimiterContact& c : lc) {
+    if (!armed[c.limiter]) continue;
+    const Limiter& l = model.limiters[c.limiter];
+    if (c.pellet == p.behind && c.side == -1 && l.acts_on(p.ahead) &&
+        !touches(p.ahead, c.limiter, -1))
+      return true;
+    if (c.pellet == p.ahead && c.side == +1 && l.acts_on(p.behind) &&
+        !touches(p.behind, c.limiter, +1))
+      return true;
+  }
+  return false;
+}
+
+namespace {
+
+void strike_limiter(const Model& model, std::vector<bool>& armed, int limiter) {
+  if (model.limiters[limiter].mobile) armed[limiter] = false;
+  for (std::size_t j = 0; j < model.limiters.size(); ++j) {
+    if (model.limiters[j].mobile && model.limiters[j].rearm_by == limiter) armed[j] = true;
+  }
+}
+
+// The limit of an endless cascade: each group of touching pellets moves with its momentum's
+// velocity, and stops if that drives it into an armed limiter it touches.
+std::vector<Event> plastic_limit(const Model& model, std::vector<double>& v,
+                                 const std::vector<double>& v0, std::vector<bool>& armed,
+                                 const std::vector<bool>& armed0,
+                                 const std::vector<LimiterContact>& lc,
+                                 const std::vector<PairContact>& pc, int impacts) {
+  const int n = model.size();
+  v = v0;
+  armed = armed0;
+  // Each group's members in their order around the circle, behind to ahead; a limiter between
+  // two pellets keeps them in two groups.
+  std::vector<int> next(n, -1), prev(n, -1);
+  for (const PairContact& p : pc) {
+    if (separated_by_limiter(model, lc, armed0, p)) continue;
+    next[p.behind] = p.ahead;
+    prev[p.ahead] = p.behind;
+  }
+  std::vector<Event> events;
+  std::vector<bool> done(n, false);
+  for (int start = 0; start < n; ++start) {
+    if (done[start]) continue;
+    int first = start;
+    for (int guard = 0; prev[first] >= 0 && prev[first] != start && guard < n; ++guard)
+      first = prev[first];
+    std::vector<int> members;
+    double P = 0.0, M = 0.0;
+    for (int i = first, guard = 0; i >= 0 && !done[i] && guard < n; i = next[i], ++guard) {
+      members.push_back(i);
+      done[i] = true;
+      P += model.pellets[i].m * v0[i];
+      M += model.pellets[i].m;
+    }
+    double V = P / M;
+    int limiter = -1;
+    for (const LimiterContact& c : lc) {
+      if (std::find(members.begin(), members.end(), c.pellet) == members.end() || !armed[c.limiter])
+        continue;
+      if (limiter < 0) limiter = c.limiter;
+      if (V * c.side < 0.0) {
+        V = 0.0;
+        limiter = c.limiter;
+      }
+    }
+    // A group the cascade did not move (a pellet resting elsewhere, pellets moving together: their
+    // momentum's speed is theirs up to round-off) has no impact to list.
+    const bool struck = std::any_of(members.begin(), members.end(), [&](int i) {
+      return std::abs(v0[i] - V) > 8.0 * std::numeric_limits<double>::epsilon() * std::abs(V);
+    });
+    if (!struck || (members.size() == 1 && limiter < 0)) continue;
+    Event e;
+    e.kind = members.size() > 1 ? EventKind::collision : EventKind::limiter;
+    e.pellets = members;
+    e.limiter = limiter;
+    e.impacts_resolved = impacts;
+    for (int i : members) {
+      e.dphi_before.push_back(v0[i]);
+      v[i] = V;
+      e.dphi_after.push_back(V);
+    }
+    if (limiter >= 0) strike_limiter(model, armed, limiter);
+    events.push_back(std::move(e));
+  }
+  return events;
+}
+
+}  // namespace
+
+int shared_by_closings(const Model& model, const std::vector<double>& v,
+                       const std::vector<bool>& armed, const std::vector<LimiterContact>& lc,
+                       const std::vector<PairContact>& pc, double v_eps) {
+  std::vector<int> closings(model.size(), 0);
+  for (const LimiterContact& c : lc)
+    if (armed[c.limiter] && model.limiters[c.limiter].acts_on(c.pellet) &&
+        v[c.pellet] * c.side < -v_eps)
+      ++closings[c.pellet];
+  for (const PairContact& p : pc) {
+    if (v[p.behind] - v[p.ahead] <= v_eps || separated_by_limiter(model, lc, armed, p)) continue;
+    ++closings[p.behind];
+    ++closings[p.ahead];
+  }
+  for (int i = 0; i < model.size(); ++i)
+    if (closings[i] > 1) return i;
+  return -1;
+}
+
+std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
+                                   std::vector<bool>& armed,
+                                   const std::vector<LimiterContact>& limiter_contacts,
+                                   const std::vector<PairContact>& pair_contacts,
+                                   const std::vector<double>& positions,
+                                   const ImpactOptions& options) {
+  std::vector<LimiterContact> lc = limiter_contacts;
+  std::sort(lc.begin(), lc.end(), [](const LimiterContact& a, const LimiterContact& b) {
+    return a.pellet != b.pellet ? a.pellet < b.pellet : a.limiter < b.limiter;
+  });
+  std::vector<PairContact> pc = pair_contacts;
+  auto place = [&](int i) {
+    const double w = std::fmod(positions[i], kTwoPi);
+    return w < 0.0 ? w + kTwoPi : w;
+  };
+  std::stable_sort(pc.begin(), pc.end(), [&](const PairContact& a, const PairContact& b) {
+    return place(a.behind) < place(b.behind);
+  });
+
+  const std::vector<double> v0 = v;
+  const std::vector<bool> armed0 = armed;
+  std::vector<Event> events;
+  int impacts = 0;
+  for (int sweep = 0; sweep < options.max_sweeps; ++sweep) {
+    bool changed = false;
+    for (const LimiterContact& c : lc) {
+      const Limiter& lim = model.limiters[c.limiter];
+      if (!armed[c.limiter] || !lim.acts_on(c.pellet) || v[c.pellet] * c.side >= -options.v_eps)
+        continue;
+      Event e;
+      e.kind = EventKind::limiter;
+      e.pellets = {c.pellet};
+      e.limiter = c.limiter;
+      e.dphi_before = {v[c.pellet]};
+      v[c.pellet] = -lim.k * v[c.pellet];
+      e.dphi_after = {v[c.pellet]};
+      strike_limiter(model, armed, c.limiter);
+      events.push_back(std::move(e));
+      changed = true;
+      ++impacts;
+    }
+    for (const PairContact& p : pc) {
+      if (v[p.behind] - v[p.ahead] <= options.v_eps || separated_by_limiter(model, lc, armed, p))
+        continue;
+      Event e;
+      e.kind = EventKind::collision;
+      e.pellets = {p.behind, p.ahead};
+      e.dphi_before = {v[p.behind], v[p.ahead]};
+      collide(model.pellets[p.behind].m, model.pellets[p.ahead].m, model.k_c, v[p.behind],
+              v[p.ahead]);
+      e.dphi_after = {v[p.behind], v[p.ahead]};
+      events.push_back(std::move(e));
+      changed = true;
+      ++impacts;
+    }
+    if (!changed) return events;
+  }
+  return plastic_limit(model, v, v0, armed, armed0, lc, pc, impacts);
+}
+
+}  // namespace vibro

@@ -1,0 +1,49 @@
+// One motion interval, between two event instants: the bodies and their modes, the watches
+// whose roots end it, and the equations the integrator follows. Built once at the start of the
+// interval from the state there; nothing in it changes until the next instant.
+#pragma once
+
+#include <optional>
+#include <vector>
+
+#include "core/events/contacts.h"
+#include "core/events/event_tolerances.h"
+#include "core/events/watch.h"
+#include "core/model/dynamics.h"
+#include "core/model/first_integral.h"
+#include "core/model/model.h"
+#include "core/model/motion.h"
+
+namespace vibro {
+
+class MotionInterval {
+ public:
+  // The interval that starts at (t, y) with these bodies; `armed` says which limiters act.
+  MotionInterval(const Model& model, std::vector<Body> bodies, const std::vector<bool>& armed,
+                 const std::vector<Neighbours>& neighbours, double t, const Vec& y,
+                 const EventTolerances& tol);
+  // The dynamics read the bodies in place.
+  MotionInterval(const MotionInterval&) = delete;
+  MotionInterval& operator=(const MotionInterval&) = delete;
+
+  const std::vector<Body>& bodies() const { return bodies_; }
+  const std::vector<Watch>& watches() const { return watches_; }
+  const SegmentDynamics& dynamics() const { return dynamics_; }
+
+  // Everything rests and nothing can pull it away: the rest of the run is known.
+  bool at_rest_for_good() const { return !anything_moves_ && !forced_rest_; }
+  // The largest residual of the exact first integral (unforced paper-law bodies of one pellet)
+  // at the state y, relative; 0 where none applies.
+  double first_integral_residual(const Vec& y) const;
+
+ private:
+  const Model& model_;
+  std::vector<Body> bodies_;
+  std::vector<Watch> watches_;
+  std::vector<std::optional<FirstIntegral>> first_integrals_;  // per body
+  SegmentDynamics dynamics_;                                   // reads bodies_, declared before it
+  bool anything_moves_ = false;
+  bool forced_rest_ = false;
+};
+
+}  // namespace vibro

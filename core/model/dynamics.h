@@ -1,0 +1,97 @@
+// The equations of motion of one segment (MODEL.md, "Sliding motion"), as an OdeSystem.
+// Every member of a body gets the body's acceleration, so members stay together exactly.
+#pragma once
+
+#include <cmath>
+#include <numbers>
+#include <vector>
+
+#include "core/integrators/ode.h"
+#include "core/model/model.h"
+#include "core/model/motion.h"
+
+namespace vibro {
+
+// Normal force per unit mass, g cos phi + R dphi² (m/s²); negative means the paper law's
+// friction pushes the pellet along.
+double normal_per_mass(const Model& model, double phi, double dphi);
+
+// Total force and mass of a body at time t.
+double body_force(const Model& model, const Body& body, double t);
+double body_mass(const Model& model, const Body& body);
+
+// Free acceleration of a body at rest at phi: forcing and gravity, no friction.
+double body_free_acceleration(const Model& model, const Body& body, double t, double phi);
+
+// The longest step an integrator may take on this model, s: a radian of the slowest swing or
+// of a forcing (sqrt(R/g), 1/Ω).
+double longest_step(const Model& model);
+
+// The acceleration of a sliding body under the model's friction law, with the model's constants
+// computed once: the right-hand side calls it for every body at every evaluation.
+struct SlidingLaw {
+  explicit SlidingLaw(const Model& model)
+      : paper(model.friction == FrictionLaw::paper),
+        R(model.R),
+        gR(model.g / model.R),
+        mu(model.mu()) {}
+  // A body of total force F (N) and mass M (kg) at phi (its cosine and sine given), moving at
+  // dphi in direction s: forcing, gravity and kinetic friction.
+  double acceleration(double F, double M, double cos_phi, double sin_phi, double dphi,
+                      int s) const {
+    return acceleration(F, M, cos_phi, sin_phi, dphi, s,
+                        dphi * dphi + gR * cos_phi >= 0.0 ? 1 : -1);
+  }
+  // The same with the bilateral law's normal force taken on one side of its zero (side ±1), not
+  // by its magnitude: a motion interval keeps one side, so its equations stay smooth where the
+  // force changes sign (the normal watch ends the interval there). An integrator stepping over
+  // the kink of |N| errs by the kink, whatever its error estimate says.
+  double acceleration(double F, double M, double cos_phi, double sin_phi, double dphi, int s,
+                      int side) const {
+    return paper ? F / (M * R) - s * mu * dphi * dphi - gR * (sin_phi + s * mu * cos_phi)
+                 : F / (M * R) - gR * sin_phi - s * mu * side * (dphi * dphi + gR * cos_phi);
+  }
+  // Its partial derivatives in phi and dphi, which depend on the place and speed alone.
+  struct Slopes {
+    double phi, dphi;
+  };
+  Slopes slopes(double cos_phi, double sin_phi, double dphi, int s, int side) const {
+    return paper
+               ? Slopes{-gR * (cos_phi - s * mu * sin_phi), -2.0 * s * mu * dphi}
+               : Slopes{-gR * cos_phi + s * mu * side * gR * sin_phi, -2.0 * s * mu * side * dphi};
+  }
+  bool paper;
+  double R;   // m
+  double gR;  // g / R, 1/s²
+  double mu;  // tan(alpha0)
+};
+
+class SegmentDynamics final : public OdeSystem {
+ public:
+  // The bilateral law's normal force of each sliding body is taken on the side it has at y.
+  SegmentDynamics(const Model& model, const std::vector<Body>& bodies, const Vec& y);
+  // Sets a body's side of the normal force's zero (±1): one starting on the zero takes the side
+  // it moves to.
+  void set_normal_side(int body, int side) { normal_side_[body] = side; }
+  int normal_side(int body) const { return normal_side_[body]; }
+  int dimension() const override { return 3 * model_.size(); }
+  void rhs(double t, const Vec& y, Vec& dydt) const override { evaluate(t, y, dydt, nullptr); }
+  void jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) const override;
+  // rhs, and J = ∂(dphi, ddphi)/∂(phi, dphi) of every pellet (2N × 2N, rows and columns 2i,
+  // 2i + 1 for pellet i): the variational equations' matrix, without the forcing's and the
+  // work's terms, from the same sines and cosines.
+  void rhs_and_motion_jacobian(double t, const Vec& y, Vec& dydt, Mat& J) const;
+  double period(int component) const override {
+    return component == phi_index(component / 3) ? 2.0 * std::numbers::pi : 0.0;
+  }
+
+ private:
+  void evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const;
+  const Model& model_;
+  const std::vector<Body>& bodies_;
+  std::vector<double> mass_;      // per body
+  std::vector<int> normal_side_;  // per body: the sign of the bilateral law's normal force
+  SlidingLaw law_;
+};
+
+}  // namespace vibro

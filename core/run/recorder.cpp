@@ -1,0 +1,147 @@
+#include "core/run/recorder.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <sstream>
+
+#include "core/model/dynamics.h"
+
+namespace vibro {
+namespace {
+constexpr std::size_t kMaxWarnings = 100;
+const double kNone = std::numeric_limits<double>::quiet_NaN();
+}  // namespace
+
+Recorder::Recorder(const Model& model, const std::vector<bool>& record, double record_until,
+                   long max_samples)
+    : model_(model),
+      track_of_(model.size(), -1),
+      open_(model.size(), false),
+      record_until_(record_until),
+      max_samples_(max_samples),
+      negative_since_(model.size(), kNone) {
+  for (int i = 0; i < model.size(); ++i) {
+    if (i < static_cast<int>(record.size()) && record[i]) {
+      track_of_[i] = static_cast<int>(tracks_.size());
+      tracks_.push_back({i, {}});
+    }
+  }
+  pending_.resize(tracks_.size());
+  lowest_.assign(2 * tracks_.size(), std::numeric_limits<double>::infinity());
+  highest_.assign(2 * tracks_.size(), -std::numeric_limits<double>::infinity());
+}
+
+int Recorder::pieces(const Vec& start, const Vec& inside, double theta, const Vec& end,
+                     int fewest) {
+  constexpr double kChord = 1e-4;
+  constexpr int kMost = 64;
+  double worst = 0.0;
+  for (std::size_t k = 0; k < tracks_.size(); ++k) {
+    const int pellet = tracks_[k].pellet;
+    for (int c = 0; c < 2; ++c) {
+      const int j = c == 0 ? phi_index(pellet) : dphi_index(pellet);
+      double& lo = lowest_[2 * k + c];
+      double& hi = highest_[2 * k + c];
+      for (double v : {start[j], inside[j], end[j]})
+        if (std::isfinite(v)) lo = std::min(lo, v), hi = std::max(hi, v);
+      const double chord = start[j] + theta * (end[j] - start[j]);
+      const double off = std::abs(inside[j] - chord) / (4.0 * theta * (1.0 - theta));
+      if (hi > lo && std::isfinite(off)) worst = std::max(worst, off / (hi - lo));
+    }
+  }
+  const double needed = std::ceil(std::sqrt(worst / kChord));
+  return static_cast<int>(
+      std::clamp(needed, static_cast<double>(fewest), static_cast<double>(kMost)));
+}
+
+void Recorder::sample(double t, const Vec& y) {
+  if (t > record_until_) return;
+  // The same state twice (a run that ends where its last step did) is one sample; at an
+  // instant the states before and after differ, and every pellet keeps both, so that the
+  // pellets' samples stay at the same times.
+  if (t == last_t_ && y == last_y_) return;
+  last_t_ = t;
+  last_y_ = y;
+  const bool on_stride = ++calls_ % stride_ == 0;
+  for (std::size_t k = 0; k < tracks_.size(); ++k) {
+    PelletTrack& track = tracks_[k];
+    const int i = track.pellet;
+    const Sample s{t, y[phi_index(i)], y[dphi_index(i)]};
+    if (!open_[i]) {
+      track.branches.push_back({static_cast<int>(track.branches.size()) + 1, {}});
+      open_[i] = true;
+      keep(track, s);
+    } else if (on_stride) {
+      pending_[k].reset();
+      keep(track, s);
+    } else {
+      pending_[k] = s;  // kept if it turns out to end the branch
+    }
+  }
+  if (max_samples_ > 0 && kept_ > max_samples_) thin();
+}
+
+void Recorder::keep(PelletTrack& track, const Sample& s) {
+  track.branches.back().samples.push_back(s);
+  ++kept_;
+}
+
+void Recorder::flush_pending(int k) {
+  if (!pending_[k]) return;
+  keep(tracks_[k], *pending_[k]);
+  pending_[k].reset();
+}
+
+void Recorder::thin() {
+  kept_ = 0;
+  for (PelletTrack& track : tracks_)
+    for (Branch& b : track.branches) {
+      std::vector<Sample>& v = b.samples;
+      std::size_t out = 0;
+      for (std::size_t j = 0; j < v.size(); ++j)
+        if (j % 2 == 0 || j + 1 == v.size()) v[out++] = v[j];
+      v.resize(out);
+      kept_ += static_cast<long>(out);
+    }
+  stride_ *= 2;
+}
+
+void Recorder::check_normal_force(double t, const Vec& y, const std::vector<Body>& bodies) {
+  if (model_.friction != FrictionLaw::paper || model_.alpha0 == 0.0) return;
+  for (const Body& b : bodies) {
+    const double phi = y[phi_index(b.leader())], dphi = y[dphi_index(b.leader())];
+    const bool negative = b.mode == Mode::sliding && normal_per_mass(model_, phi, dphi) < 0.0;
+    for (int i : b.members) {
+      if (negative && std::isnan(negative_since_[i])) negative_since_[i] = t;
+      if (!negative) close_warning(i, t);
+    }
+  }
+}
+
+void Recorder::close_warning(int pellet, double t) {
+  if (std::isnan(negative_since_[pellet])) return;
+  if (warnings_.size() < kMaxWarnings) {
+    std::ostringstream msg;
+    msg << "pellet " << pellet + 1
+        << ": the normal force g cos(phi) + R dphi^2 is negative from t = "
+        << negative_since_[pellet] << " s to " << t
+        << " s; there the paper's friction law pushes the pellet along (not physical)";
+    warnings_.push_back({"negative_normal_force", msg.str(), pellet, negative_since_[pellet], t});
+  }
+  negative_since_[pellet] = kNone;
+}
+
+void Recorder::end_branch(int pellet) {
+  if (track_of_[pellet] >= 0) flush_pending(track_of_[pellet]);
+  open_[pellet] = false;
+}
+
+void Recorder::finish(double t, RunResult& result) {
+  for (std::size_t k = 0; k < tracks_.size(); ++k) flush_pending(static_cast<int>(k));
+  for (int i = 0; i < model_.size(); ++i) close_warning(i, t);
+  result.tracks = std::move(tracks_);
+  result.warnings = std::move(warnings_);
+}
+
+}  // namespace vibro

@@ -1,0 +1,65 @@
+// Keeps what a run reports along the way: the branches of the recorded pellets' phase
+// trajectories, and the intervals where the paper law's normal force is negative.
+#pragma once
+
+#include <limits>
+#include <optional>
+#include <vector>
+
+#include "core/integrators/ode.h"
+#include "core/model/model.h"
+#include "core/model/motion.h"
+#include "core/run/result.h"
+
+namespace vibro {
+
+class Recorder {
+ public:
+  // max_samples: SimOptions::max_samples.
+  Recorder(const Model& model, const std::vector<bool>& record, double record_until,
+           long max_samples);
+
+  // A state of the whole system at time t, kept for the recorded pellets.
+  void sample(double t, const Vec& y);
+  // Whether samples after t are kept: some pellet is recorded, and t is before record_until.
+  bool wants_samples(double t) const { return !tracks_.empty() && t < record_until_; }
+  // Into how many pieces (at least `fewest`, at most 64) a step's curves are cut, sampled at
+  // their ends, for each chord to stay within 1e-4 of the extent the recorded pellets' φ and φ̇
+  // have so far (a tenth of a pixel on a 1000-pixel axis). A chord strays from an arc by the
+  // square of its length: by 4θ(1 − θ) times its largest distance at the fraction θ of the step,
+  // where `inside` is the state.
+  int pieces(const Vec& start, const Vec& inside, double theta, const Vec& end, int fewest);
+  // Watches the paper law's normal force of the sliding bodies (at step ends and events: a cos
+  // per body is not worth paying at every sample).
+  void check_normal_force(double t, const Vec& y, const std::vector<Body>& bodies);
+  // Pellet i's motion interval ends at t (an event touched it); the next sample opens a new one.
+  void end_branch(int pellet);
+  // Closes open warning intervals at the end of the run and hands everything over.
+  void finish(double t, RunResult& result);
+
+ private:
+  void close_warning(int pellet, double t);
+  void keep(PelletTrack& track, const Sample& s);
+  void flush_pending(int track);
+  // Drops every other sample of every branch, keeping its ends; doubles the stride.
+  void thin();
+
+  const Model& model_;
+  std::vector<int> track_of_;  // pellet -> index in tracks_, or -1
+  std::vector<PelletTrack> tracks_;
+  std::vector<bool> open_;  // pellet's current branch is open
+  double record_until_;
+  long max_samples_;
+  long kept_ = 0;    // samples in tracks_
+  long calls_ = 0;   // sample() calls
+  long stride_ = 1;  // one sample kept in stride_ (a branch's first and last always)
+  std::vector<std::optional<Sample>> pending_;                // per track: the last sample skipped
+  double last_t_ = -std::numeric_limits<double>::infinity();  // the last sample() call's
+  Vec last_y_;
+  std::vector<double> lowest_, highest_;  // per track: φ and φ̇ (2k, 2k + 1), the extents so far
+
+  std::vector<double> negative_since_;  // per pellet: start of a negative-normal interval, or NaN
+  std::vector<Warning> warnings_;
+};
+
+}  // namespace vibro
