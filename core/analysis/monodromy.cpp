@@ -253,12 +253,12 @@ PathJacobian segment_jacobian(const Model& model, const std::vector<PathSegment>
 }
 
 PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol,
-                           std::chrono::steady_clock::time_point deadline) {
+                           const Deadline& deadline) {
   const int n = model.size();
   PathJacobian out;
   Mat M = Mat::Identity(2 * n, 2 * n);
   for (std::size_t k = 0; k < path.size(); ++k) {
-    if (std::chrono::steady_clock::now() > deadline) {
+    if (deadline.passed()) {
       out.unsupported = "the deadline (passed at segment " + std::to_string(k) + " of " +
                         std::to_string(path.size()) + ")";
       out.out_of_time = true;

@@ -12,6 +12,7 @@
 
 #include "core/integrators/ode.h"
 #include "core/model/model.h"
+#include "core/run/deadline.h"
 #include "core/run/result.h"
 
 namespace vibro {
@@ -45,9 +46,8 @@ PathJacobian segment_jacobian(const Model& model, const std::vector<PathSegment>
                               std::size_t k, double rtol);
 
 // The whole path's: the segments' in turn, given up (out_of_time) once `deadline` has passed.
-PathJacobian path_jacobian(
-    const Model& model, const std::vector<PathSegment>& path, double rtol,
-    std::chrono::steady_clock::time_point deadline = std::chrono::steady_clock::time_point::max());
+PathJacobian path_jacobian(const Model& model, const std::vector<PathSegment>& path, double rtol,
+                           const Deadline& deadline = {});
 
 // How far each instant of a path moves, to first order, when its initial (phi, dphi) move by
 // each column of deltas (2N × m), integrated together: s, one row per segment, one column per

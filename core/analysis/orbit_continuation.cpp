@@ -3,7 +3,9 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
+#include <utility>
 
 #include "core/model/parameter.h"
 #include "core/run/simulate.h"
@@ -18,14 +20,16 @@ namespace {
 class ScaledMap {
  public:
   ScaledMap(const Model& model, const SimOptions& options, int periods,
-            const std::string& parameter, double p0, double span)
+            const std::string& parameter, double p0, double span,
+            const std::atomic<bool>* cancel = nullptr)
       : model_(model),
         options_(options),
         periods_(periods),
         parameter_(parameter),
         p0_(p0),
         span_(span),
-        time_(time_scale(model)) {}
+        time_(time_scale(model)),
+        cancel_(cancel) {}
 
   // A point on or near the branch: the map there, its residual and Jacobian in scaled unknowns.
   struct Point {
@@ -62,11 +66,13 @@ class ScaledMap {
   // The same seen from the section's phase.
   Model at(double p) const { return at_phase(plain(p), phase_); }
   const SimOptions& options() const { return options_; }
+  bool cancelled() const { return cancel_ && cancel_->load(); }
 
   Point evaluate(const Vec& v) const {
     Point pt;
     pt.v = v;
     const double p = value(v);
+    if (cancelled()) return pt;
     // The model at p must be valid; the one seen from the section's phase has its psi shifted.
     if (validate_model(plain(p))) return pt;
     const Model m = at(p);
@@ -138,6 +144,7 @@ class ScaledMap {
   int periods_;
   std::string parameter_;
   double p0_, span_, time_;
+  const std::atomic<bool>* cancel_;  // once set, every point is not ok: the walk ends soon
   double phase_ = 0.0;
 };
 
@@ -337,6 +344,7 @@ void find_doubled(const ScaledMap& map, const Point& at, double past, double spa
   if (validate_model(m)) return;
   for (double a : {1e-2, 3e-2, 0.1, 0.3}) {
     for (double side : {1.0, -1.0}) {
+      if (map.cancelled()) return;
       Vec moved = at.v;
       moved.head(map.size()) +=
           side * a * map.scaled(v / v.lpNorm<Eigen::Infinity>(), 0.0).head(map.size());
@@ -356,6 +364,247 @@ void find_doubled(const ScaledMap& map, const Point& at, double past, double spa
       }
     }
   }
+}
+
+// One continuation: the branch so far, the point it stands on with its tangent and signature, and
+// the arclength step. Each member is one move of the pseudo-arclength walk.
+class Continuation {
+ public:
+  Continuation(const Model& model, const SimOptions& options, const PeriodicOrbit& start,
+               const ContinuationSpec& spec, const std::function<void(double)>& progress,
+               const std::atomic<bool>* cancel)
+      : spec_(spec),
+        progress_(progress),
+        cancel_(cancel),
+        p0_(*get_parameter(model, spec.parameter)),
+        span_(spec.to - p0_),
+        map_(model, options, start.periods, spec.parameter, p0_, span_, cancel),
+        tol_(std::max(1e-10, 100.0 * options.rtol)),
+        n_(map_.size()) {
+    Vec x(n_);
+    for (int i = 0; i < model.size(); ++i)
+      x.segment(2 * i, 2) << start.state[i].phi, start.state[i].dphi;
+    here_ = map_.evaluate(map_.scaled(x, p0_));
+    t_ = Vec::Zero(n_ + 1);
+    t_[n_] = 1.0;  // toward `to`: the scaled parameter grows to 1
+  }
+
+  OrbitBranch run();
+
+ private:
+  // A corrected point ahead, with its tangent and signature.
+  struct Step {
+    Point point;
+    Vec t;
+    Signature sig;
+  };
+
+  bool cancelled() const { return cancel_ && cancel_->load(); }
+  Step step_to(const Vec& predicted) const;
+  void keep_clear();
+  bool cross_grazing();
+  std::optional<std::pair<Point, double>> point_past_grazing(double way) const;
+  std::vector<BranchPoint> walk_back(const Point& across, double step, double way) const;
+  void note_bifurcations(const Step& next);
+  bool past_to(const Point& next) const {
+    return (map_.value(next.v) - spec_.to) * (span_ > 0 ? 1 : -1) >= 0.0;
+  }
+  void finish_at_to(const Point& next);
+  void move_to(Step next);
+  Vec along_parameter() const {
+    Vec fixed = Vec::Zero(n_ + 1);
+    fixed[n_] = 1.0;
+    return fixed;
+  }
+
+  static constexpr double kStepMin = 1e-7, kStepMax = 0.1;
+  const ContinuationSpec& spec_;
+  const std::function<void(double)>& progress_;
+  const std::atomic<bool>* cancel_;
+  const double p0_, span_;
+  ScaledMap map_;
+  const double tol_;
+  const int n_;
+  OrbitBranch branch_;
+  Point here_;
+  Vec t_;
+  Signature sig_;
+  double ds_ = 0.0;
+};
+
+OrbitBranch Continuation::run() {
+  if (cancelled()) {
+    branch_.message = "cancelled";
+    return branch_;
+  }
+  if (!here_.ok) {
+    branch_.message = "the start is no orbit the map can follow: " + here_.map.run.stats.message;
+    return branch_;
+  }
+  keep_clear();
+  t_ = tangent(here_, t_);
+  sig_ = signature(here_, t_);
+  branch_.points.push_back(branch_point(map_, here_));
+  ds_ = std::min(0.05, 2.0 / spec_.max_points);
+  while (static_cast<int>(branch_.points.size()) < spec_.max_points) {
+    if (cancelled()) {
+      branch_.message = "cancelled";
+      return branch_;
+    }
+    Step next = step_to(here_.v + ds_ * t_);
+    if (!next.point.ok) {
+      ds_ /= 2.0;
+      if (ds_ >= kStepMin || cross_grazing()) continue;
+      return branch_;
+    }
+    note_bifurcations(next);
+    if (past_to(next.point)) {
+      finish_at_to(next.point);
+      return branch_;
+    }
+    move_to(std::move(next));
+  }
+  std::ostringstream why;
+  why << "stopped at " << spec_.parameter << " = " << branch_.points.back().value << " after "
+      << spec_.max_points << " points (periodic_orbit.continuation.max_points)";
+  branch_.message = why.str();
+  return branch_;
+}
+
+// The corrected point near `predicted`; not ok where it strays far from its prediction, or turns
+// sharply where the motion's impacts stay the same: it may have jumped to another motion.
+Continuation::Step Continuation::step_to(const Vec& predicted) const {
+  Step next{correct(map_, predicted, t_, tol_), {}, {}};
+  if (!next.point.ok) return next;
+  next.t = tangent(next.point, t_);
+  next.sig = signature(next.point, next.t);
+  const bool strayed = (next.point.v - predicted).norm() > 0.5 * ds_ + 10.0 * tol_;
+  const bool turned = next.sig.impacts == sig_.impacts && t_.dot(next.t) < std::cos(0.3);
+  if (strayed || turned) next.point.ok = false;
+  return next;
+}
+
+// Keeps the section a twentieth of a period or more away from every impact.
+void Continuation::keep_clear() {
+  const double T = forcing_period(map_.at(map_.value(here_.v)));
+  const Clearance c = clearance(here_.map.run, map_.periods() * T);
+  if (c.nearest >= 0.05 * T) return;
+  const Vec moved = map_.shift_phase(here_, c.middle);
+  here_ = map_.evaluate(map_.scaled(moved, map_.value(here_.v)));
+  Vec along = Vec::Zero(n_ + 1);
+  along[n_] = t_[n_] > 0.0 ? 1.0 : -1.0;
+  if (here_.ok) t_ = tangent(here_, std::abs(t_[n_]) > 0.1 ? along : t_);
+}
+
+// The steps shrank to nothing: at a grazing, records it and steps across at fixed values of the
+// parameter (true), or ends the branch saying why (false).
+bool Continuation::cross_grazing() {
+  if (cancelled()) {
+    branch_.message = "cancelled";
+    return false;
+  }
+  std::ostringstream why;
+  why << "the branch could not be followed past " << spec_.parameter << " = "
+      << map_.value(here_.v);
+  if (grazing_distance(map_.at(map_.value(here_.v)), here_.map.run) > 1e-3) {
+    branch_.message = why.str() + ": no nearby motion continues it";
+    return false;
+  }
+  branch_.bifurcations.push_back(
+      {BifurcationKind::grazing, map_.value(here_.v), map_.section_state(here_.v), {}, {}});
+  const double way = t_[n_] > 0.0 ? 1.0 : -1.0;
+  std::optional<std::pair<Point, double>> across = point_past_grazing(way);
+  if (!across) {
+    branch_.message = why.str() + ": it ends at a grazing there (an impact of zero speed), " +
+                      "and no motion past it continues it";
+    return false;
+  }
+  const std::vector<BranchPoint> nearer = walk_back(across->first, across->second, way);
+  branch_.points.insert(branch_.points.end(), nearer.rbegin(), nearer.rend());
+  here_ = std::move(across->first);
+  t_ = tangent(here_, way * along_parameter());
+  keep_clear();
+  sig_ = signature(here_, t_);
+  branch_.points.push_back(branch_point(map_, here_));
+  ds_ = 1e-3;
+  return true;
+}
+
+// Past the grazing, near it: a motion at a parameter step of 1e-4 to 0.1 (scaled) with an impact
+// more or less and the state close by, and the step that found it.
+std::optional<std::pair<Point, double>> Continuation::point_past_grazing(double way) const {
+  for (double dp : {1e-4, 1e-3, 1e-2, 3e-2, 0.1}) {
+    Vec predicted = here_.v;
+    predicted[n_] += way * dp;
+    Point across = correct(map_, predicted, along_parameter(), tol_);
+    if (across.ok && impact_pattern(across.map.run) != sig_.impacts &&
+        (across.v - here_.v).head(n_).norm() < 0.3)
+      return std::make_pair(std::move(across), dp);
+  }
+  return std::nullopt;
+}
+
+// The branch leaves a grazing like a square root: points walked back toward it from the far side
+// (farthest first), so that the steep part is drawn too.
+std::vector<BranchPoint> Continuation::walk_back(const Point& across, double step,
+                                                 double way) const {
+  std::vector<BranchPoint> nearer;
+  Point walk = across;
+  for (double dp = step / 2.0; dp > step / 100.0; dp /= 2.0) {
+    Vec predicted = walk.v;
+    predicted[n_] = here_.v[n_] + way * dp;
+    const Point p = correct(map_, predicted, along_parameter(), tol_);
+    if (!p.ok) break;
+    nearer.push_back(branch_point(map_, p));
+    walk = p;
+  }
+  return nearer;
+}
+
+// The bifurcations inside the step to `next`, located and confirmed. At a grazing the multipliers
+// jump: a sign change found at it is the grazing's own.
+void Continuation::note_bifurcations(const Step& next) {
+  std::optional<double> grazing;
+  for (BifurcationKind kind : {BifurcationKind::grazing, BifurcationKind::fold,
+                               BifurcationKind::period_doubling, BifurcationKind::neimark_sacker}) {
+    if (!crossed(kind, sig_, next.sig)) continue;
+    const Point at = locate(map_, kind, here_, sig_, t_, ds_, next.point, tol_);
+    const double value = map_.value(at.v);
+    if (grazing && std::abs(value - *grazing) <= 1e-6 * std::abs(span_)) continue;
+    if (!confirmed(kind, at)) continue;
+    if (kind == BifurcationKind::grazing) grazing = value;
+    Bifurcation b{kind, value, map_.section_state(at.v), {}, {}};
+    if (kind == BifurcationKind::period_doubling)
+      find_doubled(map_, at,
+                   (stable(here_.multipliers) ? 1.0 : -1.0) * (t_[n_] * span_ > 0.0 ? 1.0 : -1.0),
+                   span_, b);
+    branch_.bifurcations.push_back(std::move(b));
+  }
+}
+
+// The last point exactly at `to`, where the branch crosses it.
+void Continuation::finish_at_to(const Point& next) {
+  Vec on = next.v;
+  on[n_] = 1.0;
+  const Point end = correct(map_, on, along_parameter(), tol_);
+  branch_.points.push_back(branch_point(map_, end.ok ? end : next));
+  branch_.reached = true;
+  if (progress_) progress_(1.0);
+}
+
+void Continuation::move_to(Step next) {
+  here_ = std::move(next.point);
+  t_ = std::move(next.t);
+  keep_clear();
+  sig_ = signature(here_, t_);
+  // Steps shortened to a crawl (before a grazing) add nothing a figure shows.
+  if (std::abs(map_.value(here_.v) - branch_.points.back().value) > 1e-6 * std::abs(span_) ||
+      ds_ > 1e-4)
+    branch_.points.push_back(branch_point(map_, here_));
+  if (progress_)
+    progress_(std::max(static_cast<double>(branch_.points.size()) / spec_.max_points,
+                       std::clamp(here_.v[n_], 0.0, 1.0)));
+  ds_ = std::min(kStepMax, ds_ * 1.5);
 }
 
 }  // namespace
@@ -399,161 +648,7 @@ OrbitBranch continue_orbit(const Model& model, const SimOptions& options,
                            const PeriodicOrbit& start, const ContinuationSpec& spec,
                            const std::function<void(double)>& progress,
                            const std::atomic<bool>* cancel) {
-  OrbitBranch branch;
-  const double p0 = *get_parameter(model, spec.parameter);
-  const double span = spec.to - p0;
-  ScaledMap map(model, options, start.periods, spec.parameter, p0, span);
-  const double tol = std::max(1e-10, 100.0 * options.rtol);
-  const int n = map.size();
-  Vec x(n);
-  for (int i = 0; i < model.size(); ++i)
-    x.segment(2 * i, 2) << start.state[i].phi, start.state[i].dphi;
-  Point here = map.evaluate(map.scaled(x, p0));
-  Vec t = Vec::Zero(n + 1);
-  t[n] = 1.0;  // toward `to`: the scaled parameter grows to 1
-  // Keeps the section a twentieth of a period or more away from every impact.
-  auto keep_clear = [&]() {
-    const double T = forcing_period(map.at(map.value(here.v)));
-    const Clearance c = clearance(here.map.run, map.periods() * T);
-    if (c.nearest >= 0.05 * T) return;
-    const Vec moved = map.shift_phase(here, c.middle);
-    here = map.evaluate(map.scaled(moved, map.value(here.v)));
-    Vec along = Vec::Zero(n + 1);
-    along[n] = t[n] > 0.0 ? 1.0 : -1.0;
-    if (here.ok) t = tangent(here, std::abs(t[n]) > 0.1 ? along : t);
-  };
-  if (!here.ok) {
-    branch.message = "the start is no orbit the map can follow: " + here.map.run.stats.message;
-    return branch;
-  }
-  keep_clear();
-  t = tangent(here, t);
-  Signature sig = signature(here, t);
-  branch.points.push_back(branch_point(map, here));
-  double ds = std::min(0.05, 2.0 / spec.max_points);
-  const double ds_min = 1e-7, ds_max = 0.1;
-
-  while (static_cast<int>(branch.points.size()) < spec.max_points) {
-    if (cancel && cancel->load()) {
-      branch.message = "cancelled";
-      return branch;
-    }
-    const Vec predicted = here.v + ds * t;
-    Point next = correct(map, predicted, t, tol);
-    Vec t_next;
-    Signature sig_next;
-    if (next.ok) {
-      t_next = tangent(next, t);
-      sig_next = signature(next, t_next);
-      // A step that strays far from its prediction, or turns sharply where the motion's
-      // impacts stay the same, may have jumped to another motion: take it shorter.
-      const bool strayed = (next.v - predicted).norm() > 0.5 * ds + 10.0 * tol;
-      const bool turned = sig_next.impacts == sig.impacts && t.dot(t_next) < std::cos(0.3);
-      if (strayed || turned) next.ok = false;
-    }
-    if (!next.ok) {
-      ds /= 2.0;
-      if (ds >= ds_min) continue;
-      std::ostringstream why;
-      why << "the branch could not be followed past " << spec.parameter << " = "
-          << map.value(here.v);
-      if (grazing_distance(map.at(map.value(here.v)), here.map.run) > 1e-3) {
-        branch.message = why.str() + ": no nearby motion continues it";
-        return branch;
-      }
-      // Stalled at a grazing: record it, and step across at fixed values of the parameter.
-      branch.bifurcations.push_back(
-          {BifurcationKind::grazing, map.value(here.v), map.section_state(here.v), {}, {}});
-      Vec fixed = Vec::Zero(n + 1);
-      fixed[n] = 1.0;
-      const double way = t[n] > 0.0 ? 1.0 : -1.0;
-      Point across;
-      double step = 0.0;
-      for (double dp : {1e-4, 1e-3, 1e-2, 3e-2, 0.1}) {
-        Vec predicted = here.v;
-        predicted[n] += way * dp;
-        across = correct(map, predicted, fixed, tol);
-        step = dp;
-        // Past the grazing, near it: an impact more or less, the state close by.
-        if (across.ok && impact_pattern(across.map.run) != sig.impacts &&
-            (across.v - here.v).head(n).norm() < 0.3)
-          break;
-        across.ok = false;
-      }
-      if (!across.ok) {
-        branch.message = why.str() + ": it ends at a grazing there (an impact of zero speed), " +
-                         "and no motion past it continues it";
-        return branch;
-      }
-      // The branch leaves a grazing like a square root: walk back toward it from the far side,
-      // so that the steep part is drawn too.
-      std::vector<BranchPoint> nearer;
-      Point walk = across;
-      for (double dp = step / 2.0; dp > step / 100.0; dp /= 2.0) {
-        Vec predicted = walk.v;
-        predicted[n] = here.v[n] + way * dp;
-        const Point p = correct(map, predicted, fixed, tol);
-        if (!p.ok) break;
-        nearer.push_back(branch_point(map, p));
-        walk = p;
-      }
-      branch.points.insert(branch.points.end(), nearer.rbegin(), nearer.rend());
-      here = std::move(across);
-      t = tangent(here, way * fixed);
-      keep_clear();
-      sig = signature(here, t);
-      branch.points.push_back(branch_point(map, here));
-      ds = 1e-3;
-      continue;
-    }
-    // At a grazing the multipliers jump: a sign change found at it is the grazing's own.
-    std::optional<double> grazing;
-    for (BifurcationKind kind :
-         {BifurcationKind::grazing, BifurcationKind::fold, BifurcationKind::period_doubling,
-          BifurcationKind::neimark_sacker}) {
-      if (!crossed(kind, sig, sig_next)) continue;
-      const Point at = locate(map, kind, here, sig, t, ds, next, tol);
-      const double value = map.value(at.v);
-      if (grazing && std::abs(value - *grazing) <= 1e-6 * std::abs(span)) continue;
-      if (!confirmed(kind, at)) continue;
-      if (kind == BifurcationKind::grazing) grazing = value;
-      Bifurcation b{kind, value, map.section_state(at.v), {}, {}};
-      if (kind == BifurcationKind::period_doubling)
-        find_doubled(map, at,
-                     (stable(here.multipliers) ? 1.0 : -1.0) * (t[n] * span > 0.0 ? 1.0 : -1.0),
-                     span, b);
-      branch.bifurcations.push_back(std::move(b));
-    }
-    if ((map.value(next.v) - spec.to) * (span > 0 ? 1 : -1) >= 0.0) {
-      // The last point exactly at `to`, where the branch crosses it.
-      Vec on = next.v;
-      on[n] = 1.0;
-      Vec fixed = Vec::Zero(n + 1);
-      fixed[n] = 1.0;
-      const Point end = correct(map, on, fixed, tol);
-      branch.points.push_back(branch_point(map, end.ok ? end : next));
-      branch.reached = true;
-      if (progress) progress(1.0);
-      return branch;
-    }
-    here = std::move(next);
-    t = t_next;
-    keep_clear();
-    sig = signature(here, t);
-    // Steps shortened to a crawl (before a grazing) add nothing a figure shows.
-    if (std::abs(map.value(here.v) - branch.points.back().value) > 1e-6 * std::abs(span) ||
-        ds > 1e-4)
-      branch.points.push_back(branch_point(map, here));
-    if (progress)
-      progress(std::max(static_cast<double>(branch.points.size()) / spec.max_points,
-                        std::clamp(here.v[n], 0.0, 1.0)));
-    ds = std::min(ds_max, ds * 1.5);
-  }
-  std::ostringstream why;
-  why << "stopped at " << spec.parameter << " = " << branch.points.back().value << " after "
-      << spec.max_points << " points (periodic_orbit.continuation.max_points)";
-  branch.message = why.str();
-  return branch;
+  return Continuation(model, options, start, spec, progress, cancel).run();
 }
 
 }  // namespace vibro

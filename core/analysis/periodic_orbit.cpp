@@ -2,11 +2,11 @@
 
 #include <Eigen/Eigenvalues>
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 #include <sstream>
 
 #include "core/analysis/monodromy.h"
+#include "core/run/deadline.h"
 #include "core/run/simulate.h"
 
 namespace vibro {
@@ -43,20 +43,9 @@ RunResult map_run(const Model& model, const SimOptions& options, double t_end, c
   return simulate(started_at(model, x), o);
 }
 
-using Clock = std::chrono::steady_clock;
-
-// The moment `deadline_ms` from now; none for an infinite one.
-Clock::time_point deadline_in(double deadline_ms) {
-  if (!(deadline_ms < 1e12)) return Clock::time_point::max();
-  return Clock::now() + std::chrono::duration_cast<Clock::duration>(
-                            std::chrono::duration<double, std::milli>(std::max(deadline_ms, 0.0)));
-}
-
-// The options with what is left until `deadline` as their deadline.
-SimOptions until(SimOptions options, Clock::time_point deadline) {
-  if (deadline != Clock::time_point::max())
-    options.deadline_ms =
-        std::chrono::duration<double, std::milli>(deadline - Clock::now()).count();
+// The options with what is left of `deadline` as their deadline.
+SimOptions until(SimOptions options, const Deadline& deadline) {
+  if (!deadline.never()) options.deadline_ms = deadline.left_ms();
   return options;
 }
 
@@ -64,7 +53,7 @@ SimOptions until(SimOptions options, Clock::time_point deadline) {
 // 1e-6 rad/s per unit of the scene's time scale. Its runs share options.deadline_ms.
 Mat differenced_jacobian(const Model& model, const SimOptions& options, double t_end,
                          const Vec& x) {
-  const Clock::time_point deadline = deadline_in(options.deadline_ms);
+  const Deadline deadline = Deadline::in_ms(options.deadline_ms);
   const double speed = speed_scale(model);
   Mat J(x.size(), x.size());
   for (Eigen::Index k = 0; k < x.size(); ++k) {
@@ -145,7 +134,7 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
 
 MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int periods,
                           const Vec& x) {
-  const Clock::time_point deadline = deadline_in(options.deadline_ms);
+  const Deadline deadline = Deadline::in_ms(options.deadline_ms);
   MapPoint p;
   const double t_end = periods * forcing_period(model);
   p.x = x;
@@ -188,12 +177,10 @@ double residual_norm(const Model& model, const Vec& r) {
 PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
                                   const OrbitSpec& spec) {
   // options.deadline_ms bounds the whole search: each map's run gets what is left of it.
-  const auto started = std::chrono::steady_clock::now();
+  const Deadline deadline = Deadline::in_ms(options.deadline_ms);
   auto within = [&] {
     SimOptions o = options;
-    o.deadline_ms = options.deadline_ms - std::chrono::duration<double, std::milli>(
-                                              std::chrono::steady_clock::now() - started)
-                                              .count();
+    o.deadline_ms = deadline.left_ms();
     return o;
   };
   PeriodicOrbit orbit;

@@ -1,9 +1,9 @@
 #include "core/analysis/work_precision.h"
 
 #include <algorithm>
-#include <chrono>
 #include <cmath>
 
+#include "core/run/deadline.h"
 #include "core/run/simulate.h"
 
 namespace vibro {
@@ -65,14 +65,9 @@ ErrorReference error_reference_for(const Model& model) {
 
 WorkPrecisionReport work_precision(const Model& model, const SimOptions& base,
                                    const WorkPrecisionOptions& options) {
-  const auto started = std::chrono::steady_clock::now();
+  const Deadline deadline = Deadline::in_ms(options.deadline_ms);
   // The deadline of the next run: its own, within what the whole measurement has left.
-  auto within = [&] {
-    const double spent =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
-            .count();
-    return std::min(base.deadline_ms, options.deadline_ms - spent);
-  };
+  auto within = [&] { return std::min(base.deadline_ms, deadline.left_ms()); };
   WorkPrecisionReport report;
   report.reference = error_reference_for(model);
   SimOptions o = base;

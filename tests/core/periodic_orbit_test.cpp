@@ -7,6 +7,7 @@
 #include <gtest/gtest.h>
 
 #include <Eigen/Eigenvalues>
+#include <atomic>
 #include <chrono>
 #include <cmath>
 #include <complex>
@@ -96,8 +97,7 @@ TEST(MapJacobian, GivesUpOnceTheDeadlineHasPassed) {
   o.check = false;
   const RunResult run = simulate(m, o);
   ASSERT_GT(run.path.size(), 2u);
-  const auto past = std::chrono::steady_clock::now() - std::chrono::seconds(1);
-  const PathJacobian late = path_jacobian(m, run.path, o.rtol, past);
+  const PathJacobian late = path_jacobian(m, run.path, o.rtol, Deadline::in_ms(-1000.0));
   EXPECT_TRUE(late.out_of_time);
   EXPECT_NE(late.unsupported.find("deadline"), std::string::npos) << late.unsupported;
   const PathJacobian in_time = path_jacobian(m, run.path, o.rtol);
@@ -413,6 +413,26 @@ TEST(OrbitContinuation, BadSpecsNameTheirField) {
 // Every point of a branch is a valid model: the continuation checks the model at each value, not
 // the model seen from its section's phase (whose psi is shifted by Omega times the phase). From
 // psi at its bound of -1e4 the branch turns the other way first.
+// A cancel reaches the map's every evaluation, not only the walk's next step: a cancelled walk
+// evaluates nothing more and says so.
+TEST(OrbitContinuation, ACancelStopsEveryEvaluation) {
+  const Model m = impact_oscillator(6.0);
+  const PeriodicOrbit orbit = find_periodic_orbit(m, tight(), from_guess(0.15, 0.1));
+  ASSERT_TRUE(orbit.converged) << orbit.message;
+  std::atomic<bool> cancel{true};
+  const OrbitBranch b =
+      continue_orbit(m, tight(), orbit, {"model.pellets[0].Omega", 5.0, 300}, {}, &cancel);
+  EXPECT_EQ(b.message, "cancelled");
+  EXPECT_TRUE(b.points.empty());
+  // Cancelled after its first point, inside the walk.
+  cancel = false;
+  const OrbitBranch c = continue_orbit(
+      m, tight(), orbit, {"model.pellets[0].Omega", 5.0, 300}, [&](double) { cancel = true; },
+      &cancel);
+  EXPECT_EQ(c.message, "cancelled");
+  EXPECT_LE(c.points.size(), 2u);
+}
+
 TEST(OrbitContinuation, StaysWhereTheModelIsValid) {
   Model m = impact_oscillator(5.0);
   m.pellets[0].force.psi = -1e4;
