@@ -5,7 +5,8 @@
   `vibro simulate --preset paper`, word for word (the event-time error included).
 - docs/ACCURACY.md is written by scripts/accuracy_report.py: the script's fixed passages
   (TRUST_TEXT, DIFFERENTIAL_TEXT) must appear in the page as they are, so that an edit of one
-  is made in the other.
+  is made in the other; and the tables of the long forced run and of the extremes, remade by the
+  script's own functions, must be the page's but for their wall times.
 
 Usage: doc_quotes_test.py path/to/vibro
 """
@@ -41,6 +42,44 @@ def report_passages():
             for name in ("TRUST_TEXT", "DIFFERENTIAL_TEXT")}
 
 
+def rows(table):
+    return [[c.strip() for c in line.strip().strip("|").split("|")] for line in table.strip().splitlines()]
+
+
+def same_but_wall_times(made, quoted):
+    """Whether two markdown tables agree but for their wall-time column, the only one a machine
+    moves. A row the fresh run ended at its deadline (a loaded machine) is not compared."""
+    made, quoted = rows(made), rows(quoted)
+    if len(made) != len(quoted) or made[0] != quoted[0]:
+        return False
+    wall = made[0].index("wall ms")
+    for a, b in zip(made[2:], quoted[2:]):
+        if a[1].startswith("deadline"):
+            print(f"  skipped (its run reached the deadline here): {a[0]}")
+            continue
+        if a[:wall] + a[wall + 1:] != b[:wall] + b[wall + 1:]:
+            return False
+    return True
+
+
+def page_table(page, header):
+    start = page.index(header)
+    end = page.find("\n\n", start)
+    return page[start:end if end >= 0 else len(page)]
+
+
+def report_tables(vibro):
+    """The long-run and extremes tables as scripts/accuracy_report.py makes them with `vibro`."""
+    sys.dont_write_bytecode = True  # nothing written into the source tree
+    sys.path.insert(0, os.path.join(ROOT, "scripts"))
+    argv, sys.argv = sys.argv, ["accuracy_report.py", "--vibro", vibro]
+    try:
+        import accuracy_report
+    finally:
+        sys.argv = argv
+    return {"long forced run": accuracy_report.long_runs()[1], "extremes": accuracy_report.extremes()}
+
+
 def main():
     failures = 0
     quoted, printed = readme_answer(), printed_answer(sys.argv[1])
@@ -55,6 +94,13 @@ def main():
             print(f"PASS docs/ACCURACY.md holds accuracy_report.py's {name}")
         else:
             print(f"FAIL docs/ACCURACY.md differs from accuracy_report.py's {name}")
+            failures += 1
+    for name, table in report_tables(sys.argv[1]).items():
+        header = table.splitlines()[0]
+        if same_but_wall_times(table, page_table(page, header)):
+            print(f"PASS docs/ACCURACY.md's {name} table is what accuracy_report.py makes")
+        else:
+            print(f"FAIL docs/ACCURACY.md's {name} table differs from accuracy_report.py's:\n{table}")
             failures += 1
     return 1 if failures else 0
 
