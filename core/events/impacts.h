@@ -45,8 +45,8 @@ struct ImpactOptions {
 // The pellet shared by two contacts of an instant that both approach before any of its impacts
 // (two pairs, or a pair and a limiter), or -1. Their impacts' order decides the outcome, and
 // both came within the contact radius of their roots: which was first is decided by times below
-// that radius over the approach speed, up to 2e-9 s at 0.05 rad/s, and a run at rtol 1e-8 and
-// its shadow both took the other order than a reference (trust scan, seed 3, scene 843).
+// that radius over the approach speed, so a run and its shadow can both take the wrong order
+// (tests/differential/corpus/ill-conditioned-pellet-closed-on-from-both-sides-at-one-instant.json).
 int shared_by_closings(const Model& model, const std::vector<double>& v,
                        const std::vector<bool>& armed,
                        const std::vector<LimiterContact>& limiter_contacts,

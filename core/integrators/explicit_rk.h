@@ -179,9 +179,8 @@ StepStatus ExplicitRk<Scheme>::advance(double t_limit) {
     if (!std::isfinite(err) || !all_finite(ytry_)) return StepStatus::non_finite;
     // After a rejection, the error model that chose this step (err ∝ h^order) predicts its error
     // from the rejected one. An estimate far below that prediction is not credible: the step is
-    // outside the range where the embedded estimate holds. DOP853 accepted a step of 3.8 ms
-    // under forcing at 741 rad/s with an estimate of 0.02, the rejected step three times longer
-    // having 7e5, and erred by a hundred tolerances (trust scan, seed 3, scene 565).
+    // outside the range where the embedded estimate holds (evidence:
+    // tests/differential/corpus/dop853-accepts-a-step-on-an-incredible-estimate.json).
     if (reject_) err = std::max(err, rejected_err_ * std::pow(h / rejected_h_, Scheme::kOrder));
     if (err > 1.0) {
       h_ = control_.rejected(h, err);

@@ -27,12 +27,9 @@ double body_free_acceleration(const Model& model, const Body& body, double t, do
 }
 
 // No step spans more than a radian of the slowest swing or of a forcing: sqrt(R/g) and 1/Ω.
-// Longer steps leave the range where the embedded error estimates hold. DOP853 took the whole
-// 65 ms of a swing of 1e-6 rad (ωh = 2.75) in one step on an estimate of 0.03 of the tolerance
-// and put the collision 7.6e-5 s off at rtol 1e-6 and 1e-7 alike (trust scan, seed 4, scene
-// 706); held to ωh ≤ 2, it took a quarter swing of 1e-6 rad in two steps and put the collision
-// 3.3e-6 s off at rtol 1e-12 (5e-10 s at ωh ≤ 1; seed 13, scene 680). Over 640,000 runs of
-// trust_scan the runs above what their tolerance asks went from 24,864 to 23,274.
+// Longer steps leave the range where the embedded error estimates hold, and one that takes a
+// quarter swing at once can be accepted on an estimate far below its true error (evidence:
+// tests/differential/corpus/dop853-takes-a-quarter-swing-in-one-step.json).
 double longest_step(const Model& model) {
   double h = std::sqrt(model.R / model.g);
   for (const Pellet& p : model.pellets)
