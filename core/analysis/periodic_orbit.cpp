@@ -3,6 +3,7 @@
 #include <Eigen/Eigenvalues>
 #include <algorithm>
 #include <cmath>
+#include <optional>
 #include <sstream>
 
 #include "core/analysis/monodromy.h"
@@ -174,41 +175,39 @@ double residual_norm(const Model& model, const Vec& r) {
   return n;
 }
 
-PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
-                                  const OrbitSpec& spec) {
-  // options.deadline_ms bounds the whole search: each map's run gets what is left of it.
-  const Deadline deadline = Deadline::in_ms(options.deadline_ms);
-  auto within = [&] {
-    SimOptions o = options;
-    o.deadline_ms = deadline.left_ms();
-    return o;
-  };
-  PeriodicOrbit orbit;
-  orbit.periods = spec.periods;
-  orbit.period = forcing_period(model);
-  orbit.t0 = spec.guess.empty() ? spec.transient * orbit.period : 0.0;
+namespace {
+
+// The state the search starts from: the guess, or the scene's start after spec.transient periods
+// (none, with orbit.message saying why, where that run failed).
+std::optional<Vec> starting_state(const Model& model, const SimOptions& options,
+                                  const OrbitSpec& spec, PeriodicOrbit& orbit) {
   const int n = model.size();
   Vec x(2 * n);
   if (!spec.guess.empty()) {
     for (int i = 0; i < n; ++i) x.segment(2 * i, 2) << spec.guess[i].phi, spec.guess[i].dphi;
-  } else {
-    for (int i = 0; i < n; ++i)
-      x.segment(2 * i, 2) << model.pellets[i].phi0, model.pellets[i].dphi0;
-    if (spec.transient > 0) {
-      const RunResult warmup = map_run(model, within(), orbit.t0, x, false);
-      if (warmup.stats.termination != Termination::completed) {
-        orbit.message = "the run that gives the starting guess " + warmup.stats.message;
-        return orbit;
-      }
-      x = final_state(warmup);
-    }
+    return x;
   }
-  const double tol = tolerance_for(options);
-  MapPoint p = stroboscopic_map(model, within(), spec.periods, x);
+  for (int i = 0; i < n; ++i) x.segment(2 * i, 2) << model.pellets[i].phi0, model.pellets[i].dphi0;
+  if (spec.transient <= 0) return x;
+  const RunResult warmup = map_run(model, options, orbit.t0, x, false);
+  if (warmup.stats.termination != Termination::completed) {
+    orbit.message = "the run that gives the starting guess " + warmup.stats.message;
+    return std::nullopt;
+  }
+  return final_state(warmup);
+}
+
+// Newton's method on x − P(x) from p, damped (the map is only piecewise smooth, and a full step
+// may cross onto another sequence of events), until the residual is under `tol`, a step fails to
+// reduce it, or the iterations or the deadline run out. Returns the last map point; counts the
+// iterations in orbit.iterations.
+MapPoint newton(const Model& model, const SimOptions& options, const Deadline& deadline,
+                const OrbitSpec& spec, double tol, MapPoint p, PeriodicOrbit& orbit) {
+  const int n = model.size();
   double norm = residual_norm(model, orbit_residual(p));
   for (orbit.iterations = 0; p.ok && norm > tol && orbit.iterations < spec.max_iterations;
        ++orbit.iterations) {
-    if (within().deadline_ms <= 0.0) {
+    if (deadline.left_ms() <= 0.0) {
       orbit.message =
           "the search took longer than its deadline of " + number(options.deadline_ms) + " ms";
       break;
@@ -216,11 +215,10 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
     const Mat A = p.jacobian - Mat::Identity(2 * n, 2 * n);
     const Vec dx = A.fullPivLu().solve(-orbit_residual(p));
     if (!dx.allFinite()) break;
-    // Damped: the map is only piecewise smooth, and a full step may cross onto another
-    // sequence of events.
     bool accepted = false;
     for (double lambda = 1.0; lambda >= 1.0 / 256.0 && !accepted; lambda /= 2.0) {
-      MapPoint trial = stroboscopic_map(model, within(), spec.periods, p.x + lambda * dx);
+      MapPoint trial =
+          stroboscopic_map(model, until(options, deadline), spec.periods, p.x + lambda * dx);
       const double trial_norm = trial.ok ? residual_norm(model, orbit_residual(trial)) : INFINITY;
       if (trial_norm < (1.0 - 1e-4 * lambda) * norm) {
         p = std::move(trial);
@@ -230,21 +228,12 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
     }
     if (!accepted) break;
   }
-  for (int i = 0; i < n; ++i) orbit.state.push_back({p.x[2 * i], p.x[2 * i + 1]});
   orbit.residual = norm;
-  if (!p.ok) {
-    orbit.message = "the map's run " + p.run.stats.message;
-    return orbit;
-  }
-  orbit.converged = norm <= tol;
-  if (!orbit.converged) {
-    if (orbit.message.empty())
-      orbit.message =
-          "Newton's method stopped after " + std::to_string(orbit.iterations) +
-          " iterations with the state returning " + number(norm) + " away (needed " + number(tol) +
-          "): no periodic motion near the guess, or one the map's events make nonsmooth there";
-    return orbit;
-  }
+  return p;
+}
+
+// The converged orbit's multipliers, stability and events over one return (times from t0).
+void describe(const MapPoint& p, const OrbitSpec& spec, PeriodicOrbit& orbit) {
   orbit.exact_jacobian = p.exact;
   orbit.jacobian_note = p.jacobian_note;
   const Eigen::EigenSolver<Mat> eig(p.jacobian, false);
@@ -262,18 +251,20 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
     orbit.events.push_back(std::move(e));
   }
   orbit.impacts_per_period = static_cast<double>(impacts) / spec.periods;
+}
 
-  // The check: the orbit run with the shadow at a tighter tolerance must return to itself, with
-  // its events vouched for and no near miss that could change them.
-  SimOptions check = within();
+// The check: the orbit run with the shadow at a tighter tolerance must return to itself, with
+// its events vouched for and no near miss that could change them (orbit.admissible).
+void check_admissible(const Model& model, SimOptions check, const OrbitSpec& spec, const Vec& x,
+                      double tol, PeriodicOrbit& orbit) {
   check.t_end = spec.periods * orbit.period;
   check.check = true;
   check.record.clear();
   check.stops.clear();
-  const RunResult run = simulate(started_at(model, p.x), check);
+  const RunResult run = simulate(started_at(model, x), check);
   orbit.stats = run.stats;
   const double returned =
-      residual_norm(model, orbit_residual({p.x, final_state(run), {}, true, {}, {}, true}));
+      residual_norm(model, orbit_residual({x, final_state(run), {}, true, {}, {}, true}));
   if (run.stats.termination != Termination::completed) {
     orbit.message = "the check run " + run.stats.message;
   } else if (run.graze) {
@@ -288,6 +279,41 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
   } else {
     orbit.admissible = true;
   }
+}
+
+}  // namespace
+
+PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
+                                  const OrbitSpec& spec) {
+  // options.deadline_ms bounds the whole search: each map's run gets what is left of it.
+  const Deadline deadline = Deadline::in_ms(options.deadline_ms);
+  PeriodicOrbit orbit;
+  orbit.periods = spec.periods;
+  orbit.period = forcing_period(model);
+  orbit.t0 = spec.guess.empty() ? spec.transient * orbit.period : 0.0;
+  const std::optional<Vec> x = starting_state(model, until(options, deadline), spec, orbit);
+  if (!x) return orbit;
+  const double tol = tolerance_for(options);
+  const MapPoint p =
+      newton(model, options, deadline, spec, tol,
+             stroboscopic_map(model, until(options, deadline), spec.periods, *x), orbit);
+  for (int i = 0; i < model.size(); ++i) orbit.state.push_back({p.x[2 * i], p.x[2 * i + 1]});
+  if (!p.ok) {
+    orbit.message = "the map's run " + p.run.stats.message;
+    return orbit;
+  }
+  orbit.converged = orbit.residual <= tol;
+  if (!orbit.converged) {
+    if (orbit.message.empty())
+      orbit.message = "Newton's method stopped after " + std::to_string(orbit.iterations) +
+                      " iterations with the state returning " + number(orbit.residual) +
+                      " away (needed " + number(tol) +
+                      "): no periodic motion near the guess, or one the map's events make "
+                      "nonsmooth there";
+    return orbit;
+  }
+  describe(p, spec, orbit);
+  check_admissible(model, until(options, deadline), spec, p.x, tol, orbit);
   return orbit;
 }
 

@@ -2,6 +2,8 @@
 
 #include <algorithm>
 #include <cmath>
+#include <string>
+#include <vector>
 
 #include "core/run/deadline.h"
 #include "core/run/simulate.h"
@@ -63,39 +65,91 @@ ErrorReference error_reference_for(const Model& model) {
   return ErrorReference::reference_run;
 }
 
+namespace {
+
+// The runs that errors are measured against, at the tightest tolerance, with another method than
+// the one measured (dop853's own against dopri5's).
+struct ReferenceRuns {
+  RunResult dop853, dopri5;
+  const RunResult& for_method(Method m) const { return m == Method::dop853 ? dopri5 : dop853; }
+};
+
+ReferenceRuns reference_runs(const Model& model, SimOptions o, const Deadline& deadline,
+                             double own_deadline_ms) {
+  ReferenceRuns refs;
+  o.rtol = 1e-13;
+  o.atol = 1e-15;
+  o.method = Method::dop853;
+  o.deadline_ms = std::min(own_deadline_ms, deadline.left_ms());
+  refs.dop853 = simulate(model, o);
+  o.method = Method::dopri5;
+  o.deadline_ms = std::min(own_deadline_ms, deadline.left_ms());
+  refs.dopri5 = simulate(model, o);
+  return refs;
+}
+
+// One point: the median of `repeats` runs' times (as many as the deadline lets start), the last
+// run's error against the report's reference.
+WorkPrecisionPoint measure(const Model& model, SimOptions o, const WorkPrecisionOptions& options,
+                           const Deadline& deadline, ErrorReference reference,
+                           const ReferenceRuns& refs) {
+  const double own_deadline_ms = o.deadline_ms;
+  auto within = [&] { return std::min(own_deadline_ms, deadline.left_ms()); };
+  std::vector<double> times;
+  RunResult run;
+  for (int r = 0; r < std::max(options.repeats, 1) && (r == 0 || within() > 0.0); ++r) {
+    o.deadline_ms = within();
+    run = simulate(model, o);
+    times.push_back(run.stats.wall_ms);
+  }
+  std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
+  WorkPrecisionPoint p;
+  p.method = o.method;
+  p.rtol = o.rtol;
+  p.atol = o.atol;
+  p.median_ms = times[times.size() / 2];
+  p.estimate = run.stats.error_estimate;
+  p.steps = run.stats.steps;
+  p.rhs_evals = run.stats.rhs_evals;
+  p.events = static_cast<long>(run.events.size());
+  p.completed = run.stats.termination == Termination::completed;
+  switch (reference) {
+    case ErrorReference::first_integral:
+      p.error = run.stats.first_integral_residual;
+      break;
+    case ErrorReference::energy:
+      p.error = run.stats.energy_defect;
+      break;
+    case ErrorReference::reference_run:
+      p.error = reference_error(model, run, refs.for_method(o.method), p.events_match);
+      break;
+  }
+  return p;
+}
+
+}  // namespace
+
 WorkPrecisionReport work_precision(const Model& model, const SimOptions& base,
                                    const WorkPrecisionOptions& options) {
   const Deadline deadline = Deadline::in_ms(options.deadline_ms);
-  // The deadline of the next run: its own, within what the whole measurement has left.
-  auto within = [&] { return std::min(base.deadline_ms, deadline.left_ms()); };
   WorkPrecisionReport report;
   report.reference = error_reference_for(model);
   SimOptions o = base;
   o.record.assign(model.size(), false);
   o.check = false;  // each method's own work; its trust check is measured apart (ACCURACY.md)
-
-  // Reference runs at the tightest tolerance, with another method than the one measured.
-  RunResult ref_dop853, ref_dopri5;
+  ReferenceRuns refs;
   if (report.reference == ErrorReference::reference_run) {
-    o.rtol = 1e-13;
-    o.atol = 1e-15;
-    o.method = Method::dop853;
-    o.deadline_ms = within();
-    ref_dop853 = simulate(model, o);
-    o.method = Method::dopri5;
-    o.deadline_ms = within();
-    ref_dopri5 = simulate(model, o);
+    refs = reference_runs(model, o, deadline, base.deadline_ms);
     report.reference_description = "dop853 at rtol 1e-13 (dopri5 at rtol 1e-13 for dop853 itself)";
   } else {
     report.reference_description = report.reference == ErrorReference::energy
                                        ? "the exact energy (no friction, no forcing)"
                                        : "the exact first integral (unforced, paper law)";
   }
-
   const std::size_t asked = options.methods.size() * options.rtols.size();
   for (Method method : options.methods) {
     for (double rtol : options.rtols) {
-      if (within() <= 0.0) {
+      if (std::min(base.deadline_ms, deadline.left_ms()) <= 0.0) {
         report.message = "measured " + std::to_string(report.points.size()) + " of " +
                          std::to_string(asked) + " points: the rest would pass the deadline of " +
                          std::to_string(static_cast<long>(options.deadline_ms)) + " ms";
@@ -104,37 +158,8 @@ WorkPrecisionReport work_precision(const Model& model, const SimOptions& base,
       o.method = method;
       o.rtol = rtol;
       o.atol = rtol * options.atol_per_rtol;
-      std::vector<double> times;
-      RunResult run;
-      for (int r = 0; r < std::max(options.repeats, 1) && (r == 0 || within() > 0.0); ++r) {
-        o.deadline_ms = within();
-        run = simulate(model, o);
-        times.push_back(run.stats.wall_ms);
-      }
-      std::nth_element(times.begin(), times.begin() + times.size() / 2, times.end());
-      WorkPrecisionPoint p;
-      p.method = method;
-      p.rtol = o.rtol;
-      p.atol = o.atol;
-      p.median_ms = times[times.size() / 2];
-      p.estimate = run.stats.error_estimate;
-      p.steps = run.stats.steps;
-      p.rhs_evals = run.stats.rhs_evals;
-      p.events = static_cast<long>(run.events.size());
-      p.completed = run.stats.termination == Termination::completed;
-      switch (report.reference) {
-        case ErrorReference::first_integral:
-          p.error = run.stats.first_integral_residual;
-          break;
-        case ErrorReference::energy:
-          p.error = run.stats.energy_defect;
-          break;
-        case ErrorReference::reference_run:
-          p.error = reference_error(model, run, method == Method::dop853 ? ref_dopri5 : ref_dop853,
-                                    p.events_match);
-          break;
-      }
-      report.points.push_back(p);
+      o.deadline_ms = base.deadline_ms;
+      report.points.push_back(measure(model, o, options, deadline, report.reference, refs));
     }
   }
   return report;
