@@ -301,6 +301,18 @@ try {
     expect(Math.abs(omega - 6) < 0.3, `the click set Ω = ${omega}, not about 6 rad/s`);
   });
 
+  await check("a sweep that fails on the server shows the server's reason and field", async () => {
+    // The job's status as a server reports a failed sweep (docs/SERVER.md): its error and field.
+    const failed = { status: "failed", progress: { done: 12, total: 24 }, error: "took longer than its wall clock budget of 300 s", field: "sweep.count" };
+    await page.route(/\/api\/jobs\/[^/]+$/, (route) =>
+      route.request().method() === "GET" ? route.fulfill({ json: failed }) : route.continue());
+    await page.click("#sweep-run");
+    await page.waitForFunction(() => document.getElementById("sweep-box").dataset.state === "error", null, { timeout: 30000 });
+    const said = await page.textContent("#sweep-status");
+    await page.unroute(/\/api\/jobs\/[^/]+$/);
+    expect(said.includes("sweep.count") && said.includes("wall clock budget"), `the page said: ${said}`);
+  });
+
   await check("a click on a phase portrait starts its pellet there", async () => {
     // The scene on the page (the impact oscillator, from the sweep's click), asked for again.
     const scene = (await page.inputValue("#curl")).split("\n")[2];

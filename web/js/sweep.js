@@ -67,7 +67,10 @@ export async function runSweep(scene, job, onProgress) {
     onProgress(status.progress);
     if (status.status === "done") break;
     if (status.status === "cancelled" || cancelled) return null;
-    if (status.status === "failed") throw new ApiError("the sweep failed on the server");
+    if (status.status === "failed") {
+      // The server says why (a budget, a value a run refused) and names the field it concerns.
+      throw new ApiError(status.error ?? "the sweep failed on the server", { status: 200, field: status.field ?? null });
+    }
     await new Promise((r) => setTimeout(r, 250));
   }
   const response = await fetch(`${at}/result?format=png`);
