@@ -3,6 +3,7 @@
 #include <chrono>
 #include <cmath>
 #include <memory>
+#include <optional>
 #include <set>
 
 #include "core/integrators/stepper.h"
@@ -113,18 +114,92 @@ void release_surface(const Model& model, int i, double t, double phi, Crossed& c
   c.h_t = -sa * f.rate(t) / (model.pellets[i].m * model.R);
 }
 
+// The surface and reset of one event of an instant; none where it moves nothing (a release
+// from rest on a limiter, whose place, and so whose time, is fixed).
+std::optional<Crossed> crossed_by(const Model& model, const PathSegment& segment, const Event& e,
+                                  const Vec& y_before) {
+  const int n = model.size();
+  Crossed c{Vec::Zero(2 * n), 0.0, Mat::Identity(2 * n, 2 * n), e.pellets};
+  const int i = e.pellets.front();
+  switch (e.kind) {
+    case EventKind::limiter:
+      c.grad[angle_row(i)] = 1.0;
+      c.reset(speed_row(i), speed_row(i)) = -model.limiters[e.limiter].k;
+      break;
+    case EventKind::collision: {
+      const int j = e.pellets[1];
+      const double mi = model.pellets[i].m, mj = model.pellets[j].m, k = model.k_c;
+      c.grad[angle_row(j)] = 1.0;
+      c.grad[angle_row(i)] = -1.0;
+      c.reset(speed_row(i), speed_row(i)) = (mi - k * mj) / (mi + mj);
+      c.reset(speed_row(i), speed_row(j)) = mj * (1.0 + k) / (mi + mj);
+      c.reset(speed_row(j), speed_row(j)) = (mj - k * mi) / (mi + mj);
+      c.reset(speed_row(j), speed_row(i)) = mi * (1.0 + k) / (mi + mj);
+      break;
+    }
+    case EventKind::reversal:
+    case EventKind::stick:
+      c.grad[speed_row(i)] = 1.0;
+      break;
+    case EventKind::release: {
+      const Body* held = body_of(segment.bodies_before, i);
+      if (held && held->mode == Mode::resting) return std::nullopt;
+      release_surface(model, i, segment.t, y_before[phi_index(i)], c);
+      break;
+    }
+    case EventKind::chatter:
+      break;
+  }
+  return c;
+}
+
+// S_e = G + (f⁺ − G f⁻) ∇hᵀ / (∇h·f⁻ + h_t) on the event's pellets' rows, identity elsewhere.
+Mat event_saltation(const Crossed& c, const Vec& f_before, const Vec& f_after, double approach) {
+  const Vec jump = f_after - c.reset * f_before;
+  Mat Se = Mat::Identity(f_before.size(), f_before.size());
+  for (int p : c.pellets)
+    for (int r : {angle_row(p), speed_row(p)})
+      Se.row(r) = c.reset.row(r) + jump[r] / approach * c.grad.transpose();
+  return Se;
+}
+
+// What the saltations do not cover at this instant, in words; empty where they cover it all:
+// pellets moving together, or a pellet with several events at once.
+std::string uncovered(const PathSegment& segment) {
+  for (const auto* bodies : {&segment.bodies_before, &segment.bodies})
+    for (const Body& b : *bodies)
+      if (b.members.size() > 1)
+        return "pellets moving together (at t = " + std::to_string(segment.t) + " s)";
+  std::set<int> seen;
+  for (const Event& e : segment.events) {
+    if (e.kind == EventKind::chatter) continue;
+    for (int i : e.pellets)
+      if (!seen.insert(i).second)
+        return "several events of pellet " + std::to_string(i + 1) +
+               " at one instant (t = " + std::to_string(segment.t) + " s)";
+  }
+  return {};
+}
+
+// Held pellets: a stuck one keeps dphi = 0 and a resting one its place on the limiter, whatever
+// the perturbation that brought them there.
+void hold_rows(const std::vector<Body>& bodies, Mat& S) {
+  for (const Body& b : bodies) {
+    if (b.mode == Mode::sliding) continue;
+    const int i = b.leader();
+    S.row(speed_row(i)).setZero();
+    if (b.mode == Mode::resting) S.row(angle_row(i)).setZero();
+  }
+}
+
 }  // namespace
 
 PathJacobian instant_saltation(const Model& model, const PathSegment& segment,
                                const std::vector<int>& sides_before) {
   const int n = model.size();
   PathJacobian out;
-  for (const auto* bodies : {&segment.bodies_before, &segment.bodies})
-    for (const Body& b : *bodies)
-      if (b.members.size() > 1) {
-        out.unsupported = "pellets moving together (at t = " + std::to_string(segment.t) + " s)";
-        return out;
-      }
+  out.unsupported = uncovered(segment);
+  if (!out.unsupported.empty()) return out;
   const Vec y_before = full_state(segment.y_before), y_after = full_state(segment.y);
   const Vec f_before = reduced_rate(
       dynamics_of(model, segment.bodies_before, sides_before, y_before), n, segment.t, y_before);
@@ -133,68 +208,18 @@ PathJacobian instant_saltation(const Model& model, const PathSegment& segment,
   Mat S = Mat::Identity(2 * n, 2 * n);
   out.time_row = Vec::Zero(2 * n);
   bool timed = false;  // the instant's time is its first crossing's
-  std::set<int> seen;
   for (const Event& e : segment.events) {
     // A chatter sums the impacts after the one listed with it: the pellet ends at rest, which
-    // the rule for resting pellets below gives.
+    // hold_rows gives.
     if (e.kind == EventKind::chatter) continue;
-    Crossed c{Vec::Zero(2 * n), 0.0, Mat::Identity(2 * n, 2 * n), e.pellets};
-    for (int i : e.pellets)
-      if (!seen.insert(i).second) {
-        out.unsupported = "several events of pellet " + std::to_string(i + 1) +
-                          " at one instant (t = " + std::to_string(segment.t) + " s)";
-        return out;
-      }
-    const int i = e.pellets.front();
-    switch (e.kind) {
-      case EventKind::limiter:
-        c.grad[angle_row(i)] = 1.0;
-        c.reset(speed_row(i), speed_row(i)) = -model.limiters[e.limiter].k;
-        break;
-      case EventKind::collision: {
-        const int j = e.pellets[1];
-        const double mi = model.pellets[i].m, mj = model.pellets[j].m, k = model.k_c;
-        c.grad[angle_row(j)] = 1.0;
-        c.grad[angle_row(i)] = -1.0;
-        c.reset(speed_row(i), speed_row(i)) = (mi - k * mj) / (mi + mj);
-        c.reset(speed_row(i), speed_row(j)) = mj * (1.0 + k) / (mi + mj);
-        c.reset(speed_row(j), speed_row(j)) = (mj - k * mi) / (mi + mj);
-        c.reset(speed_row(j), speed_row(i)) = mi * (1.0 + k) / (mi + mj);
-        break;
-      }
-      case EventKind::reversal:
-      case EventKind::stick:
-        c.grad[speed_row(i)] = 1.0;
-        break;
-      case EventKind::release: {
-        const Body* held = body_of(segment.bodies_before, i);
-        // At rest on a limiter its place is fixed, and so the release time: nothing to move.
-        if (held && held->mode == Mode::resting) continue;
-        release_surface(model, i, segment.t, y_before[phi_index(i)], c);
-        break;
-      }
-      case EventKind::chatter:
-        break;
-    }
-    // S_e = G + (f⁺ − G f⁻) ∇hᵀ / (∇h·f⁻ + h_t) on the event's pellets' rows.
-    const Vec jump = f_after - c.reset * f_before;
-    const double approach = c.grad.dot(f_before) + c.h_t;
-    if (!timed) out.time_row = -c.grad / approach;  // h(y + δy, t + δt) = 0 to first order
+    const std::optional<Crossed> c = crossed_by(model, segment, e, y_before);
+    if (!c) continue;
+    const double approach = c->grad.dot(f_before) + c->h_t;
+    if (!timed) out.time_row = -c->grad / approach;  // h(y + δy, t + δt) = 0 to first order
     timed = true;
-    Mat Se = Mat::Identity(2 * n, 2 * n);
-    for (int p : c.pellets)
-      for (int r : {angle_row(p), speed_row(p)})
-        Se.row(r) = c.reset.row(r) + jump[r] / approach * c.grad.transpose();
-    S = Se * S;
+    S = event_saltation(*c, f_before, f_after, approach) * S;
   }
-  // Held pellets: a stuck one keeps dphi = 0 and a resting one its place on the limiter,
-  // whatever the perturbation that brought them there.
-  for (const Body& b : segment.bodies) {
-    if (b.mode == Mode::sliding) continue;
-    const int i = b.leader();
-    S.row(speed_row(i)).setZero();
-    if (b.mode == Mode::resting) S.row(angle_row(i)).setZero();
-  }
+  hold_rows(segment.bodies, S);
   out.matrix = std::move(S);
   return out;
 }
