@@ -11,6 +11,7 @@ namespace {
 using Clock = std::chrono::steady_clock;
 
 thread_local std::optional<Clock::time_point> request_started;
+thread_local std::size_t streamed_bytes = 0;
 
 // The target as the client sent it, cut short and with control bytes replaced, so a request
 // cannot forge or break log lines.
@@ -26,7 +27,12 @@ std::string printable(const std::string& text) {
 
 }  // namespace
 
-void AccessLog::start() const { request_started = Clock::now(); }
+void AccessLog::start() const {
+  request_started = Clock::now();
+  streamed_bytes = 0;
+}
+
+void AccessLog::streamed(std::size_t bytes) { streamed_bytes += bytes; }
 
 void AccessLog::write(const httplib::Request& req, const httplib::Response& res) const {
   std::string ms = "-";
@@ -38,11 +44,13 @@ void AccessLog::write(const httplib::Request& req, const httplib::Response& res)
     ms = text;
     request_started.reset();
   }
+  const std::size_t bytes = res.body.size() + streamed_bytes;
+  streamed_bytes = 0;
   if (!enabled_) return;
   const std::string line = "vibro: " + printable(req.method) + " " +
                            printable(req.target.empty() ? req.path : req.target) + " " +
-                           std::to_string(res.status) + " " + std::to_string(res.body.size()) +
-                           " B " + ms + " ms\n";
+                           std::to_string(res.status) + " " + std::to_string(bytes) + " B " + ms +
+                           " ms\n";
   // One write per line keeps lines from different threads whole.
   std::fwrite(line.data(), 1, line.size(), stderr);
 }

@@ -13,6 +13,7 @@
 #include "io/scene_json.h"
 #include "io/sweep_json.h"
 #include "render/figure.h"
+#include "server/access_log.h"
 #include "server/api_error.h"
 #include "server/etag.h"
 #include "server/scene_request.h"
@@ -214,6 +215,7 @@ void stream_sweep_result(const Job& job, bool csv, httplib::Response& res) {
   auto write = [result = job.sweep, spec = *job.scene.sweep, csv](std::size_t,
                                                                   httplib::DataSink& sink) {
     const TextSink to_sink = [&sink](std::string_view piece) {
+      AccessLog::streamed(piece.size());
       return sink.write(piece.data(), piece.size());
     };
     const bool whole = csv ? write_sweep_result_csv(*result, to_sink)

@@ -219,6 +219,25 @@ TEST(SweepJobs, TheResultIsStreamedNotBuiltWhole) {
   }
 }
 
+// A streamed result's bytes are written after the response left its handler with an empty body:
+// the access log counts them as they go.
+TEST(SweepJobs, TheAccessLogCountsAStreamedResultsBytes) {
+  TestServer server({}, true);
+  auto c = server.client();
+  auto res = c.Post("/api/sweep", sweep_scene(4), "application/json");
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  ASSERT_EQ(wait_until_ended(c, location)["status"], "done");
+  ::testing::internal::CaptureStderr();
+  auto got = c.Get((location + "/result?format=csv").c_str());
+  std::this_thread::sleep_for(std::chrono::milliseconds(100));  // the line follows the body
+  const std::string log = ::testing::internal::GetCapturedStderr();
+  ASSERT_EQ(got->status, 200);
+  EXPECT_NE(log.find("/result?format=csv 200 " + std::to_string(got->body.size()) + " B"),
+            std::string::npos)
+      << log;
+}
+
 // The section points a sweep may keep are bounded: a stroboscopic sweep over the bound is refused
 // up front, an impact-section sweep that reaches it while it runs fails, naming the field, and
 // keeps nothing.

@@ -33,7 +33,7 @@ fs::path unique_dir() {
 
 }  // namespace
 
-TestServer::TestServer(server::ServerConfig config) : root_(unique_dir()) {
+TestServer::TestServer(server::ServerConfig config, bool access_log) : root_(unique_dir()) {
   web_dir_ = root_ / "web";
   secret_ = root_ / "secret.txt";
   write_file(secret_, "the secret outside web/");
@@ -47,7 +47,7 @@ TestServer::TestServer(server::ServerConfig config) : root_(unique_dir()) {
 
   config.port = 0;
   config.web_dir = web_dir_.string();
-  config.access_log = false;
+  config.access_log = access_log;
   service_ = std::make_unique<server::Service>(config);
   port_ = service_->bind();
   if (port_ <= 0) throw std::runtime_error("the test server cannot bind");

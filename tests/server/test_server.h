@@ -18,7 +18,8 @@ namespace vibro::testing {
 class TestServer {
  public:
   // `config.port` and `config.web_dir` are set here; the access log is off.
-  explicit TestServer(server::ServerConfig config = {});
+  // The access log stays off (quiet test output) unless `access_log`.
+  explicit TestServer(server::ServerConfig config = {}, bool access_log = false);
   ~TestServer();
 
   int port() const { return port_; }
