@@ -23,6 +23,7 @@ struct LimiterContact {
 struct PairContact {
   int behind;
   int ahead;
+  bool operator==(const PairContact&) const = default;
 };
 
 // Two pellets on the two sides of an armed limiter that acts on both do not touch each other:

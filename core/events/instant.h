@@ -22,17 +22,22 @@
 
 namespace vibro {
 
-// The contacts at an instant, and which bodies reached a reversal or a release there.
+// What the crossings of an instant decided for one pellet. A release or separation fires at the
+// root of a threshold (friction's capacity, the press between two parts), where a test of the
+// same threshold is decided by round-off: the crossing has decided it, and the pellets it pulled
+// leave their hold whatever the test says.
+struct PelletAtInstant {
+  bool reversed = false;  // its body's speed reached zero
+  bool released = false;  // its body's release or separation watch fired
+  int pulled = 0;         // the way it was pulled free (±1), or 0
+};
+
+// The contacts at an instant, and what its crossings decided per pellet.
 struct InstantContacts {
   std::vector<LimiterContact> limiters;
   std::vector<PairContact> pairs;
-  std::vector<bool> reversed;  // per pellet: its body's speed reached zero
-  std::vector<bool> released;  // per pellet: its body's release or separation watch fired
-  // A release or separation fires at the root of a threshold (friction's capacity, the press
-  // between two parts), where a test of the same threshold is decided by round-off. The crossing
-  // has decided it: these pellets leave their hold, and these pairs part, whatever the test says.
-  std::vector<int> pulled;           // per pellet: the way it was pulled free (±1), or 0
-  std::vector<PairContact> parting;  // the pairs where a body's separation watch fired
+  std::vector<PairContact> parting;      // the pairs where a body's separation watch fired
+  std::vector<PelletAtInstant> pellets;  // one per pellet of the model
 };
 
 // What an instant leaves behind.
