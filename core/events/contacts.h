@@ -32,6 +32,21 @@ void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double con
                    std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
                    std::vector<PairContact>& pairs);
 
+// Pellets linked into chains of touching ones: next[i] the pellet ahead of i in its chain,
+// prev[i] the one behind, −1 at a chain's ends.
+struct PelletLinks {
+  std::vector<int> next, prev;
+  explicit PelletLinks(int n) : next(n, -1), prev(n, -1) {}
+  void link(const PairContact& p) {
+    next[p.behind] = p.ahead;
+    prev[p.ahead] = p.behind;
+  }
+};
+
+// The chains, each behind to ahead, in the order of their pellets' lowest index; every pellet
+// in one. A closed ring starts at the pellet ahead of its lowest index.
+std::vector<std::vector<int>> chains(const PelletLinks& links);
+
 // When touching pellets move on as one body: their forces press them together, and they would
 // otherwise collide again at once — equal speeds within `v_merge`, a remaining chatter between
 // them shorter than `chatter_time` (its plastic limit), or a flight apart within the round-off

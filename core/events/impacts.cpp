@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+
+#include "core/events/contacts.h"
 
 namespace vibro {
 
@@ -42,68 +45,67 @@ void strike_limiter(const Model& model, std::vector<bool>& armed, int limiter) {
   }
 }
 
-// The limit of an endless cascade: each group of touching pellets moves with its momentum's
-// velocity, and stops if that drives it into an armed limiter it touches.
+// The impact that takes a group of touching pellets (behind to ahead) from its speeds v0 to
+// the limit of its endless cascade: the group moves with its momentum's speed, and stops if that
+// drives it into an armed limiter it touches. None for a group the cascade did not move (a
+// pellet resting elsewhere, pellets moving together: their momentum's speed is theirs up to
+// round-off), nor for a lone pellet at no limiter.
+std::optional<Event> group_limit(const Model& model, const std::vector<int>& members,
+                                 const std::vector<double>& v0, const std::vector<bool>& armed,
+                                 const std::vector<LimiterContact>& lc) {
+  double P = 0.0, M = 0.0;
+  for (int i : members) {
+    P += model.pellets[i].m * v0[i];
+    M += model.pellets[i].m;
+  }
+  double V = P / M;
+  int limiter = -1;
+  for (const LimiterContact& c : lc) {
+    if (std::find(members.begin(), members.end(), c.pellet) == members.end() || !armed[c.limiter])
+      continue;
+    if (limiter < 0) limiter = c.limiter;
+    if (V * c.side < 0.0) {
+      V = 0.0;
+      limiter = c.limiter;
+    }
+  }
+  const bool struck = std::any_of(members.begin(), members.end(), [&](int i) {
+    return std::abs(v0[i] - V) > 8.0 * std::numeric_limits<double>::epsilon() * std::abs(V);
+  });
+  if (!struck || (members.size() == 1 && limiter < 0)) return std::nullopt;
+  Event e;
+  e.kind = members.size() > 1 ? EventKind::collision : EventKind::limiter;
+  e.pellets = members;
+  e.limiter = limiter;
+  for (int i : members) {
+    e.dphi_before.push_back(v0[i]);
+    e.dphi_after.push_back(V);
+  }
+  return e;
+}
+
+// The limit of an endless cascade from the speeds v0 and limiters armed0 before it: each group
+// of touching pellets (a limiter between two pellets keeps them in two groups) takes its
+// group_limit. v and armed are set to what the limit leaves; each event counts the `impacts`
+// the sweeps resolved before the limit was taken.
 std::vector<Event> plastic_limit(const Model& model, std::vector<double>& v,
                                  const std::vector<double>& v0, std::vector<bool>& armed,
                                  const std::vector<bool>& armed0,
                                  const std::vector<LimiterContact>& lc,
                                  const std::vector<PairContact>& pc, int impacts) {
-  const int n = model.size();
   v = v0;
   armed = armed0;
-  // Each group's members in their order around the circle, behind to ahead; a limiter between
-  // two pellets keeps them in two groups.
-  std::vector<int> next(n, -1), prev(n, -1);
-  for (const PairContact& p : pc) {
-    if (separated_by_limiter(model, lc, armed0, p)) continue;
-    next[p.behind] = p.ahead;
-    prev[p.ahead] = p.behind;
-  }
+  PelletLinks links(model.size());
+  for (const PairContact& p : pc)
+    if (!separated_by_limiter(model, lc, armed0, p)) links.link(p);
   std::vector<Event> events;
-  std::vector<bool> done(n, false);
-  for (int start = 0; start < n; ++start) {
-    if (done[start]) continue;
-    int first = start;
-    for (int guard = 0; prev[first] >= 0 && prev[first] != start && guard < n; ++guard)
-      first = prev[first];
-    std::vector<int> members;
-    double P = 0.0, M = 0.0;
-    for (int i = first, guard = 0; i >= 0 && !done[i] && guard < n; i = next[i], ++guard) {
-      members.push_back(i);
-      done[i] = true;
-      P += model.pellets[i].m * v0[i];
-      M += model.pellets[i].m;
-    }
-    double V = P / M;
-    int limiter = -1;
-    for (const LimiterContact& c : lc) {
-      if (std::find(members.begin(), members.end(), c.pellet) == members.end() || !armed[c.limiter])
-        continue;
-      if (limiter < 0) limiter = c.limiter;
-      if (V * c.side < 0.0) {
-        V = 0.0;
-        limiter = c.limiter;
-      }
-    }
-    // A group the cascade did not move (a pellet resting elsewhere, pellets moving together: their
-    // momentum's speed is theirs up to round-off) has no impact to list.
-    const bool struck = std::any_of(members.begin(), members.end(), [&](int i) {
-      return std::abs(v0[i] - V) > 8.0 * std::numeric_limits<double>::epsilon() * std::abs(V);
-    });
-    if (!struck || (members.size() == 1 && limiter < 0)) continue;
-    Event e;
-    e.kind = members.size() > 1 ? EventKind::collision : EventKind::limiter;
-    e.pellets = members;
-    e.limiter = limiter;
-    e.impacts_resolved = impacts;
-    for (int i : members) {
-      e.dphi_before.push_back(v0[i]);
-      v[i] = V;
-      e.dphi_after.push_back(V);
-    }
-    if (limiter >= 0) strike_limiter(model, armed, limiter);
-    events.push_back(std::move(e));
+  for (const std::vector<int>& members : chains(links)) {
+    std::optional<Event> e = group_limit(model, members, v0, armed, lc);
+    if (!e) continue;
+    e->impacts_resolved = impacts;
+    for (int i : members) v[i] = e->dphi_after.front();
+    if (e->limiter >= 0) strike_limiter(model, armed, e->limiter);
+    events.push_back(std::move(*e));
   }
   return events;
 }
