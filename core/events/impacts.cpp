@@ -45,17 +45,17 @@ void strike_limiter(const Model& model, std::vector<bool>& armed, int limiter) {
   }
 }
 
-// The impact that takes a group of touching pellets (behind to ahead) from its speeds v0 to
+// The impact that takes a group of touching pellets (behind to ahead) from its speeds in y0 to
 // the limit of its endless cascade: the group moves with its momentum's speed, and stops if that
 // drives it into an armed limiter it touches. None for a group the cascade did not move (a
 // pellet resting elsewhere, pellets moving together: their momentum's speed is theirs up to
 // round-off), nor for a lone pellet at no limiter.
-std::optional<Event> group_limit(const Model& model, const std::vector<int>& members,
-                                 const std::vector<double>& v0, const std::vector<bool>& armed,
+std::optional<Event> group_limit(const Model& model, const std::vector<int>& members, const Vec& y0,
+                                 const std::vector<bool>& armed,
                                  const std::vector<LimiterContact>& lc) {
   double P = 0.0, M = 0.0;
   for (int i : members) {
-    P += model.pellets[i].m * v0[i];
+    P += model.pellets[i].m * y0[dphi_index(i)];
     M += model.pellets[i].m;
   }
   double V = P / M;
@@ -70,7 +70,8 @@ std::optional<Event> group_limit(const Model& model, const std::vector<int>& mem
     }
   }
   const bool struck = std::any_of(members.begin(), members.end(), [&](int i) {
-    return std::abs(v0[i] - V) > 8.0 * std::numeric_limits<double>::epsilon() * std::abs(V);
+    return std::abs(y0[dphi_index(i)] - V) >
+           8.0 * std::numeric_limits<double>::epsilon() * std::abs(V);
   });
   if (!struck || (members.size() == 1 && limiter < 0)) return std::nullopt;
   Event e;
@@ -78,50 +79,96 @@ std::optional<Event> group_limit(const Model& model, const std::vector<int>& mem
   e.pellets = members;
   e.limiter = limiter;
   for (int i : members) {
-    e.dphi_before.push_back(v0[i]);
+    e.dphi_before.push_back(y0[dphi_index(i)]);
     e.dphi_after.push_back(V);
   }
   return e;
 }
 
-// The limit of an endless cascade from the speeds v0 and limiters armed0 before it: each group
+// The limit of an endless cascade from the state y0 and limiters armed0 before it: each group
 // of touching pellets (a limiter between two pellets keeps them in two groups) takes its
-// group_limit. v and armed are set to what the limit leaves; each event counts the `impacts`
+// group_limit. y and armed are set to what the limit leaves; each event counts the `impacts`
 // the sweeps resolved before the limit was taken.
-std::vector<Event> plastic_limit(const Model& model, std::vector<double>& v,
-                                 const std::vector<double>& v0, std::vector<bool>& armed,
-                                 const std::vector<bool>& armed0,
+std::vector<Event> plastic_limit(const Model& model, Vec& y, const Vec& y0,
+                                 std::vector<bool>& armed, const std::vector<bool>& armed0,
                                  const std::vector<LimiterContact>& lc,
                                  const std::vector<PairContact>& pc, int impacts) {
-  v = v0;
+  y = y0;
   armed = armed0;
   PelletLinks links(model.size());
   for (const PairContact& p : pc)
     if (!separated_by_limiter(model, lc, armed0, p)) links.link(p);
   std::vector<Event> events;
   for (const std::vector<int>& members : chains(links)) {
-    std::optional<Event> e = group_limit(model, members, v0, armed, lc);
+    std::optional<Event> e = group_limit(model, members, y0, armed, lc);
     if (!e) continue;
     e->impacts_resolved = impacts;
-    for (int i : members) v[i] = e->dphi_after.front();
+    for (int i : members) y[dphi_index(i)] = e->dphi_after.front();
     if (e->limiter >= 0) strike_limiter(model, armed, e->limiter);
     events.push_back(std::move(*e));
   }
   return events;
 }
 
+// One sweep's limiter impacts, in the contacts' order: each contact whose pellet approaches its
+// armed limiter faster than v_eps rebounds with the limiter's k. Returns how many.
+int strike_limiters(const Model& model, Vec& y, std::vector<bool>& armed,
+                    const std::vector<LimiterContact>& lc, double v_eps,
+                    std::vector<Event>& events) {
+  int impacts = 0;
+  for (const LimiterContact& c : lc) {
+    const Limiter& lim = model.limiters[c.limiter];
+    double& v = y[dphi_index(c.pellet)];
+    if (!armed[c.limiter] || !lim.acts_on(c.pellet) || v * c.side >= -v_eps) continue;
+    Event e;
+    e.kind = EventKind::limiter;
+    e.pellets = {c.pellet};
+    e.limiter = c.limiter;
+    e.dphi_before = {v};
+    v = -lim.k * v;
+    e.dphi_after = {v};
+    strike_limiter(model, armed, c.limiter);
+    events.push_back(std::move(e));
+    ++impacts;
+  }
+  return impacts;
+}
+
+// One sweep's collisions, in the pairs' order: each pair closing faster than v_eps, with no armed
+// limiter between them, collides by Newton's law. Returns how many.
+int collide_pairs(const Model& model, Vec& y, const std::vector<bool>& armed,
+                  const std::vector<LimiterContact>& lc, const std::vector<PairContact>& pc,
+                  double v_eps, std::vector<Event>& events) {
+  int impacts = 0;
+  for (const PairContact& p : pc) {
+    double& vb = y[dphi_index(p.behind)];
+    double& va = y[dphi_index(p.ahead)];
+    if (vb - va <= v_eps || separated_by_limiter(model, lc, armed, p)) continue;
+    Event e;
+    e.kind = EventKind::collision;
+    e.pellets = {p.behind, p.ahead};
+    e.dphi_before = {vb, va};
+    collide(model.pellets[p.behind].m, model.pellets[p.ahead].m, model.k_c, vb, va);
+    e.dphi_after = {vb, va};
+    events.push_back(std::move(e));
+    ++impacts;
+  }
+  return impacts;
+}
+
 }  // namespace
 
-int shared_by_closings(const Model& model, const std::vector<double>& v,
-                       const std::vector<bool>& armed, const std::vector<LimiterContact>& lc,
-                       const std::vector<PairContact>& pc, double v_eps) {
+int shared_by_closings(const Model& model, const Vec& y, const std::vector<bool>& armed,
+                       const std::vector<LimiterContact>& lc, const std::vector<PairContact>& pc,
+                       double v_eps) {
+  auto v = [&](int i) { return y[dphi_index(i)]; };
   std::vector<int> closings(model.size(), 0);
   for (const LimiterContact& c : lc)
     if (armed[c.limiter] && model.limiters[c.limiter].acts_on(c.pellet) &&
-        v[c.pellet] * c.side < -v_eps)
+        v(c.pellet) * c.side < -v_eps)
       ++closings[c.pellet];
   for (const PairContact& p : pc) {
-    if (v[p.behind] - v[p.ahead] <= v_eps || separated_by_limiter(model, lc, armed, p)) continue;
+    if (v(p.behind) - v(p.ahead) <= v_eps || separated_by_limiter(model, lc, armed, p)) continue;
     ++closings[p.behind];
     ++closings[p.ahead];
   }
@@ -130,11 +177,9 @@ int shared_by_closings(const Model& model, const std::vector<double>& v,
   return -1;
 }
 
-std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
-                                   std::vector<bool>& armed,
+std::vector<Event> resolve_impacts(const Model& model, Vec& y, std::vector<bool>& armed,
                                    const std::vector<LimiterContact>& limiter_contacts,
                                    const std::vector<PairContact>& pair_contacts,
-                                   const std::vector<double>& positions,
                                    const ImpactOptions& options) {
   std::vector<LimiterContact> lc = limiter_contacts;
   std::sort(lc.begin(), lc.end(), [](const LimiterContact& a, const LimiterContact& b) {
@@ -142,52 +187,23 @@ std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
   });
   std::vector<PairContact> pc = pair_contacts;
   auto place = [&](int i) {
-    const double w = std::fmod(positions[i], kTwoPi);
+    const double w = std::fmod(y[phi_index(i)], kTwoPi);
     return w < 0.0 ? w + kTwoPi : w;
   };
   std::stable_sort(pc.begin(), pc.end(), [&](const PairContact& a, const PairContact& b) {
     return place(a.behind) < place(b.behind);
   });
-
-  const std::vector<double> v0 = v;
+  const Vec y0 = y;
   const std::vector<bool> armed0 = armed;
   std::vector<Event> events;
   int impacts = 0;
   for (int sweep = 0; sweep < options.max_sweeps; ++sweep) {
-    bool changed = false;
-    for (const LimiterContact& c : lc) {
-      const Limiter& lim = model.limiters[c.limiter];
-      if (!armed[c.limiter] || !lim.acts_on(c.pellet) || v[c.pellet] * c.side >= -options.v_eps)
-        continue;
-      Event e;
-      e.kind = EventKind::limiter;
-      e.pellets = {c.pellet};
-      e.limiter = c.limiter;
-      e.dphi_before = {v[c.pellet]};
-      v[c.pellet] = -lim.k * v[c.pellet];
-      e.dphi_after = {v[c.pellet]};
-      strike_limiter(model, armed, c.limiter);
-      events.push_back(std::move(e));
-      changed = true;
-      ++impacts;
-    }
-    for (const PairContact& p : pc) {
-      if (v[p.behind] - v[p.ahead] <= options.v_eps || separated_by_limiter(model, lc, armed, p))
-        continue;
-      Event e;
-      e.kind = EventKind::collision;
-      e.pellets = {p.behind, p.ahead};
-      e.dphi_before = {v[p.behind], v[p.ahead]};
-      collide(model.pellets[p.behind].m, model.pellets[p.ahead].m, model.k_c, v[p.behind],
-              v[p.ahead]);
-      e.dphi_after = {v[p.behind], v[p.ahead]};
-      events.push_back(std::move(e));
-      changed = true;
-      ++impacts;
-    }
-    if (!changed) return events;
+    const int struck = strike_limiters(model, y, armed, lc, options.v_eps, events);
+    const int collided = collide_pairs(model, y, armed, lc, pc, options.v_eps, events);
+    if (struck + collided == 0) return events;
+    impacts += struck + collided;
   }
-  return plastic_limit(model, v, v0, armed, armed0, lc, pc, impacts);
+  return plastic_limit(model, y, y0, armed, armed0, lc, pc, impacts);
 }
 
 }  // namespace vibro

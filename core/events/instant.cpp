@@ -67,24 +67,16 @@ Support support_of(const Body& body, const InstantContacts& contacts,
 // for the chatter phase to read who struck whom.
 std::vector<Event> strike(Instant& in, Vec& y, std::vector<bool>& armed, InstantOutcome& out) {
   const Model& model = in.model;
-  const int n = model.size();
-  std::vector<double> v(n), place(n);  // the impact law's speeds (updated) and angles
-  for (int i = 0; i < n; ++i) {
-    v[i] = y[dphi_index(i)];
-    place[i] = y[phi_index(i)];
-  }
   const InstantContacts& c = in.contacts;
-  out.unordered = shared_by_closings(model, v, armed, c.limiters, c.pairs, in.tol.v_eps);
-  std::vector<Event> impacts = resolve_impacts(model, v, armed, c.limiters, c.pairs, place,
-                                               ImpactOptions{.v_eps = in.tol.v_eps});
+  out.unordered = shared_by_closings(model, y, armed, c.limiters, c.pairs, in.tol.v_eps);
+  std::vector<Event> impacts =
+      resolve_impacts(model, y, armed, c.limiters, c.pairs, ImpactOptions{.v_eps = in.tol.v_eps});
   // At the plastic limit no order of the impacts changes the outcome.
   if (std::any_of(impacts.begin(), impacts.end(),
                   [](const Event& e) { return e.impacts_resolved > 0; }))
     out.unordered = -1;
-  for (int i = 0; i < n; ++i) {
-    out.kinetic_change += kinetic(model, i, v[i]) - kinetic(model, i, y[dphi_index(i)]);
-    y[dphi_index(i)] = v[i];
-  }
+  for (int i = 0; i < model.size(); ++i)
+    out.kinetic_change += kinetic(model, i, y[dphi_index(i)]) - kinetic(model, i, in.pellets[i].v);
   for (const Event& e : impacts) {
     for (int i : e.pellets) out.touched[i] = true;
     if (e.kind == EventKind::limiter) in.pellets[e.pellets[0]].struck = e.limiter;
