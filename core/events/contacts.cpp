@@ -62,16 +62,17 @@ void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double con
 }
 
 std::vector<std::vector<int>> chains(const PelletLinks& links) {
-  const int n = static_cast<int>(links.next.size());
+  const int n = links.size();
   std::vector<std::vector<int>> out;
   std::vector<bool> placed(n, false);
   for (int start = 0; start < n; ++start) {
     if (placed[start]) continue;
     int first = start;
-    for (int guard = 0; links.prev[first] >= 0 && links.prev[first] != start && guard < n; ++guard)
-      first = links.prev[first];
+    for (int guard = 0; links.behind(first) >= 0 && links.behind(first) != start && guard < n;
+         ++guard)
+      first = links.behind(first);
     std::vector<int> members;
-    for (int i = first, guard = 0; i >= 0 && !placed[i] && guard < n; i = links.next[i], ++guard) {
+    for (int i = first, guard = 0; i >= 0 && !placed[i] && guard < n; i = links.ahead(i), ++guard) {
       members.push_back(i);
       placed[i] = true;
     }
@@ -98,11 +99,11 @@ struct JoinScene {
   const std::vector<bool>& armed;
 };
 
-// The chain that `link` (next or prev) leads to from `from`, `from` included.
-Chain chain_from(const JoinScene& s, int from, const std::vector<int>& link) {
+// The chain from `from` (included) in direction `way` (+1 ahead, −1 behind) along the links.
+Chain chain_from(const JoinScene& s, const PelletLinks& links, int from, int way) {
   const int n = s.model.size();
   Chain c;
-  for (int i = from, guard = 0; i >= 0 && guard < n; i = link[i], ++guard) {
+  for (int i = from, guard = 0; i >= 0 && guard < n; i = links.next(i, way), ++guard) {
     c.F += s.model.pellets[i].force.at(s.t);
     c.M += s.model.pellets[i].m;
     c.P += s.model.pellets[i].m * s.y[dphi_index(i)];
@@ -161,10 +162,10 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
   for (bool grew = true; grew;) {
     grew = false;
     for (const PairContact& p : pairs) {
-      if (links.next[p.behind] >= 0 || links.prev[p.ahead] >= 0) continue;
+      if (links.ahead(p.behind) >= 0 || links.behind(p.ahead) >= 0) continue;
       if (separated_by_limiter(model, limiter_contacts, armed, p)) continue;
-      const Chain b = chain_from(scene, p.behind, links.prev);
-      const Chain a = chain_from(scene, p.ahead, links.next);
+      const Chain b = chain_from(scene, links, p.behind, -1);
+      const Chain a = chain_from(scene, links, p.ahead, +1);
       const double approach = b.P / b.M - a.P / a.M;
       const double phi = y[phi_index(p.behind)];
       const double press = relative_acceleration(model, law, b, a, phi, criteria.v_merge);

@@ -32,15 +32,27 @@ void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double con
                    std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
                    std::vector<PairContact>& pairs);
 
-// Pellets linked into chains of touching ones: next[i] the pellet ahead of i in its chain,
-// prev[i] the one behind, −1 at a chain's ends.
-struct PelletLinks {
-  std::vector<int> next, prev;
-  explicit PelletLinks(int n) : next(n, -1), prev(n, -1) {}
+// Pellets linked into chains of touching ones: for each pellet, its neighbour behind and ahead in
+// its chain, −1 at a chain's ends.
+class PelletLinks {
+ public:
+  explicit PelletLinks(int n) : links_(n) {}
+  int size() const { return static_cast<int>(links_.size()); }
   void link(const PairContact& p) {
-    next[p.behind] = p.ahead;
-    prev[p.ahead] = p.behind;
+    links_[p.behind].ahead = p.ahead;
+    links_[p.ahead].behind = p.behind;
   }
+  int behind(int i) const { return links_[i].behind; }
+  int ahead(int i) const { return links_[i].ahead; }
+  // The next pellet from i in direction `way` (+1 ahead, −1 behind), or −1.
+  int next(int i, int way) const { return way > 0 ? ahead(i) : behind(i); }
+
+ private:
+  struct Link {
+    int behind = -1;
+    int ahead = -1;
+  };
+  std::vector<Link> links_;
 };
 
 // The chains, each behind to ahead, in the order of their pellets' lowest index; every pellet

@@ -1,12 +1,17 @@
 // One event instant (MODEL.md, "Events"): everything that happens at one time t, resolved in
-// named phases:
+// named phases, each one function:
 //   1. snap      the crossings found by the root finder are put exactly onto their events (the
 //                angle onto the limiter, the speed to zero, two pellets onto one place), and the
-//                contacts of the instant are listed, standing ones included;
-//   2. impacts   limiter impacts and collisions among the contacts, until nothing approaches;
-//   3. join      touching pellets that move on together become one body;
-//   4. chatter   a pellet pressed back onto the limiter it just left: the series is summed;
-//   5. modes     each body slides, sticks or rests, and the events that say how it changed.
+//                contacts of the instant are listed, standing ones included (snap.cpp);
+//   2. impacts   limiter impacts and collisions among the contacts, until nothing approaches
+//                (strike, over impacts.h);
+//   3. join      touching pellets that move on together become one body (join_bodies, over
+//                contacts.h), each at its momentum's speed (merged_speed);
+//   4. chatter   a body pressed back onto the limiter it just left: the series is summed
+//                (sum_chatter, over chatter.h);
+//   5. modes     each body slides, sticks or rests (set_mode), and the event that says how its
+//                motion changed (mode_change).
+// Phases 2 to 5 are in instant.cpp.
 #pragma once
 
 #include <vector>
