@@ -303,6 +303,34 @@ TEST(InstantJoin, TouchingPelletsPartingBelowTheMergeSpeedMoveOnAsOneWithTheirMo
   EXPECT_EQ(y[dphi_index(1)], y[dphi_index(0)]);
 }
 
+TEST(InstantJoin, AMergeDrivingABodyIntoALimiterHoldingAMemberStopsItThere) {
+  // Pellet 0 is pushed up (2 N: 20 rad/s² against gravity's 9.4 at 0.5 rad) into a limiter that
+  // acts on it alone; pellet 1, at its place, parts upward at w = 1e-5 rad/s, pressed back at
+  // 9.4 rad/s²: their chatter would last 2w/(9.4·(1 − 0.5)) = 4e-6 s, below the chatter time,
+  // so they join. Their momentum's speed, w/2 upward, would drag pellet 0 through its limiter:
+  // the limiter takes it, and the body rests there (the push, 10 rad/s² on both, beats gravity).
+  const double theta = 0.5, w = 1e-5;
+  Model m = pellets_at({{theta, 0.0}, {theta, w}});
+  m.pellets[0].force = {2.0, 0.0, 0.0};
+  m.k_c = 0.5;
+  m.limiters = {{theta, 0.5, false, -1, {0}}};
+  Vec y = state(m);
+  std::vector<bool> armed = {true};
+  InstantContacts c = no_contacts(m);
+  c.limiters = {{0, 0, -1}};
+  c.pairs = {{0, 1}};
+  const InstantOutcome out =
+      resolve_instant(m, event_tolerances(m), 0.0, initial_bodies(m, y), c, y, armed);
+  ASSERT_EQ(out.bodies.size(), 1u);
+  EXPECT_EQ(out.bodies[0].members, (std::vector<int>{0, 1}));
+  EXPECT_EQ(out.bodies[0].mode, Mode::resting);
+  EXPECT_EQ(out.bodies[0].limiter, 0);
+  EXPECT_EQ(out.bodies[0].side, -1);
+  EXPECT_EQ(y[dphi_index(0)], 0.0);
+  EXPECT_EQ(y[dphi_index(1)], 0.0);
+  EXPECT_NEAR(out.kinetic_change, -kinetic(m, 1, w), 1e-12 * kinetic(m, 1, w));
+}
+
 TEST(InstantJoin, APairAPartingWatchSeparatedStaysApart) {
   Model m = pellets_at({{0.3, 1.0}, {0.3, 1.0}});
   Vec y = state(m);
