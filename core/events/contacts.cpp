@@ -61,88 +61,125 @@ void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double con
   }
 }
 
+std::vector<std::vector<int>> chains(const PelletLinks& links) {
+  const int n = links.size();
+  std::vector<std::vector<int>> out;
+  std::vector<bool> placed(n, false);
+  for (int start = 0; start < n; ++start) {
+    if (placed[start]) continue;
+    int first = start;
+    for (int guard = 0; links.behind(first) >= 0 && links.behind(first) != start && guard < n;
+         ++guard)
+      first = links.behind(first);
+    std::vector<int> members;
+    for (int i = first, guard = 0; i >= 0 && !placed[i] && guard < n; i = links.ahead(i), ++guard) {
+      members.push_back(i);
+      placed[i] = true;
+    }
+    out.push_back(std::move(members));
+  }
+  return out;
+}
+
+namespace {
+
+// Force (N), mass (kg) and momentum (kg·rad/s) of a chain of touching pellets, and the side of
+// an armed limiter one of its pellets touches (0: none).
+struct Chain {
+  double F = 0.0, M = 0.0, P = 0.0;
+  int limiter_side = 0;
+};
+
+// What join_touching reads of the instant: the model, the time, the state and the limiters.
+struct JoinScene {
+  const Model& model;
+  double t;  // s
+  const Vec& y;
+  const std::vector<LimiterContact>& limiter_contacts;
+  const std::vector<bool>& armed;
+};
+
+// The chain from `from` (included) in direction `way` (+1 ahead, −1 behind) along the links.
+Chain chain_from(const JoinScene& s, const PelletLinks& links, int from, int way) {
+  const int n = s.model.size();
+  Chain c;
+  for (int i = from, guard = 0; i >= 0 && guard < n; i = links.next(i, way), ++guard) {
+    c.F += s.model.pellets[i].force.at(s.t);
+    c.M += s.model.pellets[i].m;
+    c.P += s.model.pellets[i].m * s.y[dphi_index(i)];
+    for (const LimiterContact& l : s.limiter_contacts)
+      if (l.pellet == i && s.armed[l.limiter]) c.limiter_side = l.side;
+  }
+  return c;
+}
+
+// The acceleration (rad/s²) of a chain at rest at phi, given what holds it: static friction up
+// to its capacity, and a limiter at its back (side +1 stops it going down, −1 going up).
+double held_acceleration(const Model& model, const Chain& c, double phi) {
+  const double a = c.F / (c.M * model.R) - model.g / model.R * std::sin(phi);
+  const double capacity = stick_capacity(model, phi);
+  const double up = std::max(a - capacity, 0.0), down = std::min(a + capacity, 0.0);
+  return (c.limiter_side > 0 ? 0.0 : down) + (c.limiter_side < 0 ? 0.0 : up);
+}
+
+// How fast the chain behind closes on the chain ahead, rad/s². Moving at one speed, friction
+// and gravity per mass are the same for both: the forces per mass decide. At rest (speed within
+// v_merge), what holds each decides; one at rest and one moving (parting from a pellet that a
+// limiter stopped): each one's own acceleration.
+double relative_acceleration(const Model& model, const SlidingLaw& law, const Chain& b,
+                             const Chain& a, double phi, double v_merge) {
+  const double vb = b.P / b.M, va = a.P / a.M;
+  const bool rest_b = std::abs(vb) <= v_merge, rest_a = std::abs(va) <= v_merge;
+  if (!rest_b && !rest_a) return (b.F / b.M - a.F / a.M) / model.R;
+  auto own = [&](const Chain& c, double v, bool rest) {
+    return rest ? held_acceleration(model, c, phi)
+                : law.acceleration(c.F, c.M, std::cos(phi), std::sin(phi), v, v > 0.0 ? 1 : -1);
+  };
+  return own(b, vb, rest_b) - own(a, va, rest_a);
+}
+
+// Whether chains approaching at `approach` (rad/s) and pressed together at `press` (rad/s²)
+// move on as one. Parting at w and pressed back at p, they meet again after 2w/p, and at k_c·w
+// after that: the whole chatter lasts 2w/(p(1 − k_c)). They part by w²/(2p) at most, a gap that
+// round-off alone may close or open.
+bool move_as_one(double approach, double press, double k_c, const JoinCriteria& criteria) {
+  const double chatter = 2.0 * std::abs(approach) / (press * (1.0 - k_c));
+  const double flight = approach * approach / (2.0 * press);
+  return press >= 0.0 && (std::abs(approach) <= criteria.v_merge ||
+                          chatter <= criteria.chatter_time || flight <= criteria.flight);
+}
+
+}  // namespace
+
 std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
                                 const std::vector<PairContact>& pairs,
                                 const std::vector<LimiterContact>& limiter_contacts,
                                 const std::vector<bool>& armed, const JoinCriteria& criteria) {
-  const int n = model.size();
-  std::vector<int> next(n, -1), prev(n, -1);
-  // Force, mass and momentum of the chain that `link` leads to from `from`, and the side of an
-  // armed limiter one of its pellets touches (0: none).
-  struct Chain {
-    double F = 0.0, M = 0.0, P = 0.0;
-    int limiter_side = 0;
-  };
-  auto chain = [&](int from, const std::vector<int>& link) {
-    Chain c;
-    for (int i = from, guard = 0; i >= 0 && guard < n; i = link[i], ++guard) {
-      c.F += model.pellets[i].force.at(t);
-      c.M += model.pellets[i].m;
-      c.P += model.pellets[i].m * y[dphi_index(i)];
-      for (const LimiterContact& l : limiter_contacts)
-        if (l.pellet == i && armed[l.limiter]) c.limiter_side = l.side;
-    }
-    return c;
-  };
-  // The acceleration of a chain at rest, given what holds it: static friction up to its
-  // capacity, and a limiter at its back (side +1 stops it going down, −1 going up).
-  auto held = [&](const Chain& c, double phi) {
-    const double a = c.F / (c.M * model.R) - model.g / model.R * std::sin(phi);
-    const double capacity = stick_capacity(model, phi);
-    const double up = std::max(a - capacity, 0.0), down = std::min(a + capacity, 0.0);
-    return (c.limiter_side > 0 ? 0.0 : down) + (c.limiter_side < 0 ? 0.0 : up);
-  };
-  // How fast the chain behind closes on the chain ahead, rad/s². Moving at one speed, friction
-  // and gravity per mass are the same for both: the forces per mass decide. At rest, what holds
-  // each decides; one at rest and one moving (parting from a pellet that a limiter stopped):
-  // each one's own acceleration.
+  const JoinScene scene{model, t, y, limiter_contacts, armed};
   const SlidingLaw law(model);
-  auto relative_acceleration = [&](const Chain& b, const Chain& a, double phi) {
-    const double vb = b.P / b.M, va = a.P / a.M;
-    const bool rest_b = std::abs(vb) <= criteria.v_merge, rest_a = std::abs(va) <= criteria.v_merge;
-    if (!rest_b && !rest_a) return (b.F / b.M - a.F / a.M) / model.R;
-    auto own = [&](const Chain& c, double v, bool rest) {
-      return rest ? held(c, phi)
-                  : law.acceleration(c.F, c.M, std::cos(phi), std::sin(phi), v, v > 0.0 ? 1 : -1);
-    };
-    return own(b, vb, rest_b) - own(a, va, rest_a);
-  };
+  PelletLinks links(model.size());
   // Chains grow until nothing more joins: a pair's press depends on the chains behind and ahead.
   for (bool grew = true; grew;) {
     grew = false;
     for (const PairContact& p : pairs) {
-      if (next[p.behind] >= 0 || prev[p.ahead] >= 0) continue;
+      if (links.ahead(p.behind) >= 0 || links.behind(p.ahead) >= 0) continue;
       if (separated_by_limiter(model, limiter_contacts, armed, p)) continue;
-      const Chain b = chain(p.behind, prev), a = chain(p.ahead, next);
+      const Chain b = chain_from(scene, links, p.behind, -1);
+      const Chain a = chain_from(scene, links, p.ahead, +1);
       const double approach = b.P / b.M - a.P / a.M;
       const double phi = y[phi_index(p.behind)];
-      const double press = relative_acceleration(b, a, phi);
-      // Parting at w and pressed back at p, they meet again after 2w/p, and at k_c·w after
-      // that: the whole chatter lasts 2w/(p(1 − k_c)). They part by w²/(2p) at most, a gap
-      // that round-off alone may close or open.
-      const double chatter = 2.0 * std::abs(approach) / (press * (1.0 - model.k_c));
-      const double flight = approach * approach / (2.0 * press);
-      if (press >= 0.0 && (std::abs(approach) <= criteria.v_merge ||
-                           chatter <= criteria.chatter_time || flight <= criteria.flight)) {
-        next[p.behind] = p.ahead;
-        prev[p.ahead] = p.behind;
+      const double press = relative_acceleration(model, law, b, a, phi, criteria.v_merge);
+      if (move_as_one(approach, press, model.k_c, criteria)) {
+        links.link(p);
         grew = true;
       }
     }
   }
   std::vector<Body> bodies;
-  std::vector<bool> placed(n, false);
-  for (int start = 0; start < n; ++start) {
-    if (placed[start]) continue;
-    int first = start;
-    for (int guard = 0; prev[first] >= 0 && prev[first] != start && guard < n; ++guard)
-      first = prev[first];
+  for (std::vector<int>& members : chains(links)) {
     Body body;
-    for (int i = first, guard = 0; i >= 0 && !placed[i] && guard < n; i = next[i], ++guard) {
-      body.members.push_back(i);
-      placed[i] = true;
-    }
-    bodies.push_back(body);
+    body.members = std::move(members);
+    bodies.push_back(std::move(body));
   }
   return bodies;
 }

@@ -32,6 +32,33 @@ void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double con
                    std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
                    std::vector<PairContact>& pairs);
 
+// Pellets linked into chains of touching ones: for each pellet, its neighbour behind and ahead in
+// its chain, −1 at a chain's ends.
+class PelletLinks {
+ public:
+  explicit PelletLinks(int n) : links_(n) {}
+  int size() const { return static_cast<int>(links_.size()); }
+  void link(const PairContact& p) {
+    links_[p.behind].ahead = p.ahead;
+    links_[p.ahead].behind = p.behind;
+  }
+  int behind(int i) const { return links_[i].behind; }
+  int ahead(int i) const { return links_[i].ahead; }
+  // The next pellet from i in direction `way` (+1 ahead, −1 behind), or −1.
+  int next(int i, int way) const { return way > 0 ? ahead(i) : behind(i); }
+
+ private:
+  struct Link {
+    int behind = -1;
+    int ahead = -1;
+  };
+  std::vector<Link> links_;
+};
+
+// The chains, each behind to ahead, in the order of their pellets' lowest index; every pellet
+// in one. A closed ring starts at the pellet ahead of its lowest index.
+std::vector<std::vector<int>> chains(const PelletLinks& links);
+
 // When touching pellets move on as one body: their forces press them together, and they would
 // otherwise collide again at once — equal speeds within `v_merge`, a remaining chatter between
 // them shorter than `chatter_time` (its plastic limit), or a flight apart within the round-off

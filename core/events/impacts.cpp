@@ -3,6 +3,9 @@
 #include <algorithm>
 #include <cmath>
 #include <limits>
+#include <optional>
+
+#include "core/events/contacts.h"
 
 namespace vibro {
 
@@ -42,84 +45,130 @@ void strike_limiter(const Model& model, std::vector<bool>& armed, int limiter) {
   }
 }
 
-// The limit of an endless cascade: each group of touching pellets moves with its momentum's
-// velocity, and stops if that drives it into an armed limiter it touches.
-std::vector<Event> plastic_limit(const Model& model, std::vector<double>& v,
-                                 const std::vector<double>& v0, std::vector<bool>& armed,
-                                 const std::vector<bool>& armed0,
+// The impact that takes a group of touching pellets (behind to ahead) from its speeds in y0 to
+// the limit of its endless cascade: the group moves with its momentum's speed, and stops if that
+// drives it into an armed limiter it touches. None for a group the cascade did not move (a
+// pellet resting elsewhere, pellets moving together: their momentum's speed is theirs up to
+// round-off), nor for a lone pellet at no limiter.
+std::optional<Event> group_limit(const Model& model, const std::vector<int>& members, const Vec& y0,
+                                 const std::vector<bool>& armed,
+                                 const std::vector<LimiterContact>& lc) {
+  double P = 0.0, M = 0.0;
+  for (int i : members) {
+    P += model.pellets[i].m * y0[dphi_index(i)];
+    M += model.pellets[i].m;
+  }
+  double V = P / M;
+  int limiter = -1;
+  for (const LimiterContact& c : lc) {
+    if (std::find(members.begin(), members.end(), c.pellet) == members.end() || !armed[c.limiter])
+      continue;
+    if (limiter < 0) limiter = c.limiter;
+    if (V * c.side < 0.0) {
+      V = 0.0;
+      limiter = c.limiter;
+    }
+  }
+  const bool struck = std::any_of(members.begin(), members.end(), [&](int i) {
+    return std::abs(y0[dphi_index(i)] - V) >
+           8.0 * std::numeric_limits<double>::epsilon() * std::abs(V);
+  });
+  if (!struck || (members.size() == 1 && limiter < 0)) return std::nullopt;
+  Event e;
+  e.kind = members.size() > 1 ? EventKind::collision : EventKind::limiter;
+  e.pellets = members;
+  e.limiter = limiter;
+  for (int i : members) {
+    e.dphi_before.push_back(y0[dphi_index(i)]);
+    e.dphi_after.push_back(V);
+  }
+  return e;
+}
+
+// The limit of an endless cascade from the state y0 and limiters armed0 before it: each group
+// of touching pellets (a limiter between two pellets keeps them in two groups) takes its
+// group_limit. y and armed are set to what the limit leaves; each event counts the `impacts`
+// the sweeps resolved before the limit was taken.
+std::vector<Event> plastic_limit(const Model& model, Vec& y, const Vec& y0,
+                                 std::vector<bool>& armed, const std::vector<bool>& armed0,
                                  const std::vector<LimiterContact>& lc,
                                  const std::vector<PairContact>& pc, int impacts) {
-  const int n = model.size();
-  v = v0;
+  y = y0;
   armed = armed0;
-  // Each group's members in their order around the circle, behind to ahead; a limiter between
-  // two pellets keeps them in two groups.
-  std::vector<int> next(n, -1), prev(n, -1);
-  for (const PairContact& p : pc) {
-    if (separated_by_limiter(model, lc, armed0, p)) continue;
-    next[p.behind] = p.ahead;
-    prev[p.ahead] = p.behind;
-  }
+  PelletLinks links(model.size());
+  for (const PairContact& p : pc)
+    if (!separated_by_limiter(model, lc, armed0, p)) links.link(p);
   std::vector<Event> events;
-  std::vector<bool> done(n, false);
-  for (int start = 0; start < n; ++start) {
-    if (done[start]) continue;
-    int first = start;
-    for (int guard = 0; prev[first] >= 0 && prev[first] != start && guard < n; ++guard)
-      first = prev[first];
-    std::vector<int> members;
-    double P = 0.0, M = 0.0;
-    for (int i = first, guard = 0; i >= 0 && !done[i] && guard < n; i = next[i], ++guard) {
-      members.push_back(i);
-      done[i] = true;
-      P += model.pellets[i].m * v0[i];
-      M += model.pellets[i].m;
-    }
-    double V = P / M;
-    int limiter = -1;
-    for (const LimiterContact& c : lc) {
-      if (std::find(members.begin(), members.end(), c.pellet) == members.end() || !armed[c.limiter])
-        continue;
-      if (limiter < 0) limiter = c.limiter;
-      if (V * c.side < 0.0) {
-        V = 0.0;
-        limiter = c.limiter;
-      }
-    }
-    // A group the cascade did not move (a pellet resting elsewhere, pellets moving together: their
-    // momentum's speed is theirs up to round-off) has no impact to list.
-    const bool struck = std::any_of(members.begin(), members.end(), [&](int i) {
-      return std::abs(v0[i] - V) > 8.0 * std::numeric_limits<double>::epsilon() * std::abs(V);
-    });
-    if (!struck || (members.size() == 1 && limiter < 0)) continue;
-    Event e;
-    e.kind = members.size() > 1 ? EventKind::collision : EventKind::limiter;
-    e.pellets = members;
-    e.limiter = limiter;
-    e.impacts_resolved = impacts;
-    for (int i : members) {
-      e.dphi_before.push_back(v0[i]);
-      v[i] = V;
-      e.dphi_after.push_back(V);
-    }
-    if (limiter >= 0) strike_limiter(model, armed, limiter);
-    events.push_back(std::move(e));
+  for (const std::vector<int>& members : chains(links)) {
+    std::optional<Event> e = group_limit(model, members, y0, armed, lc);
+    if (!e) continue;
+    e->impacts_resolved = impacts;
+    for (int i : members) y[dphi_index(i)] = e->dphi_after.front();
+    if (e->limiter >= 0) strike_limiter(model, armed, e->limiter);
+    events.push_back(std::move(*e));
   }
   return events;
 }
 
+// One sweep's limiter impacts, in the contacts' order: each contact whose pellet approaches its
+// armed limiter faster than v_eps rebounds with the limiter's k. Returns how many.
+int strike_limiters(const Model& model, Vec& y, std::vector<bool>& armed,
+                    const std::vector<LimiterContact>& lc, double v_eps,
+                    std::vector<Event>& events) {
+  int impacts = 0;
+  for (const LimiterContact& c : lc) {
+    const Limiter& lim = model.limiters[c.limiter];
+    double& v = y[dphi_index(c.pellet)];
+    if (!armed[c.limiter] || !lim.acts_on(c.pellet) || v * c.side >= -v_eps) continue;
+    Event e;
+    e.kind = EventKind::limiter;
+    e.pellets = {c.pellet};
+    e.limiter = c.limiter;
+    e.dphi_before = {v};
+    v = -lim.k * v;
+    e.dphi_after = {v};
+    strike_limiter(model, armed, c.limiter);
+    events.push_back(std::move(e));
+    ++impacts;
+  }
+  return impacts;
+}
+
+// One sweep's collisions, in the pairs' order: each pair closing faster than v_eps, with no armed
+// limiter between them, collides by Newton's law. Returns how many.
+int collide_pairs(const Model& model, Vec& y, const std::vector<bool>& armed,
+                  const std::vector<LimiterContact>& lc, const std::vector<PairContact>& pc,
+                  double v_eps, std::vector<Event>& events) {
+  int impacts = 0;
+  for (const PairContact& p : pc) {
+    double& vb = y[dphi_index(p.behind)];
+    double& va = y[dphi_index(p.ahead)];
+    if (vb - va <= v_eps || separated_by_limiter(model, lc, armed, p)) continue;
+    Event e;
+    e.kind = EventKind::collision;
+    e.pellets = {p.behind, p.ahead};
+    e.dphi_before = {vb, va};
+    collide(model.pellets[p.behind].m, model.pellets[p.ahead].m, model.k_c, vb, va);
+    e.dphi_after = {vb, va};
+    events.push_back(std::move(e));
+    ++impacts;
+  }
+  return impacts;
+}
+
 }  // namespace
 
-int shared_by_closings(const Model& model, const std::vector<double>& v,
-                       const std::vector<bool>& armed, const std::vector<LimiterContact>& lc,
-                       const std::vector<PairContact>& pc, double v_eps) {
+int shared_by_closings(const Model& model, const Vec& y, const std::vector<bool>& armed,
+                       const std::vector<LimiterContact>& lc, const std::vector<PairContact>& pc,
+                       double v_eps) {
+  auto v = [&](int i) { return y[dphi_index(i)]; };
   std::vector<int> closings(model.size(), 0);
   for (const LimiterContact& c : lc)
     if (armed[c.limiter] && model.limiters[c.limiter].acts_on(c.pellet) &&
-        v[c.pellet] * c.side < -v_eps)
+        v(c.pellet) * c.side < -v_eps)
       ++closings[c.pellet];
   for (const PairContact& p : pc) {
-    if (v[p.behind] - v[p.ahead] <= v_eps || separated_by_limiter(model, lc, armed, p)) continue;
+    if (v(p.behind) - v(p.ahead) <= v_eps || separated_by_limiter(model, lc, armed, p)) continue;
     ++closings[p.behind];
     ++closings[p.ahead];
   }
@@ -128,11 +177,9 @@ int shared_by_closings(const Model& model, const std::vector<double>& v,
   return -1;
 }
 
-std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
-                                   std::vector<bool>& armed,
+std::vector<Event> resolve_impacts(const Model& model, Vec& y, std::vector<bool>& armed,
                                    const std::vector<LimiterContact>& limiter_contacts,
                                    const std::vector<PairContact>& pair_contacts,
-                                   const std::vector<double>& positions,
                                    const ImpactOptions& options) {
   std::vector<LimiterContact> lc = limiter_contacts;
   std::sort(lc.begin(), lc.end(), [](const LimiterContact& a, const LimiterContact& b) {
@@ -140,52 +187,23 @@ std::vector<Event> resolve_impacts(const Model& model, std::vector<double>& v,
   });
   std::vector<PairContact> pc = pair_contacts;
   auto place = [&](int i) {
-    const double w = std::fmod(positions[i], kTwoPi);
+    const double w = std::fmod(y[phi_index(i)], kTwoPi);
     return w < 0.0 ? w + kTwoPi : w;
   };
   std::stable_sort(pc.begin(), pc.end(), [&](const PairContact& a, const PairContact& b) {
     return place(a.behind) < place(b.behind);
   });
-
-  const std::vector<double> v0 = v;
+  const Vec y0 = y;
   const std::vector<bool> armed0 = armed;
   std::vector<Event> events;
   int impacts = 0;
   for (int sweep = 0; sweep < options.max_sweeps; ++sweep) {
-    bool changed = false;
-    for (const LimiterContact& c : lc) {
-      const Limiter& lim = model.limiters[c.limiter];
-      if (!armed[c.limiter] || !lim.acts_on(c.pellet) || v[c.pellet] * c.side >= -options.v_eps)
-        continue;
-      Event e;
-      e.kind = EventKind::limiter;
-      e.pellets = {c.pellet};
-      e.limiter = c.limiter;
-      e.dphi_before = {v[c.pellet]};
-      v[c.pellet] = -lim.k * v[c.pellet];
-      e.dphi_after = {v[c.pellet]};
-      strike_limiter(model, armed, c.limiter);
-      events.push_back(std::move(e));
-      changed = true;
-      ++impacts;
-    }
-    for (const PairContact& p : pc) {
-      if (v[p.behind] - v[p.ahead] <= options.v_eps || separated_by_limiter(model, lc, armed, p))
-        continue;
-      Event e;
-      e.kind = EventKind::collision;
-      e.pellets = {p.behind, p.ahead};
-      e.dphi_before = {v[p.behind], v[p.ahead]};
-      collide(model.pellets[p.behind].m, model.pellets[p.ahead].m, model.k_c, v[p.behind],
-              v[p.ahead]);
-      e.dphi_after = {v[p.behind], v[p.ahead]};
-      events.push_back(std::move(e));
-      changed = true;
-      ++impacts;
-    }
-    if (!changed) return events;
+    const int struck = strike_limiters(model, y, armed, lc, options.v_eps, events);
+    const int collided = collide_pairs(model, y, armed, lc, pc, options.v_eps, events);
+    if (struck + collided == 0) return events;
+    impacts += struck + collided;
   }
-  return plastic_limit(model, v, v0, armed, armed0, lc, pc, impacts);
+  return plastic_limit(model, y, y0, armed, armed0, lc, pc, impacts);
 }
 
 }  // namespace vibro

@@ -1,12 +1,17 @@
 // One event instant (MODEL.md, "Events"): everything that happens at one time t, resolved in
-// named phases:
+// named phases, each one function:
 //   1. snap      the crossings found by the root finder are put exactly onto their events (the
 //                angle onto the limiter, the speed to zero, two pellets onto one place), and the
-//                contacts of the instant are listed, standing ones included;
-//   2. impacts   limiter impacts and collisions among the contacts, until nothing approaches;
-//   3. join      touching pellets that move on together become one body;
-//   4. chatter   a pellet pressed back onto the limiter it just left: the series is summed;
-//   5. modes     each body slides, sticks or rests, and the events that say how it changed.
+//                contacts of the instant are listed, standing ones included (snap.cpp);
+//   2. impacts   limiter impacts and collisions among the contacts, until nothing approaches
+//                (strike, over impacts.h);
+//   3. join      touching pellets that move on together become one body (join_bodies, over
+//                contacts.h), each at its momentum's speed (merged_speed);
+//   4. chatter   a body pressed back onto the limiter it just left: the series is summed
+//                (sum_chatter, over chatter.h);
+//   5. modes     each body slides, sticks or rests (set_mode), and the event that says how its
+//                motion changed (mode_change).
+// Phases 2 to 5 are in instant.cpp.
 #pragma once
 
 #include <vector>
@@ -22,17 +27,22 @@
 
 namespace vibro {
 
-// The contacts at an instant, and which bodies reached a reversal or a release there.
+// What the crossings of an instant decided for one pellet. A release or separation fires at the
+// root of a threshold (friction's capacity, the press between two parts), where a test of the
+// same threshold is decided by round-off: the crossing has decided it, and the pellets it pulled
+// leave their hold whatever the test says.
+struct PelletAtInstant {
+  bool reversed = false;  // its body's speed reached zero
+  bool released = false;  // its body's release or separation watch fired
+  int pulled = 0;         // the way it was pulled free (±1), or 0
+};
+
+// The contacts at an instant, and what its crossings decided per pellet.
 struct InstantContacts {
   std::vector<LimiterContact> limiters;
   std::vector<PairContact> pairs;
-  std::vector<bool> reversed;  // per pellet: its body's speed reached zero
-  std::vector<bool> released;  // per pellet: its body's release or separation watch fired
-  // A release or separation fires at the root of a threshold (friction's capacity, the press
-  // between two parts), where a test of the same threshold is decided by round-off. The crossing
-  // has decided it: these pellets leave their hold, and these pairs part, whatever the test says.
-  std::vector<int> pulled;           // per pellet: the way it was pulled free (±1), or 0
-  std::vector<PairContact> parting;  // the pairs where a body's separation watch fired
+  std::vector<PairContact> parting;      // the pairs where a body's separation watch fired
+  std::vector<PelletAtInstant> pellets;  // one per pellet of the model
 };
 
 // What an instant leaves behind.

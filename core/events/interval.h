@@ -37,6 +37,21 @@ class MotionInterval {
   double first_integral_residual(const Vec& y) const;
 
  private:
+  // A body's own watches: a sliding one's reversal and next limiter (and its first integral,
+  // where one applies), a held one's release if a force can pull it, each cut's separation.
+  void add_body_watches(int b, const std::vector<bool>& armed, const Vec& y,
+                        const PlaceRadii& radii);
+  // A body that starts from rest starts on its reversal watch's root: watched in its deflated
+  // form, which starts at the acceleration s·φ̈ > 0, a turn back within the first step is found.
+  void deflate_reversals_from_rest(double t, const Vec& y, const Vec& dydt);
+  // The bilateral law's kink: the normal force's sign, watched from the side it starts on, or,
+  // starting on its root (the kink just passed), from the side it moves to.
+  void add_normal_watches(double t, const Vec& y, const Vec& dydt);
+  // Gaps between neighbours in different bodies; one that starts touching (within `contact`,
+  // rad) is watched deflated, a parting speed within v_eps (rad/s) taken as none.
+  void add_gap_watches(const std::vector<Neighbours>& neighbours, double t, const Vec& y,
+                       const Vec& dydt, double contact, double v_eps);
+
   const Model& model_;
   std::vector<Body> bodies_;
   std::vector<Watch> watches_;
