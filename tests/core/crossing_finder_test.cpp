@@ -86,10 +86,13 @@ struct Finder {
   CrossingFinder finder;
 
   // Starts at the step's start and searches it at `inside` evenly spaced samples and its end.
-  std::vector<Crossing> search(const ToyStep& step, int inside, double rtol = 1e-9) {
-    finder.start(watches, model, bodies, step.t_prev(), step.state(step.t_prev()), rtol,
-                 1e-3 * rtol);
+  std::vector<Crossing> search(const ToyStep& step, int inside) {
+    begin(step);
     return next(step, inside);
+  }
+  // Starts an interval at the step's start, at rtol 1e-9.
+  void begin(const ToyStep& step) {
+    finder.start(watches, model, bodies, step.t_prev(), step.state(step.t_prev()), 1e-9, 1e-12);
   }
   // Searches a step that follows the last one.
   std::vector<Crossing> next(const ToyStep& step, int inside) {
@@ -175,6 +178,20 @@ TEST(CrossingFinder, AWatchThatStartsOnItsRootArmsOnlyOnceItIsPositive) {
       f.next(ToyStep::polynomial(0.5, 1.5, {0.25, 0.0, -1.0}, false), 3);
   ASSERT_EQ(found.size(), 1u);
   EXPECT_NEAR(found[0].t, 1.0, 4.0 * kEps);
+}
+
+TEST(CrossingFinder, AStepIsCalmWhereTheWatchStaysFartherFromZeroThanItMoves) {
+  Finder f;
+  const ToyStep far = ToyStep::polynomial(0.0, 1.0, {1.0, 0.1}, false);
+  f.begin(far);
+  EXPECT_TRUE(f.finder.calm(f.watches, f.model, f.bodies, 0.0, 1.0, far.state(1.0)));
+  EXPECT_TRUE(f.next(far, 0).empty());
+  // 1 falling to 0.1 moves farther than it stays from zero: its samples are searched, and it
+  // reaches zero at 1.11, in the next step.
+  const ToyStep near = ToyStep::polynomial(0.0, 1.0, {1.0, -0.9}, false);
+  f.begin(near);
+  EXPECT_FALSE(f.finder.calm(f.watches, f.model, f.bodies, 0.0, 1.0, near.state(1.0)));
+  EXPECT_TRUE(f.next(near, 3).empty());
 }
 
 // The seam: the same cubic, rising at both ends of the step and dipping below zero between
