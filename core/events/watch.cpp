@@ -257,137 +257,18 @@ bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body
   return found;
 }
 
-bool CrossingFinder::scan_between(const Watch& w, const Model& model,
-                                  const std::vector<Body>& bodies, const Vec& y, double t_a,
-                                  double g_a, double t_b, double g_b, double& lo, double& hi,
-                                  double& g_lo, double& g_hi) const {
-  // Each step is the largest the bounds allow without a root; near a tangency the steps shrink
-  // geometrically, and past it they grow again, so a few dozen steps cover any interval.
-  constexpr int kMaxSteps = 1000;
-  double t = t_a, g = g_a;
-  for (int k = 0; k < kMaxSteps; ++k) {
-    const TimeBounds b = time_bounds(w, model, bodies, t);
-    const double root = std::sqrt(b.rate * b.rate + 2.0 * b.curvature * g);
-    double step =
-        b.rate + root > 0.0 ? 2.0 * g / (b.rate + root) : std::numeric_limits<double>::infinity();
-    step = std::max(step, 4.0 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(t)));
-    const double next = t + step;
-    const bool last = !(next < t_b);
-    const double g_next = last ? g_b : evaluate(w, model, bodies, next, y);
-    if (g_next <= 0.0) {
-      lo = t;
-      hi = last ? t_b : next;
-      g_lo = g;
-      g_hi = g_next;
-      return true;
+std::optional<LinearForm> linear_form(const Watch& w, const std::vector<Body>& bodies) {
+  switch (w.kind) {
+    case WatchKind::reversal:
+      return LinearForm{1, {dphi_index(w.pellet), 0}, {double(bodies[w.body].s), 0.0}, 0.0};
+    case WatchKind::limiter: {
+      const double s = bodies[w.body].s;
+      return LinearForm{1, {phi_index(w.pellet), 0}, {-s, 0.0}, s * w.target};
     }
-    if (last) return false;
-    t = next;
-    g = g_next;
-  }
-  // A touch without a crossing, to round-off; a root at the end is still the first.
-  if (!(g_b <= 0.0)) return false;
-  lo = t;
-  hi = t_b;
-  g_lo = g;
-  g_hi = g_b;
-  return true;
-}
-
-namespace {
-
-// How many times farther from its root than it moves in a step a watch must stay at both ends of
-// the step for the step's inside to go unsampled: the distance it keeps at both ends is larger
-// than its change over the step and than a step's length at its rate at either end. A root
-// inside then needs the watch to fall faster than it does at either end, on a step the error
-// control found smooth, and the rate-based predictions of `find` still look for it. Judged by
-// trust_scan (seeds 1-8, 160,000 runs against references that sample every step): with kCalm
-// 0.5, 1 and 2 the runs vouching for a wrong event (2), the estimates ten times short (22-24)
-// and the runs above what their tolerance asks (6,015-6,023) are those of sampling every step
-// (2, 24, 6,017); with 0 (no samples while both ends are positive) 30 estimates fall short.
-// 1 keeps twice the margin of the smallest clean value and saves 10-22 % of a run's time.
-constexpr double kCalm = 1.0;
-
-}  // namespace
-
-bool CrossingFinder::calm(const std::vector<Watch>& watches, const Model& model,
-                          const std::vector<Body>& bodies, double t_prev, double t, const Vec& y) {
-  const double h = t - t_prev;
-  calm_end_ = t;
-  bool all = true;
-  for (std::size_t w = 0; w < watches.size(); ++w) {
-    const Watch& watch = watches[w];
-    end_value_[w] = evaluate(watch, model, bodies, t, y);
-    bool quiet = armed_[w];
-    if (follows_motion(watch.kind)) {
-      const Closing& a = closing_[w];
-      const Closing& b = end_closing_[w] = closing(watch, model, *law_, bodies, t, y);
-      const double moves =
-          std::max({std::abs(b.value - a.value), h * std::abs(a.rate), h * std::abs(b.rate)});
-      quiet = quiet && std::min(a.value, b.value) > kCalm * moves;
-    } else if (!depends_on_time_alone(watch)) {  // scan_between bounds those over any span
-      const double g = end_value_[w];
-      quiet = quiet && std::min(last_[w], g) > kCalm * std::abs(g - last_[w]);
-    }
-    calm_[w] = quiet;
-    all = all && quiet;
-  }
-  return all;
-}
-
-std::optional<Graze> CrossingFinder::near_miss(const Watch& w, double tm, double gm, double c,
-                                               double largest, const Vec& y) const {
-  // What the tolerance leaves uncertain in the watch: its error where the steps are held to
-  // rtol·|y| + atol, ten times over (the bound an estimate keeps). A speed is held relative to
-  // the speeds of this motion; an angle relative to its distance from the bottom.
-  const double scale =
-      w.kind == WatchKind::reversal ? largest : 1.0 + angle_size(y[phi_index(w.pellet)]);
-  const double error = 10.0 * (rtol_ * scale + atol_);
-  if (!(c > 0.0) || !(std::abs(gm) < error)) return std::nullopt;
-  const Graze::Of of = w.kind == WatchKind::reversal ? Graze::Of::speed
-                       : w.kind == WatchKind::gap    ? Graze::Of::gap
-                                                     : Graze::Of::limiter;
-  // Pushed down by the error, the minimum would cross this much earlier.
-  return Graze{of,
-               w.pellet,
-               w.kind == WatchKind::limiter ? w.limiter : w.other,
-               tm,
-               std::max(t_start_, tm - std::sqrt((std::abs(gm) + error) / c)),
-               gm,
-               error};
-}
-
-std::optional<Graze> CrossingFinder::grazing_crossing(const Watch& w, double t, const Closing& at,
-                                                      const Vec& y) const {
-  if (!(at.rate < 0.0) || !(at.curvature > 0.0)) return std::nullopt;
-  const double overshoot = at.rate * at.rate / (2.0 * at.curvature);
-  std::optional<Graze> graze =
-      near_miss(w, t - at.rate / at.curvature, at.value - overshoot, 0.5 * at.curvature, 0.0, y);
-  if (graze) graze->t = t;  // the strike; its minimum would have come after it
-  return graze;
-}
-
-void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model,
-                           const std::vector<Body>& bodies, double t0, const Vec& y0, double rtol,
-                           double atol) {
-  t_start_ = t0;
-  law_.emplace(model);
-  rtol_ = rtol;
-  atol_ = atol;
-  largest_.assign(watches.size(), 0.0);
-  last_.resize(watches.size());
-  closing_.resize(watches.size());
-  armed_.assign(watches.size(), false);
-  calm_.assign(watches.size(), false);
-  end_value_.resize(watches.size());
-  end_closing_.resize(watches.size());
-  calm_end_ = std::numeric_limits<double>::quiet_NaN();
-  for (std::size_t w = 0; w < watches.size(); ++w) {
-    last_[w] = evaluate(watches[w], model, bodies, t0, y0);
-    if (follows_motion(watches[w].kind))
-      closing_[w] = closing(watches[w], model, *law_, bodies, t0, y0, true);
-    armed_[w] = last_[w] > 0.0;
-    largest_[w] = std::max(0.0, closing_[w].value);
+    case WatchKind::gap:
+      return LinearForm{2, {phi_index(w.other), phi_index(w.pellet)}, {1.0, -1.0}, w.target};
+    default:
+      return std::nullopt;
   }
 }
 

@@ -1,11 +1,9 @@
-// The event functions of one segment and their root finding on the dense output (MODEL.md,
-// "Events"). Each watch is a scalar g(t) that is positive while nothing happens; its event is
-// the first time g falls to zero or below after having been positive.
+// The event functions of one segment (MODEL.md, "Events"); their roots are found by
+// core/events/crossing_finder.h. Each watch is a scalar g(t) that is positive while nothing
+// happens; its event is the first time g falls to zero or below after having been positive.
 #pragma once
 
-#include <limits>
 #include <optional>
-#include <span>
 #include <vector>
 
 #include "core/events/event.h"
@@ -112,95 +110,15 @@ struct Crossing {
   double t;
 };
 
-// Finds the first crossing of every watch over samples of each step's dense output (a watch that
-// stays far from zero over the step at the step's end alone, the rates of the watches of the
-// motion predicting a root inside from both ends), refines the earliest ones with Brent's method
-// to round-off, and returns those within `simultaneous` of the earliest, sorted by time.
-class CrossingFinder {
- public:
-  // At the start of a segment: a watch arms once it is positive, so a segment that starts on
-  // an event (g = 0, e.g. right after a reversal) does not find it again.
-  // The tolerances tell a near miss (a Graze) from a clear one.
-  void start(const std::vector<Watch>& watches, const Model& model, const std::vector<Body>& bodies,
-             double t0, const Vec& y0, double rtol, double atol);
-
-  // The earliest near miss of the run so far, if any.
-  const std::optional<Graze>& first_graze() const { return first_graze_; }
-
-  // Whether the step (t_prev, t], which ends in the state y, needs no samples inside: judged
-  // from both ends, every watch stays farther from its root than it moves in the step (by its
-  // change and its rates). Then the step's end alone is searched, and the dense output is built
-  // only if that search needs it (a watch turning, a closing prediction that falls inside). On
-  // a step that is not calm, the next `find` still skips the samples inside for each watch that
-  // is, and reuses the values at the end computed here.
-  bool calm(const std::vector<Watch>& watches, const Model& model, const std::vector<Body>& bodies,
-            double t_prev, double t, const Vec& y);
-
-  // The step (t_prev, times.back()] with the states at the sample times (increasing, the last
-  // one the step's end); `dense(t, y)` evaluates the step's dense output.
-  template <class Dense>
-  std::vector<Crossing> find(const std::vector<Watch>& watches, const Model& model,
-                             const std::vector<Body>& bodies, double t_prev,
-                             std::span<const double> times, std::span<const Vec> states,
-                             double simultaneous, Dense&& dense);
-
- private:
-  // The first root of a watch of time alone between two samples (t_a, g_a > 0) and (t_b, g_b),
-  // bracketed by steps that its bounds prove safe: a force may beat friction for less than a
-  // sample's spacing, or several times between two samples. False when there is none.
-  bool scan_between(const Watch& w, const Model& model, const std::vector<Body>& bodies,
-                    const Vec& y, double t_a, double g_a, double t_b, double g_b, double& lo,
-                    double& hi, double& g_lo, double& g_hi) const;
-
-  // The near miss of watch w with a minimum gm at tm and half its second derivative c: one
-  // when gm lies within the watch's error (relative to the largest value it had, for a speed).
-  // A minimum below zero is that of a crossing (grazing_crossing).
-  std::optional<Graze> near_miss(const Watch& w, double tm, double gm, double c, double largest,
-                                 const Vec& y) const;
-  // A gap or a way to a limiter found closing at t whose approach slows so much (`at` holds its
-  // rate and curvature there) that, not stopped, it would turn within its error past zero:
-  // whether it strikes at all is decided below the tolerance, as for a near miss on the other
-  // side. At rtol 1e-8 the grazing preset struck its limiter at 2.5e-4 rad/s, 3e-9 rad short of
-  // its turn, where rtol 1e-9 and a reference at 1e-13 turned away.
-  std::optional<Graze> grazing_crossing(const Watch& w, double t, const Closing& at,
-                                        const Vec& y) const;
-  // The minimum of watch w between two samples where it turned from closing (a) to opening (b),
-  // located on the dense output where its rate is zero: below zero, the bracket of a crossing
-  // the samples stepped over (true); above it, a near miss if it is one.
-  template <class Dense>
-  bool minimum_between(const Watch& w, int index, const Model& model,
-                       const std::vector<Body>& bodies, double t_a, const Closing& a, double t_b,
-                       const Closing& b, Dense& dense, double& lo, double& hi, double& g_lo,
-                       double& g_hi, std::vector<Graze>& grazes);
-
-  // From t, closing as `c` says, a crossing before t_end that the samples stepped over: its
-  // bracket, or false if there is none.
-  template <class Dense>
-  bool march(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
-             Closing c, double t_end, Dense& dense, double& lo, double& hi, double& g_lo,
-             double& g_hi);
-
-  std::vector<double> last_;
-  std::vector<Closing> closing_;  // of a watch of the motion, at the last sample
-  // What calm() found for the step ending at calm_end_: per watch, calm over it, and its value
-  // (and closing, for a watch of the motion) at the end.
-  double calm_end_ = std::numeric_limits<double>::quiet_NaN();
-  std::vector<char> calm_;
-  std::vector<double> end_value_;
-  std::vector<Closing> end_closing_;
-  std::vector<bool> armed_;
-  std::vector<double> largest_;  // of a watch of the motion this interval (a speed's scale)
-  double t_start_ = 0.0, rtol_ = 0.0, atol_ = 0.0;
-  std::optional<SlidingLaw> law_;  // the model's, for the rates of speeds
-  std::optional<Graze> first_graze_;
-  Vec scratch_, scratch_left_;  // dense states while refining roots, kept to avoid allocation
+// A watch that is a linear function of the state, g(y) = Σ weight·y[index] + constant (before
+// its deflation): reversal, limiter and gap. On a step given as polynomials its polynomial is the
+// same sum of the state's (core/events/crossing_finder.h); null for the others.
+struct LinearForm {
+  int terms = 0;
+  int index[2] = {0, 0};
+  double weight[2] = {0.0, 0.0};
+  double constant = 0.0;
 };
-
-// Brent's root finder on [a, b] with f(a) > 0 >= f(b); returns the smallest bracketing point
-// found with f <= 0, to round-off of t.
-template <class F>
-double brent_root(F&& f, double a, double b, double fa, double fb);
+std::optional<LinearForm> linear_form(const Watch& w, const std::vector<Body>& bodies);
 
 }  // namespace vibro
-
-#include "core/events/watch_inl.h"

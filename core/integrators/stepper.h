@@ -8,6 +8,7 @@
 #include <string_view>
 
 #include "core/integrators/ode.h"
+#include "core/integrators/step_view.h"
 
 namespace vibro {
 
@@ -58,10 +59,9 @@ enum class StepStatus {
   solver_failure,  // the implicit method's Newton iteration or factorisation failed repeatedly
 };
 
-class Stepper {
+// A Stepper is the StepView of its last accepted step (t_prev(), t(), dense()).
+class Stepper : public StepView {
  public:
-  virtual ~Stepper() = default;
-
   // Name of the method that took the last step ("dopri5", "dop853", "radau5").
   virtual std::string_view name() const = 0;
 
@@ -85,13 +85,8 @@ class Stepper {
   // On anything but ok, t() and y() are left at the last accepted point.
   virtual StepStatus step(double t_limit) = 0;
 
-  // The last accepted step spans [t_prev(), t()]; y() is the state at t().
-  virtual double t_prev() const = 0;
-  virtual double t() const = 0;
+  // y() is the state at t(), the end of the last accepted step [t_prev(), t()] (StepView).
   virtual const Vec& y() const = 0;
-
-  // Dense output inside the last accepted step: out = y(t) for t in [t_prev(), t()].
-  virtual void dense(double t, Vec& out) const = 0;
 
   // The state at t in the last accepted step (or a little past its end), as accurate as a step's
   // end: a step from the last step's start. Every method's dense output is of lower order than

@@ -13,6 +13,7 @@
 #include "core/analysis/lyapunov.h"
 #include "core/analysis/trust.h"
 #include "core/events/contacts.h"
+#include "core/events/crossing_finder.h"
 #include "core/events/event_tolerances.h"
 #include "core/events/instant.h"
 #include "core/events/interval.h"
@@ -327,9 +328,8 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     for (int k = first; k < m; ++k) stepper_->dense(times[k], states[k]);
     const auto sampled_times = std::span<const double>(times).subspan(first);
     const auto sampled_states = std::span<const Vec>(states).subspan(first);
-    found = finder_.find(interval.watches(), model_, interval.bodies(), a, sampled_times,
-                         sampled_states, tol_.simultaneous(b),
-                         [&](double tt, Vec& out) { stepper_->dense(tt, out); });
+    found = finder_.find(interval.watches(), model_, interval.bodies(), *stepper_, sampled_times,
+                         sampled_states, tol_.simultaneous(b));
     const double t_stop = found.empty() ? b : found.front().t;
     if (recorder_.wants_samples(a))
       record_inside(a, b, found.empty() ? std::numeric_limits<double>::infinity() : t_stop,

@@ -1,0 +1,37 @@
+// The first crossing of a polynomial over a step, for events served by a stepper whose steps are
+// polynomials (core/integrators/step_view.h). The roots are isolated between the polynomial's
+// turning points (the real roots of its derivative, found the same way, degree by degree), so two
+// roots inside one step, or a touch of zero between positive ends, are not stepped over.
+#pragma once
+
+#include <optional>
+#include <span>
+
+namespace vibro {
+
+// Polynomials up to this degree are solved; a longer series is the caller's to sample instead.
+inline constexpr int kMaxPolynomialDegree = 31;
+
+// p(τ) = Σ_k c[k]·τ^k by Horner's rule.
+double polynomial_value(std::span<const double> c, double tau);
+
+// Where p first falls to zero or below on (0, h], given p(0) > 0: a bracket [lo, hi] with
+// p(lo) > 0 >= p(hi), hi − lo within round-off of the root's time (or hi the turning point where
+// p touches zero). `minimum` receives the turning points before it where p has a local minimum
+// above zero (the near misses), in order; it may be null.
+struct PolynomialBracket {
+  double lo = 0.0, hi = 0.0, p_lo = 0.0, p_hi = 0.0;
+};
+struct PolynomialMinimum {
+  double tau = 0.0, value = 0.0, half_curvature = 0.0;
+};
+// The local minima of p inside (0, h) with p > 0 before the first crossing, at most
+// kMaxPolynomialDegree of them.
+struct PolynomialMinima {
+  int count = 0;
+  PolynomialMinimum at[kMaxPolynomialDegree];
+};
+std::optional<PolynomialBracket> first_polynomial_crossing(std::span<const double> c, double h,
+                                                           PolynomialMinima* minima = nullptr);
+
+}  // namespace vibro
