@@ -375,7 +375,7 @@ is the run's, and only the estimate learns what the start does.
 Two speed rules were chosen by `trust_scan` over seeds 1–8 (160,000 runs) and hold no wrong event
 vouched for. *Calm steps*: a watch that stays farther from its root, at both ends of a step, than
 it moves in the step is searched at the step's end alone (`CrossingFinder::calm`, `kCalm` = 1 in
-core/events/watch.cpp, chosen against references that search inside every step,
+core/events/crossing_finder.cpp, chosen against references that search inside every step,
 `SimOptions::sample_every_step`); every preset lists the same events with and without it
 (`EveryPreset.CalmStepsFindTheSameEvents`). *A reversal keeps the step size*: at an instant of
 reversals alone the explicit methods go on with the step their controller proposed
