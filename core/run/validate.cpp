@@ -52,7 +52,7 @@ std::optional<FieldError> validate_state(const std::string& field, double phi, d
   return check_range(field + ".dphi", dphi, -kMaxStartSpeed, kMaxStartSpeed);
 }
 
-std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits) {
+std::optional<FieldError> validate_model(const Model& m, const Limits& limits) {
   if (auto e = check_range("model.g", m.g, 0.0, 1e4)) return e;
   if (auto e = check_range("model.R", m.R, 0.0, 1e6, true)) return e;
   if (auto e = check_range("model.alpha0", m.alpha0, 0.0, std::numbers::pi / 2, false, true))
@@ -69,8 +69,8 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
   if (auto e = check_range("model.k_c", m.k_c, 0.0, 1.0)) return e;
 
   const int n = m.size();
-  if (n < 1 || n > limits.max_pellets) {
-    return FieldError{"model.pellets", "must list 1 to " + std::to_string(limits.max_pellets) +
+  if (n < 1 || n > limits.pellets) {
+    return FieldError{"model.pellets", "must list 1 to " + std::to_string(limits.pellets) +
                                            " pellets, got " + std::to_string(n)};
   }
   for (int i = 0; i < n; ++i) {
@@ -94,8 +94,8 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
   }
 
   const int nl = static_cast<int>(m.limiters.size());
-  if (nl > limits.max_limiters) {
-    return FieldError{"model.limiters", "at most " + std::to_string(limits.max_limiters) +
+  if (nl > limits.limiters) {
+    return FieldError{"model.limiters", "at most " + std::to_string(limits.limiters) +
                                             " limiters, got " + std::to_string(nl)};
   }
   for (int i = 0; i < nl; ++i) {
@@ -144,9 +144,8 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
   return std::nullopt;
 }
 
-std::optional<FieldError> validate_options(const SimOptions& o, int pellets,
-                                           const SimLimits& limits) {
-  if (auto e = check_range("t_end", o.t_end, 0.0, limits.max_t_end, true)) return e;
+std::optional<FieldError> validate_options(const SimOptions& o, int pellets, const Limits& limits) {
+  if (auto e = check_range("t_end", o.t_end, 0.0, limits.t_end, true)) return e;
   if (auto e = check_range("solver.rtol", o.rtol, 1e-14, 0.1)) return e;
   if (auto e = check_range("solver.atol", o.atol, 1e-16, 1.0)) return e;
   if (!o.record.empty() && static_cast<int>(o.record.size()) != pellets) {
