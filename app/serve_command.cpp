@@ -6,6 +6,7 @@
 
 #include "app/commands.h"
 #include "app/usage.h"
+#include "render/figure_size.h"
 #include "server/config.h"
 #include "server/service.h"
 #include "server/stop_signals.h"
@@ -42,6 +43,8 @@ void add_integer_flag(CLI::App& serve, const std::string& name, const std::strin
 
 void add_flags(CLI::App& serve, server::ServerConfig& c) {
   server::Limits& l = c.limits;
+  // The server only tightens the core's limits: each flag's largest value is the core's.
+  const vibro::Limits core;
   serve.add_option("--host", c.host, "address to listen on (default 127.0.0.1, loopback only)")
       ->type_name("ADDRESS");
   add_integer_flag(serve, "--port", "TCP port (default 8080; 0 picks a free one)", c.port, 0,
@@ -74,7 +77,7 @@ void add_flags(CLI::App& serve, server::ServerConfig& c) {
   add_integer_flag(serve, "--max-body", "request body, bytes (default 65536)", l.body_bytes, 1024,
                    64 << 20);
   serve.add_option("--max-t-end", l.t_end, "simulated time span, s (default 1000)")
-      ->check(number_in(1, 1e6))
+      ->check(number_in(1, core.t_end))
       ->type_name("S");
   add_integer_flag(serve, "--max-events", "events per run (default 20000)", l.events, 1, 1e7);
   add_integer_flag(serve, "--max-steps", "integrator steps per run (default 2000000)", l.steps, 1,
@@ -85,13 +88,17 @@ void add_flags(CLI::App& serve, server::ServerConfig& c) {
   serve.add_option("--deadline-ms", l.deadline_ms, "wall clock per simulation, ms (default 2000)")
       ->check(number_in(1, 6e5))
       ->type_name("MS");
-  add_integer_flag(serve, "--max-width", "image width, px (default 4000)", l.width, 64, 8192);
-  add_integer_flag(serve, "--max-height", "image height, px (default 4000)", l.height, 64, 8192);
+  add_integer_flag(serve, "--max-width", "image width, px (default 4000)", l.width, kMinFigureSide,
+                   core.width);
+  add_integer_flag(serve, "--max-height", "image height, px (default 4000)", l.height,
+                   kMinFigureSide, core.height);
   add_integer_flag(serve, "--max-pixels", "image width × height (default 8000000)", l.pixels, 4096,
-                   4e7);
-  add_integer_flag(serve, "--max-pellets", "pellets per scene (default 8)", l.pellets, 1, 64);
-  add_integer_flag(serve, "--max-limiters", "limiters per scene (default 16)", l.limiters, 0, 256);
-  add_integer_flag(serve, "--max-plots", "plots per image (default 8)", l.plots, 1, 16);
+                   core.pixels);
+  add_integer_flag(serve, "--max-pellets", "pellets per scene (default 8)", l.pellets, 1,
+                   core.pellets);
+  add_integer_flag(serve, "--max-limiters", "limiters per scene (default 16)", l.limiters, 0,
+                   core.limiters);
+  add_integer_flag(serve, "--max-plots", "plots per image (default 8)", l.plots, 1, core.plots);
   add_integer_flag(serve, "--sweep-jobs", "sweeps running at once (default 1)", c.sweep_jobs, 1,
                    64);
   add_integer_flag(serve, "--sweep-threads", "threads of one sweep (default 1)", c.sweep_threads, 1,

@@ -2,9 +2,10 @@
 
 namespace vibro {
 
-std::optional<FieldError> validate_orbit_request(const Model& model, const OrbitRequest& request) {
-  if (auto e = validate_orbit(model, request.orbit)) return e;
-  if (request.continuation) return validate_continuation(model, *request.continuation);
+std::optional<FieldError> validate_orbit_request(const Model& model, const OrbitRequest& request,
+                                                 const Limits& limits) {
+  if (auto e = validate_orbit(model, request.orbit, limits)) return e;
+  if (request.continuation) return validate_continuation(model, *request.continuation, limits);
   return std::nullopt;
 }
 

@@ -21,8 +21,10 @@ struct OrbitRequest {
 };
 
 // Why the request cannot run on this model, naming the field ("periodic_orbit.periods",
-// "model.pellets" when nothing is forced, "periodic_orbit.continuation.to", ...).
-std::optional<FieldError> validate_orbit_request(const Model& model, const OrbitRequest& request);
+// "model.pellets" when nothing is forced, "periodic_orbit.continuation.to", ...): the orbit and
+// the continuation each checked against `limits`.
+std::optional<FieldError> validate_orbit_request(const Model& model, const OrbitRequest& request,
+                                                 const Limits& limits = {});
 
 struct OrbitResult {
   PeriodicOrbit orbit;

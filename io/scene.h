@@ -7,6 +7,7 @@
 
 #include "core/analysis/sweep.h"
 #include "core/model/model.h"
+#include "core/run/limits.h"
 #include "core/run/sim_options.h"
 #include "io/orbit_request.h"
 #include "render/plot_spec.h"
@@ -27,13 +28,10 @@ struct Scene {
   std::optional<OrbitRequest> periodic_orbit;
 };
 
-// Bounds on what a scene may ask; the server tightens them.
-struct SceneLimits {
-  SimLimits sim;
-  int max_plots = 8;
-  int max_width = 4096;
-  int max_height = 4096;
-  int max_depth = 16;  // JSON nesting
-};
+// Why the scene cannot run, naming the field: each of its parts checked against `limits`, in
+// this order: the figure's sides (render/figure_size.h), the model, the run's options, the sweep
+// and the periodic-orbit request. The figure's pixels and plots are checked when it is drawn
+// (render/figure.h, validate_figure): a scene that is only simulated needs no image.
+std::optional<FieldError> validate_scene(const Scene& scene, const Limits& limits = {});
 
 }  // namespace vibro

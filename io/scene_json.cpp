@@ -54,7 +54,7 @@ Limiter read_limiter(const json& j, const std::string& path, int pellets) {
   return l;
 }
 
-Model read_model(const json& j, const SceneLimits& limits) {
+Model read_model(const json& j, const Limits& limits) {
   Fields f(j, "model");
   Model m;
   m.g = f.number("g", 9.81);
@@ -71,15 +71,15 @@ Model read_model(const json& j, const SceneLimits& limits) {
       throw FieldException("model.friction",
                            "must be \"paper\" or \"bilateral\", got \"" + *law + "\"");
   }
-  const json* pellets = f.array("pellets", limits.sim.max_pellets);
+  const json* pellets = f.array("pellets", limits.pellets);
   if (!pellets || pellets->empty()) {
     throw FieldException("model.pellets",
-                         "must list 1 to " + std::to_string(limits.sim.max_pellets) + " pellets");
+                         "must list 1 to " + std::to_string(limits.pellets) + " pellets");
   }
   for (std::size_t i = 0; i < pellets->size(); ++i) {
     m.pellets.push_back(read_pellet((*pellets)[i], item("model.pellets", i)));
   }
-  if (const json* limiters = f.array("limiters", limits.sim.max_limiters)) {
+  if (const json* limiters = f.array("limiters", limits.limiters)) {
     for (std::size_t i = 0; i < limiters->size(); ++i) {
       m.limiters.push_back(read_limiter((*limiters)[i], item("model.limiters", i), m.size()));
     }
@@ -234,7 +234,7 @@ int text_depth(std::string_view text) {
 
 }  // namespace
 
-SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
+SceneOrError scene_from_json(const json& j, const Limits& limits) {
   try {
     Fields f(j, "");
     Scene s;
@@ -256,7 +256,7 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
     if (const json* solver = f.value("solver")) read_solver(*solver, s.sim);
     s.trajectories = f.boolean("trajectories", false);
     s.sim.lyapunov = f.boolean("lyapunov", false);
-    if (const json* plots = f.array("plots", limits.max_plots)) {
+    if (const json* plots = f.array("plots", limits.plots)) {
       for (std::size_t i = 0; i < plots->size(); ++i)
         s.figure.plots.push_back(
             read_plot((*plots)[i], item("plots", i), s.model.size(), s.sim.t_end));
@@ -265,19 +265,9 @@ SceneOrError scene_from_json(const json& j, const SceneLimits& limits) {
     if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
     if (const json* sweep = f.value("sweep")) s.sweep = read_sweep(*sweep);
     if (const json* orbit = f.value("periodic_orbit"))
-      s.periodic_orbit = read_orbit_request(*orbit, limits.sim.max_pellets);
+      s.periodic_orbit = read_orbit_request(*orbit, limits.pellets);
     f.done();
-    if (s.figure.width < 64 || s.figure.width > limits.max_width)
-      throw FieldException("width", "must be in [64, " + std::to_string(limits.max_width) + "] px");
-    if (s.figure.height < 64 || s.figure.height > limits.max_height)
-      throw FieldException("height",
-                           "must be in [64, " + std::to_string(limits.max_height) + "] px");
-    if (auto e = validate_model(s.model, limits.sim)) return *e;
-    if (auto e = validate_options(s.sim, s.model.size(), limits.sim)) return *e;
-    if (s.sweep)
-      if (auto e = validate_sweep(s.model, *s.sweep)) return *e;
-    if (s.periodic_orbit)
-      if (auto e = validate_orbit_request(s.model, *s.periodic_orbit)) return *e;
+    if (auto e = validate_scene(s, limits)) return *e;
     return s;
   } catch (const FieldException& e) {
     return FieldError{e.field, e.what()};
@@ -354,10 +344,10 @@ class DuplicateKeys {
 
 }  // namespace
 
-std::variant<json, FieldError> parse_scene_text(std::string_view text, const SceneLimits& limits) {
+std::variant<json, FieldError> parse_scene_text(std::string_view text, const Limits& limits) {
   // Checked before parsing, so a deep document costs no tree (and no deep recursion).
-  if (text_depth(text) > limits.max_depth) {
-    return FieldError{"scene", "nests deeper than " + std::to_string(limits.max_depth) + " levels"};
+  if (text_depth(text) > limits.depth) {
+    return FieldError{"scene", "nests deeper than " + std::to_string(limits.depth) + " levels"};
   }
   // The parser's message may quote the bytes it read: keep it printable ASCII, so that the
   // error itself is valid JSON text.
@@ -386,7 +376,7 @@ std::variant<json, FieldError> parse_scene_text(std::string_view text, const Sce
   }
 }
 
-SceneOrError scene_from_text(std::string_view text, const SceneLimits& limits) {
+SceneOrError scene_from_text(std::string_view text, const Limits& limits) {
   auto parsed = parse_scene_text(text, limits);
   if (auto* e = std::get_if<FieldError>(&parsed)) return *e;
   return scene_from_json(std::get<json>(parsed), limits);

@@ -20,8 +20,10 @@
 #include "core/analysis/sweep.h"
 #include "core/analysis/work_precision.h"
 #include "core/model/model.h"
+#include "core/run/limits.h"
 #include "core/run/result.h"
 #include "core/run/validate.h"
+#include "render/figure_size.h"
 #include "render/plot_spec.h"
 
 namespace vibro {
@@ -32,11 +34,6 @@ enum class ImageFormat { png, svg, pdf };
 std::optional<ImageFormat> image_format_named(std::string_view name);
 // The format a file name asks for by its extension (".png", ".svg", ".pdf"), or nothing.
 std::optional<ImageFormat> image_format_of_file(std::string_view path);
-
-inline constexpr int kMaxFigureSide = 8192;           // pixels, width and height each
-inline constexpr long kMaxFigurePixels = 40'000'000;  // width × height
-inline constexpr int kMinFigureSide = 64;             // smaller leaves no room for axes
-inline constexpr int kMaxPanels = 16;
 
 // Where a phase or time panel's plot lies on the image and what its axes span, so that a point
 // of the image names a state or a time: the web page starts a pellet where a portrait is clicked,
@@ -60,11 +57,12 @@ struct RenderResult {
   bool ok() const { return !error; }
 };
 
-// Checks a figure against the model before any simulation: sizes, panel count, pellet indices,
-// time windows and instants (≥ 0; the scene reader holds them to t_end), overlay points, and 3-D
-// panels (PNG only, and only in builds with 3-D).
+// Checks a figure against the model before any simulation: its size and panel count against
+// `limits` (check_figure_size, Limits::plots), pellet indices, time windows and instants (≥ 0;
+// the scene reader holds them to t_end), overlay points, and 3-D panels (PNG only, and only in
+// builds with 3-D).
 std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model& model,
-                                          ImageFormat format);
+                                          ImageFormat format, const Limits& limits = {});
 
 // Whether a sweep can be drawn as a plot of this kind, before it runs: the Lyapunov plots need
 // the exponents ("sweep.lyapunov": true), and a line of them against one parameter a 1-D sweep

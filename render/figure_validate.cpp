@@ -60,13 +60,6 @@ std::optional<FieldError> check_plot(std::size_t i, const PlotSpec& plot, const 
   return std::nullopt;
 }
 
-std::optional<FieldError> check_side(const char* field, int side) {
-  if (side >= kMinFigureSide && side <= kMaxFigureSide) return std::nullopt;
-  return FieldError{field, "must be from " + std::to_string(kMinFigureSide) + " to " +
-                               std::to_string(kMaxFigureSide) + " pixels (got " +
-                               std::to_string(side) + ")"};
-}
-
 }  // namespace
 
 std::optional<FieldError> validate_sweep_plot(PlotKind kind, const SweepSpec& spec) {
@@ -83,15 +76,11 @@ std::optional<FieldError> validate_sweep_plot(PlotKind kind, const SweepSpec& sp
 }
 
 std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model& model,
-                                          ImageFormat format) {
-  if (auto e = check_side("width", figure.width)) return e;
-  if (auto e = check_side("height", figure.height)) return e;
-  if (static_cast<long>(figure.width) * figure.height > kMaxFigurePixels)
-    return FieldError{
-        "height", "width × height must be at most " + std::to_string(kMaxFigurePixels) + " pixels"};
+                                          ImageFormat format, const Limits& limits) {
+  if (auto e = check_figure_size(figure, limits)) return e;
   if (figure.plots.empty()) return FieldError{"plots", "must list at least one plot"};
-  if (static_cast<int>(figure.plots.size()) > kMaxPanels)
-    return FieldError{"plots", "must list at most " + std::to_string(kMaxPanels) + " plots"};
+  if (static_cast<int>(figure.plots.size()) > limits.plots)
+    return FieldError{"plots", "must list at most " + std::to_string(limits.plots) + " plots"};
   for (std::size_t i = 0; i < figure.plots.size(); ++i)
     if (auto e = check_plot(i, figure.plots[i], model, format)) return e;
   return std::nullopt;

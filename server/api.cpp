@@ -109,7 +109,6 @@ void send(httplib::Response& res, const CachedResponse& answer, bool hit) {
 
 Api::Api(const ServerConfig& config)
     : config_(config),
-      scene_limits_(scene_limits(config.limits)),
       preset_list_(make_preset_list()),
       web_(web_dir(config)),
       cache_(config.cache_bytes),
@@ -149,14 +148,14 @@ void Api::preset(const httplib::Request& req, httplib::Response& res) const {
 
 void Api::simulate_post(const httplib::Request& req, httplib::Response& res) {
   if (auto e = only_params(req, {"format", "what"})) return send_error(res, *e);
-  SceneOrApiError scene = scene_from_body(req, scene_limits_);
+  SceneOrApiError scene = scene_from_body(req, config_.limits);
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   simulate(std::get<Scene>(scene), req, res);
 }
 
 void Api::simulate_get(const httplib::Request& req, httplib::Response& res) {
   SceneOrApiError scene = scene_from_query(
-      req, scene_limits_,
+      req, config_.limits,
       {"t_end", "method", "rtol", "atol", "trajectories", "check", "format", "what"});
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   simulate(std::get<Scene>(scene), req, res);
@@ -164,14 +163,14 @@ void Api::simulate_get(const httplib::Request& req, httplib::Response& res) {
 
 void Api::render_post(const httplib::Request& req, httplib::Response& res) {
   if (auto e = only_params(req, {"format"})) return send_error(res, *e);
-  SceneOrApiError scene = scene_from_body(req, scene_limits_);
+  SceneOrApiError scene = scene_from_body(req, config_.limits);
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   render(std::get<Scene>(scene), req, res);
 }
 
 void Api::render_get(const httplib::Request& req, httplib::Response& res) {
   SceneOrApiError scene =
-      scene_from_query(req, scene_limits_,
+      scene_from_query(req, config_.limits,
                        {"format", "t_end", "width", "height", "pellet", "method", "rtol", "atol"});
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   render(std::get<Scene>(scene), req, res);
@@ -185,7 +184,7 @@ void Api::work_precision_post(const httplib::Request& req, httplib::Response& re
     if (auto* e = std::get_if<ApiError>(&format)) return send_error(res, *e);
     image = std::get<ImageFormat>(format);
   }
-  SceneOrApiError scene = scene_from_body(req, scene_limits_);
+  SceneOrApiError scene = scene_from_body(req, config_.limits);
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   auto produced =
       run_on_worker([scene = std::get<Scene>(std::move(scene)), image,
@@ -247,7 +246,7 @@ void send_status(httplib::Response& res, const JobStatus& s) {
 
 void Api::sweep_post(const httplib::Request& req, httplib::Response& res) {
   if (auto e = only_params(req, {})) return send_error(res, *e);
-  SceneOrApiError parsed = scene_from_body(req, scene_limits_);
+  SceneOrApiError parsed = scene_from_body(req, config_.limits);
   if (auto* e = std::get_if<ApiError>(&parsed)) return send_error(res, *e);
   Scene scene = std::move(std::get<Scene>(parsed));
   if (!scene.sweep)
@@ -270,7 +269,7 @@ void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
     return send_error(
         res,
         {400, "format", "must be \"json\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
-  SceneOrApiError parsed = scene_from_body(req, scene_limits_);
+  SceneOrApiError parsed = scene_from_body(req, config_.limits);
   if (auto* e = std::get_if<ApiError>(&parsed)) return send_error(res, *e);
   Scene scene = std::move(std::get<Scene>(parsed));
   // A scene's own request was checked as it was read; the defaults are checked here.
@@ -486,7 +485,7 @@ std::optional<JobResult> Api::run_on_worker(std::function<JobResult()> job,
 }
 
 bool Api::warm_up(std::string& error) {
-  SceneOrError scene = scene_from_text(*preset_json("paper"), scene_limits_);
+  SceneOrError scene = scene_from_text(*preset_json("paper"), config_.limits);
   if (auto* e = std::get_if<FieldError>(&scene)) {
     error = e->field + ": " + e->message;
     return false;

@@ -61,7 +61,6 @@ class Api {
   std::optional<JobResult> run_on_worker(std::function<JobResult()> job, httplib::Response& res);
 
   const ServerConfig config_;
-  const SceneLimits scene_limits_;
   const std::string preset_list_;  // the JSON of GET /api/presets, made once
   StaticFiles web_;
   ResponseCache cache_;

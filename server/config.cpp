@@ -5,17 +5,6 @@
 
 namespace vibro::server {
 
-SceneLimits scene_limits(const Limits& limits) {
-  SceneLimits s;
-  s.sim.max_pellets = limits.pellets;
-  s.sim.max_limiters = limits.limiters;
-  s.sim.max_t_end = limits.t_end;
-  s.max_plots = limits.plots;
-  s.max_width = limits.width;
-  s.max_height = limits.height;
-  return s;
-}
-
 nlohmann::json limits_json(const Limits& limits) {
   return {{"body_bytes", limits.body_bytes},
           {"t_end", limits.t_end},

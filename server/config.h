@@ -7,38 +7,31 @@
 #include <nlohmann/json.hpp>
 #include <string>
 
-#include "io/scene.h"
+#include "core/run/limits.h"
 
 namespace vibro::server {
 
-// What one request may cost. A scene over a limit that can be known up front (sizes, counts,
-// t_end) is refused before any work; the rest (events, steps, samples, wall clock) stop the run.
-struct Limits {
-  std::size_t body_bytes = 64 * 1024;  // request body
-  double t_end = 1000.0;               // s, simulated time span
-  long events = 20000;                 // events a run may list
-  long steps = 2'000'000;              // accepted plus rejected integrator steps
-  long samples = 200'000;              // trajectory points kept (all recorded pellets together)
-  double deadline_ms = 2000.0;         // wall clock of one simulation
-  int width = 4000;                    // image width, px
-  int height = 4000;                   // image height, px
-  long pixels = 8'000'000;             // width × height
-  int pellets = 8;
-  int limiters = 16;
-  int plots = 8;
-  double sweep_periods = 1e6;  // a sweep's runs × (transient + record) periods
-  // Section points one sweep may keep (40 bytes each): a stroboscopic sweep over it is refused
-  // up front, an impact-section sweep stops when it reaches it (docs/ROBUSTNESS.md, "Sweeps and
-  // memory"). Finished sweeps hold at most 4 × this many in all; the oldest go first.
-  long sweep_points = 1'000'000;
-  // Wall clock of one sweep job, s: its runs share it (each run's deadline is at most its share),
-  // a sweep that would leave a run less than 10 ms is refused up front, and one that runs past
-  // it fails.
-  double sweep_seconds = 300.0;
-  // Section points a sweep's point plot (bifurcation, section, impact map) is drawn with as SVG
-  // or PDF: each point is a mark of its own there, some 1.4 KB of memory while drawn (10^6
-  // points: 1.5 GB, and 265 MB of SVG). PNG draws any number.
-  long sweep_vector_points = 100'000;
+// The server's limits: the core's (core/run/limits.h, where each is described), tightened. A
+// scene over a limit that can be known up front (sizes, counts, t_end) is refused before any
+// work; the rest (events, steps, samples, wall clock) stop the run. The sweep budgets are checked
+// up front where they can be (server/run_scene.h, check_sweep; server/sweep_limits.h); finished
+// sweeps hold at most 4 × sweep_points section points in all, the oldest dropped first.
+struct Limits : vibro::Limits {
+  Limits() {
+    body_bytes = 64 * 1024;
+    t_end = 1000.0;
+    events = 20000;
+    steps = 2'000'000;
+    samples = 200'000;
+    deadline_ms = 2000.0;
+    width = 4000;
+    height = 4000;
+    pixels = 8'000'000;
+    sweep_periods = 1e6;
+    sweep_points = 1'000'000;
+    sweep_seconds = 300.0;
+    sweep_vector_points = 100'000;
+  }
 };
 
 struct ServerConfig {
@@ -63,9 +56,6 @@ struct ServerConfig {
   // nginx routes a job's polls to the replica that holds it; 0: alone, no prefix.
   int replica = 0;
 };
-
-// The scene reader's bounds, from the server's limits.
-SceneLimits scene_limits(const Limits& limits);
 
 // The limits as GET /api/limits shows them.
 nlohmann::json limits_json(const Limits& limits);

@@ -81,12 +81,7 @@ std::string plot_axes_header(const std::vector<PlotAxes>& axes) {
 
 std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, const Limits& limits) {
   const FigureSpec& f = scene.figure;
-  if (static_cast<long>(f.width) * f.height > limits.pixels) {
-    return ApiError{400, "width",
-                    "width × height = " + std::to_string(static_cast<long>(f.width) * f.height) +
-                        " px is over the server's limit of " + std::to_string(limits.pixels) +
-                        " px"};
-  }
+  if (auto e = check_figure_size(f, limits)) return ApiError::from(*e);
   for (std::size_t i = 0; i < f.plots.size(); ++i) {
     // A sweep is some 120 timed runs: far over one request's budget, and its timings would make
     // the same scene give different bytes.
@@ -96,7 +91,7 @@ std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, con
                       "/api/work-precision?format=png for it"};
     }
   }
-  if (auto e = validate_figure(f, scene.model, format)) return ApiError::from(*e);
+  if (auto e = validate_figure(f, scene.model, format, limits)) return ApiError::from(*e);
   return std::nullopt;
 }
 

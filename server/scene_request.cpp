@@ -74,11 +74,11 @@ std::optional<ApiError> apply_override(json& scene, const std::string& name,
 
 }  // namespace
 
-SceneOrApiError scene_from_body(const httplib::Request& req, const SceneLimits& limits) {
+SceneOrApiError scene_from_body(const httplib::Request& req, const vibro::Limits& limits) {
   return parsed(scene_from_text(req.body, limits));
 }
 
-SceneOrApiError scene_from_query(const httplib::Request& req, const SceneLimits& limits,
+SceneOrApiError scene_from_query(const httplib::Request& req, const vibro::Limits& limits,
                                  const std::vector<std::string_view>& allowed) {
   for (const auto& [name, value] : req.params) {
     if (name != "preset" && std::find(allowed.begin(), allowed.end(), name) == allowed.end()) {

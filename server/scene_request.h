@@ -15,13 +15,13 @@ namespace vibro::server {
 using SceneOrApiError = std::variant<Scene, ApiError>;
 
 // The body as a scene: 400 naming "scene" for bad JSON, else the field at fault.
-SceneOrApiError scene_from_body(const httplib::Request& req, const SceneLimits& limits);
+SceneOrApiError scene_from_body(const httplib::Request& req, const vibro::Limits& limits);
 
 // "?preset=NAME" with overrides of simple fields: t_end, method, rtol, atol, width, height,
 // pellet (every phase and cylinder plot draws that pellet) and trajectories. Only parameters in
 // `allowed` are accepted ("preset" always is); any other is an error naming it. An unknown
 // preset is a 404 naming "preset".
-SceneOrApiError scene_from_query(const httplib::Request& req, const SceneLimits& limits,
+SceneOrApiError scene_from_query(const httplib::Request& req, const vibro::Limits& limits,
                                  const std::vector<std::string_view>& allowed);
 
 }  // namespace vibro::server

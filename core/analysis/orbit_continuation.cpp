@@ -623,7 +623,8 @@ std::string_view bifurcation_kind_name(BifurcationKind kind) {
   return "fold";
 }
 
-std::optional<FieldError> validate_continuation(const Model& model, const ContinuationSpec& spec) {
+std::optional<FieldError> validate_continuation(const Model& model, const ContinuationSpec& spec,
+                                                const Limits& limits) {
   const std::string field = "periodic_orbit.continuation.";
   const std::optional<double> from = get_parameter(model, spec.parameter);
   if (!from)
@@ -633,14 +634,15 @@ std::optional<FieldError> validate_continuation(const Model& model, const Contin
     return FieldError{field + "to", "expected a finite value other than the parameter's own"};
   Model end = model;
   set_parameter(end, spec.parameter, spec.to);
-  if (auto e = validate_model(end))
+  if (auto e = validate_model(end, limits))
     return FieldError{field + "to", "makes the model invalid: " + e->field + " " + e->message};
-  if (auto e = validate_orbit(end, {}))
+  if (auto e = validate_orbit(end, {}, limits))
     if (e->field.rfind("model.", 0) == 0)
       return FieldError{field + "to",
                         "leaves no periodic orbit to seek: " + e->field + " " + e->message};
-  if (spec.max_points < 2 || spec.max_points > 10000)
-    return FieldError{field + "max_points", "expected a whole number from 2 to 10000"};
+  if (spec.max_points < 2 || spec.max_points > limits.branch_points)
+    return FieldError{field + "max_points",
+                      "expected a whole number from 2 to " + std::to_string(limits.branch_points)};
   return std::nullopt;
 }
 

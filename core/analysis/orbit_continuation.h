@@ -58,8 +58,10 @@ struct OrbitBranch {
   std::string message;   // why it stopped before, if it did
 };
 
-// Why a continuation cannot run, naming the field ("periodic_orbit.continuation.parameter", ...).
-std::optional<FieldError> validate_continuation(const Model& model, const ContinuationSpec& spec);
+// Why a continuation cannot run, naming the field ("periodic_orbit.continuation.parameter", ...);
+// max_points is held to limits.branch_points, the model at `to` to the limits of a scene's.
+std::optional<FieldError> validate_continuation(const Model& model, const ContinuationSpec& spec,
+                                                const Limits& limits = {});
 
 // Follows `start` (a converged orbit of `model`) toward spec.to. `progress` is told the share of
 // the way done (0 to 1); `cancel`, once set, stops it after the point in hand.

@@ -93,7 +93,8 @@ double forcing_period(const Model& model) {
   return 0.0;
 }
 
-std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& spec) {
+std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& spec,
+                                         const Limits& limits) {
   const double T = forcing_period(model);
   if (T == 0.0)
     return FieldError{
@@ -114,12 +115,14 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
       return FieldError{"model.limiters[" + std::to_string(l) + "].mobile",
                         "periodic orbits are sought with fixed limiters only: a mobile limiter's "
                         "armed state is not part of the section's state"};
-  if (spec.periods < 1 || spec.periods > 64)
+  if (spec.periods < 1 || spec.periods > limits.orbit_periods)
     return FieldError{"periodic_orbit.periods",
-                      "expected a whole number of forcing periods from 1 to 64"};
-  if (spec.transient < 0 || spec.transient > 100000)
+                      "expected a whole number of forcing periods from 1 to " +
+                          std::to_string(limits.orbit_periods)};
+  if (spec.transient < 0 || spec.transient > limits.orbit_transient)
     return FieldError{"periodic_orbit.transient",
-                      "expected a whole number of forcing periods from 0 to 100000"};
+                      "expected a whole number of forcing periods from 0 to " +
+                          std::to_string(limits.orbit_transient)};
   if (!spec.guess.empty() && static_cast<int>(spec.guess.size()) != model.size())
     return FieldError{"periodic_orbit.guess", "expected one {\"phi\", \"dphi\"} per pellet (" +
                                                   std::to_string(model.size()) + "), got " +
@@ -128,8 +131,9 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
     if (auto e = validate_state("periodic_orbit.guess[" + std::to_string(i) + "]",
                                 spec.guess[i].phi, spec.guess[i].dphi))
       return e;
-  if (spec.max_iterations < 1 || spec.max_iterations > 1000)
-    return FieldError{"periodic_orbit.max_iterations", "expected a whole number from 1 to 1000"};
+  if (spec.max_iterations < 1 || spec.max_iterations > limits.orbit_iterations)
+    return FieldError{"periodic_orbit.max_iterations", "expected a whole number from 1 to " +
+                                                           std::to_string(limits.orbit_iterations)};
   return std::nullopt;
 }
 

@@ -12,6 +12,7 @@
 
 #include "core/integrators/ode.h"
 #include "core/model/model.h"
+#include "core/run/limits.h"
 #include "core/run/result.h"
 #include "core/run/sim_options.h"
 #include "core/run/validate.h"
@@ -25,8 +26,11 @@ struct OrbitSpec {
   int max_iterations = 40;
 };
 
-// Why an orbit cannot be sought, naming the field ("periodic_orbit.periods", ...).
-std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& spec);
+// Why an orbit cannot be sought, naming the field ("periodic_orbit.periods", ...); periods,
+// transient and max_iterations are held to `limits` (orbit_periods, orbit_transient,
+// orbit_iterations).
+std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& spec,
+                                         const Limits& limits = {});
 
 // The forcing period T of a model whose forces share one, s (the first forced pellet's 2π/Ω).
 double forcing_period(const Model& model);

@@ -14,11 +14,6 @@
 namespace vibro {
 namespace {
 
-// Every value of a sweep is checked up front (validate_sweep): about 3 µs each for 8 pellets and
-// 16 limiters, so a million runs take some 3 s to check.
-constexpr long kMaxRuns = 1000000;
-constexpr int kMaxPeriods = 1000000;
-
 // The initial state a run starts from: the scene's, or the last state of the run before it.
 struct Start {
   std::vector<double> phi, dphi;
@@ -32,12 +27,12 @@ Model with_values(const Model& model, const SweepSpec& spec, double v, double v2
 }
 
 std::optional<FieldError> check_axis(const Model& model, const SweepAxis& axis,
-                                     const std::string& at) {
+                                     const std::string& at, const Limits& limits) {
   Model copy = model;
   if (auto why = set_parameter(copy, axis.parameter, 0.0))
     return FieldError{at + "parameter", "\"" + axis.parameter + "\" " + *why};
-  if (axis.count < 1 || axis.count > kMaxRuns)
-    return FieldError{at + "count", "must be from 1 to " + std::to_string(kMaxRuns)};
+  if (axis.count < 1 || axis.count > limits.sweep_runs)
+    return FieldError{at + "count", "must be from 1 to " + std::to_string(limits.sweep_runs)};
   if (!std::isfinite(axis.from)) return FieldError{at + "from", "must be a finite number"};
   if (!std::isfinite(axis.to)) return FieldError{at + "to", "must be a finite number"};
   if (axis.to < axis.from) return FieldError{at + "to", "must not be below " + at + "from"};
@@ -47,8 +42,9 @@ std::optional<FieldError> check_axis(const Model& model, const SweepAxis& axis,
 // Why the model at one value (pair) of the sweep is not one a scene of its own could hold: the
 // model's error, named by the swept parameter's path (the first axis's, unless the failing field
 // is the second's) and with the values in its message; or a stroboscopic section without forcing.
-std::optional<FieldError> check_value(const Model& m, const SweepSpec& spec, double v, double v2) {
-  std::optional<FieldError> e = validate_model(m);
+std::optional<FieldError> check_value(const Model& m, const SweepSpec& spec, double v, double v2,
+                                      const Limits& limits) {
+  std::optional<FieldError> e = validate_model(m, limits);
   if (!e) {
     if (spec.section == SectionKind::stroboscopic &&
         std::none_of(m.pellets.begin(), m.pellets.end(),
@@ -74,7 +70,8 @@ std::optional<FieldError> check_value(const Model& m, const SweepSpec& spec, dou
 // Every value (pair) of the sweep, each model checked as a scene of its own would be: the checks
 // are not all ranges (pellets and limiters must not coincide mod 2π, a stroboscopic section
 // needs forcing), so the ends alone do not vouch for the values between them.
-std::optional<FieldError> check_every_value(const Model& model, const SweepSpec& spec) {
+std::optional<FieldError> check_every_value(const Model& model, const SweepSpec& spec,
+                                            const Limits& limits) {
   const SweepAxis one{"", 0.0, 0.0, 1};
   const SweepAxis& a2 = spec.axis2 ? *spec.axis2 : one;
   // An axis from a value to itself has one value however many runs it makes.
@@ -89,7 +86,7 @@ std::optional<FieldError> check_every_value(const Model& model, const SweepSpec&
     for (int i = 0; i < n; ++i) {
       const double v = spec.axis.value(i);
       *x = v;
-      if (auto e = check_value(m, spec, v, v2)) return e;
+      if (auto e = check_value(m, spec, v, v2, limits)) return e;
     }
   }
   return std::nullopt;
@@ -252,25 +249,26 @@ long sweep_runs(const SweepSpec& spec) {
   return per_start * directions * spec.initial_states;
 }
 
-std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& spec) {
-  if (auto e = check_axis(model, spec.axis, "sweep.")) return e;
+std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& spec,
+                                         const Limits& limits) {
+  if (auto e = check_axis(model, spec.axis, "sweep.", limits)) return e;
   if (spec.axis2) {
-    if (auto e = check_axis(model, *spec.axis2, "sweep.parameter2.")) return e;
+    if (auto e = check_axis(model, *spec.axis2, "sweep.parameter2.", limits)) return e;
     if (spec.axis2->parameter == spec.axis.parameter)
       return FieldError{"sweep.parameter2.parameter", "must differ from sweep.parameter"};
   }
-  if (spec.transient < 0 || spec.transient > kMaxPeriods)
-    return FieldError{"sweep.transient",
-                      "must be from 0 to " + std::to_string(kMaxPeriods) + " periods"};
-  if (spec.record < 1 || spec.record > kMaxPeriods)
-    return FieldError{"sweep.record",
-                      "must be from 1 to " + std::to_string(kMaxPeriods) + " periods"};
-  if (spec.initial_states < 1 || spec.initial_states > 1000)
-    return FieldError{"sweep.initial_states", "must be from 1 to 1000"};
-  if (sweep_runs(spec) > kMaxRuns)
-    return FieldError{"sweep.count",
-                      "the sweep would make more than " + std::to_string(kMaxRuns) + " runs"};
-  return check_every_value(model, spec);
+  const std::string periods = std::to_string(limits.sweep_run_periods) + " periods";
+  if (spec.transient < 0 || spec.transient > limits.sweep_run_periods)
+    return FieldError{"sweep.transient", "must be from 0 to " + periods};
+  if (spec.record < 1 || spec.record > limits.sweep_run_periods)
+    return FieldError{"sweep.record", "must be from 1 to " + periods};
+  if (spec.initial_states < 1 || spec.initial_states > limits.sweep_starts)
+    return FieldError{"sweep.initial_states",
+                      "must be from 1 to " + std::to_string(limits.sweep_starts)};
+  if (sweep_runs(spec) > limits.sweep_runs)
+    return FieldError{"sweep.count", "the sweep would make more than " +
+                                         std::to_string(limits.sweep_runs) + " runs"};
+  return check_every_value(model, spec, limits);
 }
 
 int sweep_chain_count(const SweepSpec& spec) {

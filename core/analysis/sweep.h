@@ -13,6 +13,7 @@
 #include <vector>
 
 #include "core/model/model.h"
+#include "core/run/limits.h"
 #include "core/run/result.h"
 #include "core/run/sim_options.h"
 #include "core/run/validate.h"
@@ -56,8 +57,10 @@ struct SweepSpec {
 // field that a swept value makes invalid: every value (every pair of a 2-D sweep) must make a
 // model that passes validate_model, as a scene of its own would, and the message names the
 // value. The swept parameter's path is the field, unless the model's failing field is the
-// other axis's.
-std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& spec);
+// other axis's. Counts and periods are held to `limits` (sweep_runs, sweep_run_periods,
+// sweep_starts).
+std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& spec,
+                                         const Limits& limits = {});
 
 // The period of the motion the sweep's counts are in, s, for this model.
 double sweep_period(const Model& model);
@@ -79,7 +82,7 @@ struct SectionPoint {
   double phi = 0.0;           // unwrapped
   double dphi = 0.0;          // before the impact, for the impact section
   double phase = 0.0;         // of the period at t, rad in [0, 2π)
-  std::int16_t pellet = 0;    // fewer than 2^15 pellets (SimLimits::max_pellets)
+  std::int16_t pellet = 0;    // fewer than 2^15 pellets (Limits::pellets)
   std::int16_t limiter = -1;  // impact section: the limiter struck
   bool trusted = true;        // before the run's stats.trusted_until
 };

@@ -57,11 +57,4 @@ struct SimOptions {
   bool lyapunov = false;
 };
 
-// Limits on what validate() accepts; a server tightens them.
-struct SimLimits {
-  int max_pellets = 8;
-  int max_limiters = 16;
-  double max_t_end = 1e6;
-};
-
 }  // namespace vibro

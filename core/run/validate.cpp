@@ -52,7 +52,10 @@ std::optional<FieldError> validate_state(const std::string& field, double phi, d
   return check_range(field + ".dphi", dphi, -kMaxStartSpeed, kMaxStartSpeed);
 }
 
-std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits) {
+namespace {
+
+// The model's own constants: gravity, radius, tilt, friction, the collisions' restitution.
+std::optional<FieldError> check_constants(const Model& m) {
   if (auto e = check_range("model.g", m.g, 0.0, 1e4)) return e;
   if (auto e = check_range("model.R", m.R, 0.0, 1e6, true)) return e;
   if (auto e = check_range("model.alpha0", m.alpha0, 0.0, std::numbers::pi / 2, false, true))
@@ -66,11 +69,14 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
                                           fmt(*m.mu_s)};
     }
   }
-  if (auto e = check_range("model.k_c", m.k_c, 0.0, 1.0)) return e;
+  return check_range("model.k_c", m.k_c, 0.0, 1.0);
+}
 
+// The pellets' count against limits.pellets, then each pellet's fields, and their starts apart.
+std::optional<FieldError> check_pellets(const Model& m, const Limits& limits) {
   const int n = m.size();
-  if (n < 1 || n > limits.max_pellets) {
-    return FieldError{"model.pellets", "must list 1 to " + std::to_string(limits.max_pellets) +
+  if (n < 1 || n > limits.pellets) {
+    return FieldError{"model.pellets", "must list 1 to " + std::to_string(limits.pellets) +
                                            " pellets, got " + std::to_string(n)};
   }
   for (int i = 0; i < n; ++i) {
@@ -92,61 +98,93 @@ std::optional<FieldError> validate_model(const Model& m, const SimLimits& limits
       }
     }
   }
+  return std::nullopt;
+}
 
+// Limiter i's re-arming: a mobile one names another limiter, a fixed one none.
+std::optional<FieldError> check_rearm(const Model& m, int i) {
+  const Limiter& l = m.limiters[i];
   const int nl = static_cast<int>(m.limiters.size());
-  if (nl > limits.max_limiters) {
-    return FieldError{"model.limiters", "at most " + std::to_string(limits.max_limiters) +
+  if (l.mobile) {
+    if (l.rearm_by < 0 || l.rearm_by >= nl || l.rearm_by == i) {
+      return FieldError{limiter_field(i, "rearm_by"),
+                        "a mobile limiter needs the index of another limiter (0.." +
+                            std::to_string(nl - 1) + ", not " + std::to_string(i) +
+                            ") whose impacts re-arm it"};
+    }
+  } else if (l.rearm_by != -1) {
+    return FieldError{limiter_field(i, "rearm_by"), "applies only to a mobile limiter"};
+  }
+  return std::nullopt;
+}
+
+// Limiter i's pellets: each an index of the model's, none twice.
+std::optional<FieldError> check_limiter_pellets(const Model& m, int i) {
+  const Limiter& l = m.limiters[i];
+  const int n = m.size();
+  for (std::size_t j = 0; j < l.pellets.size(); ++j) {
+    const int p = l.pellets[j];
+    const std::string field =
+        "model.limiters[" + std::to_string(i) + "].pellets[" + std::to_string(j) + "]";
+    if (p < 0 || p >= n) {
+      return FieldError{field, "must be a pellet index in 0.." + std::to_string(n - 1) +
+                                   " (indices count from 0: pellet 1 is 0), got " +
+                                   std::to_string(p)};
+    }
+    for (std::size_t q = 0; q < j; ++q) {
+      if (l.pellets[q] == p)
+        return FieldError{field, "lists pellet " + std::to_string(p + 1) + " (index " +
+                                     std::to_string(p) + ") twice"};
+    }
+  }
+  return std::nullopt;
+}
+
+// Two limiters at one angle that stop the same pellet: which one it strikes (its k, its
+// re-arming) would be decided by their order in the list.
+std::optional<FieldError> check_limiter_apart(const Model& m, int i) {
+  const Limiter& l = m.limiters[i];
+  for (int j = 0; j < i; ++j) {
+    const Limiter& o = m.limiters[j];
+    if (std::abs(wrap_angle(l.angle - o.angle)) >= 1e-9) continue;
+    for (int p = 0; p < m.size(); ++p)
+      if (o.acts_on(p) && l.acts_on(p))
+        return FieldError{limiter_field(i, "angle"),
+                          "coincides with limiter " + std::to_string(j + 1) + " (model.limiters[" +
+                              std::to_string(j) + "]) mod 2π, and both stop pellet " +
+                              std::to_string(p + 1) + ": merge them, or list different pellets"};
+  }
+  return std::nullopt;
+}
+
+// The limiters' count against limits.limiters, then each limiter in turn.
+std::optional<FieldError> check_limiters(const Model& m, const Limits& limits) {
+  const int nl = static_cast<int>(m.limiters.size());
+  if (nl > limits.limiters) {
+    return FieldError{"model.limiters", "at most " + std::to_string(limits.limiters) +
                                             " limiters, got " + std::to_string(nl)};
   }
   for (int i = 0; i < nl; ++i) {
     const Limiter& l = m.limiters[i];
     if (auto e = check_range(limiter_field(i, "angle"), l.angle, -1e4, 1e4)) return e;
     if (auto e = check_range(limiter_field(i, "k"), l.k, 0.0, 1.0)) return e;
-    if (l.mobile) {
-      if (l.rearm_by < 0 || l.rearm_by >= nl || l.rearm_by == i) {
-        return FieldError{limiter_field(i, "rearm_by"),
-                          "a mobile limiter needs the index of another limiter (0.." +
-                              std::to_string(nl - 1) + ", not " + std::to_string(i) +
-                              ") whose impacts re-arm it"};
-      }
-    } else if (l.rearm_by != -1) {
-      return FieldError{limiter_field(i, "rearm_by"), "applies only to a mobile limiter"};
-    }
-    for (std::size_t j = 0; j < l.pellets.size(); ++j) {
-      const int p = l.pellets[j];
-      const std::string field =
-          "model.limiters[" + std::to_string(i) + "].pellets[" + std::to_string(j) + "]";
-      if (p < 0 || p >= n) {
-        return FieldError{field, "must be a pellet index in 0.." + std::to_string(n - 1) +
-                                     " (indices count from 0: pellet 1 is 0), got " +
-                                     std::to_string(p)};
-      }
-      for (std::size_t q = 0; q < j; ++q) {
-        if (l.pellets[q] == p)
-          return FieldError{field, "lists pellet " + std::to_string(p + 1) + " (index " +
-                                       std::to_string(p) + ") twice"};
-      }
-    }
-    // Two limiters at one angle that stop the same pellet: which one it strikes (its k, its
-    // re-arming) would be decided by their order in the list.
-    for (int j = 0; j < i; ++j) {
-      const Limiter& o = m.limiters[j];
-      if (std::abs(wrap_angle(l.angle - o.angle)) >= 1e-9) continue;
-      for (int p = 0; p < n; ++p)
-        if (o.acts_on(p) && l.acts_on(p))
-          return FieldError{limiter_field(i, "angle"),
-                            "coincides with limiter " + std::to_string(j + 1) +
-                                " (model.limiters[" + std::to_string(j) +
-                                "]) mod 2π, and both stop pellet " + std::to_string(p + 1) +
-                                ": merge them, or list different pellets"};
-    }
+    if (auto e = check_rearm(m, i)) return e;
+    if (auto e = check_limiter_pellets(m, i)) return e;
+    if (auto e = check_limiter_apart(m, i)) return e;
   }
   return std::nullopt;
 }
 
-std::optional<FieldError> validate_options(const SimOptions& o, int pellets,
-                                           const SimLimits& limits) {
-  if (auto e = check_range("t_end", o.t_end, 0.0, limits.max_t_end, true)) return e;
+}  // namespace
+
+std::optional<FieldError> validate_model(const Model& m, const Limits& limits) {
+  if (auto e = check_constants(m)) return e;
+  if (auto e = check_pellets(m, limits)) return e;
+  return check_limiters(m, limits);
+}
+
+std::optional<FieldError> validate_options(const SimOptions& o, int pellets, const Limits& limits) {
+  if (auto e = check_range("t_end", o.t_end, 0.0, limits.t_end, true)) return e;
   if (auto e = check_range("solver.rtol", o.rtol, 1e-14, 0.1)) return e;
   if (auto e = check_range("solver.atol", o.atol, 1e-16, 1.0)) return e;
   if (!o.record.empty() && static_cast<int>(o.record.size()) != pellets) {

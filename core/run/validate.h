@@ -1,11 +1,13 @@
-// Checks a model and options before any work: every field for finiteness and range.
-// A failure names the field the way the scene JSON spells it ("model.pellets[1].m").
+// Checks a model and options before any work: every field for finiteness and range, and the
+// counts and the time span against a Limits (core/run/limits.h). A failure names the field the
+// way the scene JSON spells it ("model.pellets[1].m").
 #pragma once
 
 #include <optional>
 #include <string>
 
 #include "core/model/model.h"
+#include "core/run/limits.h"
 #include "core/run/sim_options.h"
 
 namespace vibro {
@@ -27,8 +29,8 @@ constexpr double kMaxStartSpeed = 1e7;
 // A pellet's state {phi, dphi} checked against those bounds; the error names `field`.phi or .dphi.
 std::optional<FieldError> validate_state(const std::string& field, double phi, double dphi);
 
-std::optional<FieldError> validate_model(const Model& model, const SimLimits& limits = {});
+std::optional<FieldError> validate_model(const Model& model, const Limits& limits = {});
 std::optional<FieldError> validate_options(const SimOptions& options, int pellets,
-                                           const SimLimits& limits = {});
+                                           const Limits& limits = {});
 
 }  // namespace vibro

@@ -116,7 +116,7 @@ std::string draw_defect(const Scene& scene, const RunResult& run, ImageFormat fo
 
 // Reads, runs and draws one scene; empty when every answer keeps its contract.
 std::string scene_defect(const std::string& text, Tally& tally) {
-  SceneOrError parsed = scene_from_text(text, server::scene_limits(kServerLimits));
+  SceneOrError parsed = scene_from_text(text, kServerLimits);
   if (const auto* e = std::get_if<FieldError>(&parsed)) {
     ++tally.refused_by_reader;
     return refusal_defect(*e, "the reader", tally);

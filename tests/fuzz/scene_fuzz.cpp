@@ -30,14 +30,14 @@ void check(bool ok, const std::string& what) {
 }
 
 // Small enough that one input costs at most a few hundred milliseconds.
-SceneLimits fuzz_limits() {
-  SceneLimits limits;
-  limits.sim.max_t_end = 5.0;
-  limits.sim.max_pellets = 4;
-  limits.sim.max_limiters = 4;
-  limits.max_plots = 2;
-  limits.max_width = 256;
-  limits.max_height = 256;
+Limits fuzz_limits() {
+  Limits limits;
+  limits.t_end = 5.0;
+  limits.pellets = 4;
+  limits.limiters = 4;
+  limits.plots = 2;
+  limits.width = 256;
+  limits.height = 256;
   return limits;
 }
 

@@ -45,11 +45,37 @@ TEST_F(FigureErrors, SizeZeroOrOverTheLimit) {
   f.width = 0;
   EXPECT_EQ(field_of(f), "width");
   f.width = 1200;
-  f.height = kMaxFigureSide + 1;
+  f.height = Limits{}.height + 1;
   EXPECT_EQ(field_of(f), "height");
-  f.width = 8000;
-  f.height = 8000;  // each side allowed, the area not
-  EXPECT_EQ(field_of(f), "height");
+}
+
+// The figure's size and panel count against the Limits it is given (the server's, tightened),
+// each side within its limit and the area over its own: the error names width, as a server's
+// 400 always has.
+TEST_F(FigureErrors, SizeAgainstTightenedLimits) {
+  Limits limits;
+  limits.width = 1000;
+  limits.pixels = 500'000;
+  FigureSpec f = figure();
+  f.width = 1001;
+  f.height = 400;
+  auto error = validate_figure(f, model, ImageFormat::png, limits);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->field, "width");
+  EXPECT_EQ(error->message, "must be in [64, 1000] px");
+  f.width = 1000;
+  f.height = 600;
+  error = validate_figure(f, model, ImageFormat::png, limits);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->field, "width");
+  EXPECT_EQ(error->message, "width × height = 600000 px is over the server's limit of 500000 px");
+  f.height = 500;
+  EXPECT_FALSE(validate_figure(f, model, ImageFormat::png, limits));
+  limits.plots = 1;
+  f.plots.push_back(PlotSpec{});
+  error = validate_figure(f, model, ImageFormat::png, limits);
+  ASSERT_TRUE(error);
+  EXPECT_EQ(error->field, "plots");
 }
 
 TEST_F(FigureErrors, SvgWithA3DPanel) {
@@ -91,7 +117,7 @@ TEST_F(FigureErrors, NoPlots) {
   FigureSpec f = figure();
   f.plots.clear();
   EXPECT_EQ(field_of(f), "plots");
-  f.plots.assign(kMaxPanels + 1, PlotSpec{});
+  f.plots.assign(Limits{}.plots + 1, PlotSpec{});
   EXPECT_EQ(field_of(f), "plots");
 }
 

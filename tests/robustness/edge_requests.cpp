@@ -168,7 +168,7 @@ void check_time(const server::Limits& limits, EdgeOutcome& out) {
 
 // The scene as the server reads it, or the refusal in `out`.
 std::optional<Scene> read(const std::string& body, const server::Limits& limits, EdgeOutcome& out) {
-  SceneOrError parsed = scene_from_text(body, server::scene_limits(limits));
+  SceneOrError parsed = scene_from_text(body, limits);
   if (const FieldError* e = std::get_if<FieldError>(&parsed)) {
     out.field = e->field;
     out.message = e->message;
