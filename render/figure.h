@@ -43,8 +43,9 @@ inline constexpr int kMaxPanels = 16;
 // and moves markers over the image as it animates the run.
 enum class PlotAxesKind { phase, time };
 struct PlotAxes {
-  PlotAxesKind kind = PlotAxesKind::phase;  // phase: x φ (rad), y φ̇ (rad/s); time: x t (s), y φ
-  int pellet = -1;                  // phase: the pellet drawn
+  // phase: x φ (rad), y φ̇ (rad/s); time: x t (s), y φ (rad)
+  PlotAxesKind kind = PlotAxesKind::phase;
+  int pellet = -1;                                          // phase: the pellet drawn
   double left = 0.0, top = 0.0, width = 0.0, height = 0.0;  // the plot area, image pixels
   double x_lo = 0.0, x_hi = 0.0;                            // at the left and right edges
   double y_lo = 0.0, y_hi = 0.0;                            // at the bottom and top edges
