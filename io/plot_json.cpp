@@ -159,7 +159,7 @@ constexpr KindReader kReaders[] = {
 constexpr const char* kKinds =
     "\"phase\", \"time\", \"cylinder\", \"mechanism\" or \"work_precision\"";
 
-// The fields a window, a pellet and a title write, when not their defaults.
+// A window's fields and a phase or time plot's axis ranges, when not their defaults.
 void write_window(const TimeWindow& w, json& j) {
   if (w.t_from != 0.0) j["t_from"] = w.t_from;
   if (std::isfinite(w.t_to)) j["t_to"] = w.t_to;
