@@ -23,6 +23,7 @@
 #include "io/orbit_json.h"
 #include "io/whole_file.h"
 #include "render/orbit_figure.h"
+#include "server/run_scene.h"
 
 namespace vibro {
 namespace {
@@ -71,11 +72,12 @@ int orbit(const SceneOutput& o) {
   std::string bytes;
   if (image) {
     const std::optional<SweepResult> sweep = sweep_beneath(scene, request, bar);
-    const RenderResult drawn = render_orbit_figure(
-        scene.figure, scene.model, scene.sim,
-        {result.orbit, &result.branch, request.continuation ? &*request.continuation : nullptr,
-         sweep ? &*scene.sweep : nullptr, sweep ? &*sweep : nullptr},
-        *image);
+    const OrbitFigure figure{&result.branch,
+                             request.continuation ? &*request.continuation : nullptr,
+                             sweep ? &*scene.sweep : nullptr, sweep ? &*sweep : nullptr};
+    const RenderResult drawn = draws_branch(figure)
+                                   ? render_branch_figure(scene.figure, scene.model, figure, *image)
+                                   : server::draw_orbit_return(scene, result.orbit, *image);
     if (!drawn.ok()) {
       print_error(drawn.error->field, drawn.error->message);
       return 1;

@@ -46,7 +46,7 @@ struct SweepJob {
   Scene scene;
   std::string out;
   int threads = 1;
-  PlotSpec plot;
+  SweepPlot plot;
   std::optional<ImageFormat> image;
   std::optional<Checkpoint> resumed;  // rank 0 only
 };
@@ -80,7 +80,7 @@ std::optional<SweepJob> prepare(const SweepOptions& o, bool root, int& code) {
     print_error("--plot", std::string("must be ") + kSweepPlotNames);
     return std::nullopt;
   }
-  job.plot.kind = *kind;
+  job.plot.view = *kind;
   job.image = image_format_of_file(job.out);
   if (!job.out.empty() && !job.out.ends_with(".json") && !job.out.ends_with(".csv") && !job.image) {
     print_error("-o", "name the output OUT.json, OUT.csv, OUT.png, OUT.svg or OUT.pdf");
@@ -88,7 +88,7 @@ std::optional<SweepJob> prepare(const SweepOptions& o, bool root, int& code) {
   }
   // Before the sweep runs, not after it: a plot of what the sweep does not compute.
   if (const auto e =
-          job.image ? validate_sweep_plot(job.plot.kind, *job.scene.sweep) : std::nullopt) {
+          job.image ? validate_sweep_plot(job.plot.view, *job.scene.sweep) : std::nullopt) {
     print_error(e->field, e->message);
     return std::nullopt;
   }
@@ -123,7 +123,7 @@ int write_result(const SweepJob& job, const SweepResult& result) {
     figure.height = job.scene.figure.height;
     figure.plots = {job.plot};
     const RenderResult drawn = render_figure(figure, job.scene.model, RunResult{}, *job.image,
-                                             {nullptr, &*job.scene.sweep, &result});
+                                             {nullptr, SweepData{*job.scene.sweep, result}});
     if (!drawn.ok()) {
       print_error(drawn.error->field, drawn.error->message);
       return 1;

@@ -33,8 +33,7 @@ int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
     FigureSpec figure;
     figure.width = scene->figure.width;
     figure.height = scene->figure.height;
-    PlotSpec plot;
-    plot.kind = PlotKind::work_precision;
+    WorkPrecisionPlot plot;
     if (!scene->name.empty()) plot.title = "Work-precision, " + scene->name + " scene";
     figure.plots = {plot};
     const ImageFormat format = *image_format_of_file(out);

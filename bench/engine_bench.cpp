@@ -51,8 +51,7 @@ BENCHMARK(BM_PaperSimulateSvg)->Unit(benchmark::kMillisecond);
 // creates the OSMesa context (and dlopens libOSMesa): drawn once before timing.
 void BM_Cylinder1024Png(benchmark::State& state) {
   Scene scene = preset_scene("paper");
-  PlotSpec cylinder;
-  cylinder.kind = PlotKind::cylinder;
+  CylinderPlot cylinder;
   cylinder.pellet = 0;
   scene.figure = FigureSpec{{cylinder}, 1024, 1024};
   if (!cylinder_panels_available()) {

@@ -136,4 +136,17 @@ void Fields::done() const {
   }
 }
 
+std::string item(const std::string& path, std::size_t i) {
+  return path + "[" + std::to_string(i) + "]";
+}
+
+int index_in(const nlohmann::json& v, const std::string& field, int count, const char* what) {
+  const long i = as_integer(v, field);
+  if (i < 0 || i >= count) {
+    throw FieldException(field, std::string("must be a ") + what + " index in 0.." +
+                                    std::to_string(count - 1) + ", got " + std::to_string(i));
+  }
+  return static_cast<int>(i);
+}
+
 }  // namespace vibro

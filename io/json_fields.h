@@ -52,4 +52,11 @@ inline std::string key_name(const std::string& key) { return key.empty() ? "\"\"
 double as_number(const nlohmann::json& v, const std::string& field);
 long as_integer(const nlohmann::json& v, const std::string& field);
 
+// "path[i]": the field path of an array's item.
+std::string item(const std::string& path, std::size_t i);
+
+// An index into a list of `count` (pellets, limiters) from a JSON value, naming `field` and
+// `what` if it is not one.
+int index_in(const nlohmann::json& v, const std::string& field, int count, const char* what);
+
 }  // namespace vibro

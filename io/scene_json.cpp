@@ -5,25 +5,13 @@
 
 #include "io/json_fields.h"
 #include "io/orbit_json.h"
+#include "io/plot_json.h"
 #include "io/sweep_json.h"
 
 namespace vibro {
 namespace {
 
 using nlohmann::json;
-
-std::string item(const std::string& path, std::size_t i) {
-  return path + "[" + std::to_string(i) + "]";
-}
-
-int index_in(const json& v, const std::string& field, int count, const char* what) {
-  const long i = as_integer(v, field);
-  if (i < 0 || i >= count) {
-    throw FieldException(field, std::string("must be a ") + what + " index in 0.." +
-                                    std::to_string(count - 1) + ", got " + std::to_string(i));
-  }
-  return static_cast<int>(i);
-}
 
 Pellet read_pellet(const json& j, const std::string& path) {
   Fields f(j, path);
@@ -107,108 +95,6 @@ void read_solver(const json& j, SimOptions& o) {
   f.done();
 }
 
-// An axis's [lo, hi], two finite numbers with lo < hi; nothing when the field is absent.
-std::optional<AxisLimits> axis_limits(Fields& f, const char* name) {
-  const json* list = f.array(name, 2);
-  if (!list) return std::nullopt;
-  if (list->size() != 2) throw FieldException(f.path(name), "must be [lo, hi]");
-  const double lo = as_number((*list)[0], item(f.path(name), 0));
-  const double hi = as_number((*list)[1], item(f.path(name), 1));
-  if (!(lo < hi)) throw FieldException(f.path(name), "must be [lo, hi] with lo < hi");
-  return AxisLimits{lo, hi};
-}
-
-// The instant a mechanism panel shows, in [0, t_end] s.
-double read_instant(Fields& f, double t_end) {
-  const double t = f.number("t", 0.0);
-  if (!(t >= 0.0 && t <= t_end))
-    throw FieldException(f.path("t"),
-                         "must be a time in [0, t_end] = [0, " + json(t_end).dump() + "] s");
-  return t;
-}
-
-PlotSpec read_plot(const json& j, const std::string& path, int pellets, double t_end) {
-  Fields f(j, path);
-  PlotSpec p;
-  const auto kind = f.string("kind", 32);
-  const char* kinds = "\"phase\", \"time\", \"cylinder\", \"mechanism\" or \"work_precision\"";
-  if (!kind) throw FieldException(f.path("kind"), std::string("is required: ") + kinds);
-  if (*kind == "phase")
-    p.kind = PlotKind::phase;
-  else if (*kind == "time")
-    p.kind = PlotKind::time;
-  else if (*kind == "cylinder")
-    p.kind = PlotKind::cylinder;
-  else if (*kind == "mechanism")
-    p.kind = PlotKind::mechanism;
-  else if (*kind == "work_precision")
-    p.kind = PlotKind::work_precision;
-  else
-    throw FieldException(f.path("kind"),
-                         std::string("must be ") + kinds + ", got \"" + *kind + "\"");
-
-  if (p.kind == PlotKind::time) {
-    if (const json* list = f.array("pellets", 64)) {
-      if (list->empty()) throw FieldException(f.path("pellets"), "must name at least one pellet");
-      for (std::size_t i = 0; i < list->size(); ++i)
-        p.pellets.push_back(index_in((*list)[i], item(f.path("pellets"), i), pellets, "pellet"));
-    } else {
-      for (int i = 0; i < pellets; ++i) p.pellets.push_back(i);
-    }
-    p.show_dphi = f.boolean("dphi", false);
-  } else if (p.kind == PlotKind::mechanism) {
-    // Every pellet, at one instant: no pellet to pick and no window.
-    p.t = read_instant(f, t_end);
-  } else if (p.kind != PlotKind::work_precision) {
-    if (const json* v = f.value("pellet"))
-      p.pellet = index_in(*v, f.path("pellet"), pellets, "pellet");
-  }
-  if (p.kind != PlotKind::mechanism) {
-    p.t_from = f.number("t_from", 0.0);
-    if (auto to = f.number("t_to")) p.t_to = *to;
-    if (p.t_from < 0.0) throw FieldException(f.path("t_from"), "must be ≥ 0");
-    if (!(p.t_to > p.t_from)) throw FieldException(f.path("t_to"), "must be greater than t_from");
-  }
-  if (p.kind == PlotKind::phase) {
-    if (const json* list = f.array("branches", 10000)) {
-      for (std::size_t i = 0; i < list->size(); ++i) {
-        const long b = as_integer((*list)[i], item(f.path("branches"), i));
-        if (b < 1)
-          throw FieldException(item(f.path("branches"), i), "branches are numbered from 1");
-        p.branches.push_back(static_cast<int>(b));
-      }
-    }
-    if (const json* fi = f.value("first_integral")) {
-      Fields g(*fi, f.path("first_integral"));
-      p.first_integral_through = PhasePoint{g.required_number("phi"), g.required_number("dphi")};
-      g.done();
-    }
-    p.friction_zone = f.boolean("friction_zone", false);
-    p.wrap = f.boolean("wrap", false);
-    p.branch_labels = f.boolean("labels", true);
-  }
-  if (p.kind == PlotKind::phase || p.kind == PlotKind::time) {
-    p.phi_range = axis_limits(f, "phi_range");
-    p.dphi_range = axis_limits(f, "dphi_range");
-  }
-  if (auto title = f.string("title", 200)) p.title = *title;
-  if (p.kind == PlotKind::cylinder) {
-    if (const json* cam = f.value("camera")) {
-      Fields c(*cam, f.path("camera"));
-      p.camera.azimuth_deg = c.number("azimuth", p.camera.azimuth_deg);
-      p.camera.elevation_deg = c.number("elevation", p.camera.elevation_deg);
-      p.camera.distance = c.number("distance", p.camera.distance);
-      c.done();
-      if (std::abs(p.camera.elevation_deg) > 89.0)
-        throw FieldException(c.path("elevation"), "must be in [-89, 89] degrees");
-      if (!(p.camera.distance >= 1.5 && p.camera.distance <= 50.0))
-        throw FieldException(c.path("distance"), "must be in [1.5, 50]");
-    }
-  }
-  f.done();
-  return p;
-}
-
 // The deepest nesting of arrays and objects in JSON text, strings skipped. A loop over the
 // text, not a recursion over the parsed tree: a body of 10^6 '[' overflowed the stack.
 int text_depth(std::string_view text) {
@@ -259,7 +145,7 @@ SceneOrError scene_from_json(const json& j, const Limits& limits) {
     if (const json* plots = f.array("plots", limits.plots)) {
       for (std::size_t i = 0; i < plots->size(); ++i)
         s.figure.plots.push_back(
-            read_plot((*plots)[i], item("plots", i), s.model.size(), s.sim.t_end));
+            plot_from_json((*plots)[i], item("plots", i), s.model.size(), s.sim.t_end));
     }
     if (auto w = f.integer("width")) s.figure.width = static_cast<int>(*w);
     if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
@@ -409,72 +295,7 @@ json scene_to_json(const Scene& s) {
   model["limiters"] = limiters;
 
   json plots = json::array();
-  for (const PlotSpec& p : s.figure.plots) {
-    json pj;
-    switch (p.kind) {
-      case PlotKind::phase:
-        pj["kind"] = "phase";
-        break;
-      case PlotKind::time:
-        pj["kind"] = "time";
-        break;
-      case PlotKind::cylinder:
-        pj["kind"] = "cylinder";
-        break;
-      case PlotKind::work_precision:
-        pj["kind"] = "work_precision";
-        break;
-      case PlotKind::bifurcation:
-        pj["kind"] = "bifurcation";
-        break;
-      case PlotKind::section:
-        pj["kind"] = "section";
-        break;
-      case PlotKind::impact_map:
-        pj["kind"] = "impact_map";
-        break;
-      case PlotKind::regime_map:
-        pj["kind"] = "regime_map";
-        break;
-      case PlotKind::lyapunov:
-        pj["kind"] = "lyapunov";
-        break;
-      case PlotKind::lyapunov_map:
-        pj["kind"] = "lyapunov_map";
-        break;
-      case PlotKind::branch:
-        pj["kind"] = "branch";
-        break;
-      case PlotKind::mechanism:
-        pj["kind"] = "mechanism";
-        break;
-    }
-    if (p.kind == PlotKind::time) {
-      pj["pellets"] = p.pellets;
-      if (p.show_dphi) pj["dphi"] = true;
-    } else if (p.kind == PlotKind::mechanism) {
-      pj["t"] = p.t;
-    } else if (p.kind != PlotKind::work_precision) {
-      pj["pellet"] = p.pellet;
-    }
-    if (p.t_from != 0.0) pj["t_from"] = p.t_from;
-    if (std::isfinite(p.t_to)) pj["t_to"] = p.t_to;
-    if (!p.branches.empty()) pj["branches"] = p.branches;
-    if (p.first_integral_through)
-      pj["first_integral"] = {{"phi", p.first_integral_through->phi},
-                              {"dphi", p.first_integral_through->dphi}};
-    if (p.friction_zone) pj["friction_zone"] = true;
-    if (p.wrap) pj["wrap"] = true;
-    if (!p.branch_labels) pj["labels"] = false;
-    if (p.phi_range) pj["phi_range"] = {p.phi_range->lo, p.phi_range->hi};
-    if (p.dphi_range) pj["dphi_range"] = {p.dphi_range->lo, p.dphi_range->hi};
-    if (!p.title.empty()) pj["title"] = p.title;
-    if (p.kind == PlotKind::cylinder)
-      pj["camera"] = {{"azimuth", p.camera.azimuth_deg},
-                      {"elevation", p.camera.elevation_deg},
-                      {"distance", p.camera.distance}};
-    plots.push_back(pj);
-  }
+  for (const PlotSpec& p : s.figure.plots) plots.push_back(plot_to_json(p));
   json j;
   if (!s.name.empty()) j["name"] = s.name;
   if (!s.description.empty()) j["description"] = s.description;

@@ -290,14 +290,14 @@ json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
       [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink); }));
 }
 
-std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {
-  if (name.empty()) return spec.axis2 ? PlotKind::regime_map : PlotKind::bifurcation;
-  if (name == "bifurcation") return PlotKind::bifurcation;
-  if (name == "section") return PlotKind::section;
-  if (name == "impact_map") return PlotKind::impact_map;
-  if (name == "regime_map") return PlotKind::regime_map;
-  if (name == "lyapunov") return PlotKind::lyapunov;
-  if (name == "lyapunov_map") return PlotKind::lyapunov_map;
+std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {
+  if (name.empty()) return spec.axis2 ? SweepView::regime_map : SweepView::bifurcation;
+  if (name == "bifurcation") return SweepView::bifurcation;
+  if (name == "section") return SweepView::section;
+  if (name == "impact_map") return SweepView::impact_map;
+  if (name == "regime_map") return SweepView::regime_map;
+  if (name == "lyapunov") return SweepView::lyapunov;
+  if (name == "lyapunov_map") return SweepView::lyapunov_map;
   return std::nullopt;
 }
 

@@ -40,7 +40,7 @@ std::string sweep_result_csv(const SweepResult& result);
 // 2-D sweep and the bifurcation diagram otherwise. Nothing for another name. Whether the sweep
 // can be drawn so (the Lyapunov plots need "lyapunov": true) is validate_sweep_plot's question
 // (render/figure.h).
-std::optional<PlotKind> sweep_plot_kind(const std::string& name, const SweepSpec& spec);
+std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpec& spec);
 inline constexpr const char* kSweepPlotNames =
     "\"bifurcation\", \"section\", \"impact_map\", \"regime_map\", \"lyapunov\" or "
     "\"lyapunov_map\"";

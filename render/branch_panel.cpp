@@ -15,8 +15,8 @@
 namespace vibro::render {
 namespace {
 
-double branch_y(const PlotSpec& spec, const PhasePoint& p) {
-  return spec.coordinate == SectionCoordinate::phi ? wrap_angle(p.phi) : p.dphi;
+double branch_y(SectionCoordinate coordinate, const PhasePoint& p) {
+  return coordinate == SectionCoordinate::phi ? wrap_angle(p.phi) : p.dphi;
 }
 
 struct Mark {
@@ -42,25 +42,24 @@ Mark mark_of(BifurcationKind kind) {
 
 }  // namespace
 
-Range branch_range(const OrbitBranch& branch, const PlotSpec& spec) {
+Range branch_range(const OrbitBranch& branch, int pellet, SectionCoordinate coordinate) {
   Range y;
   for (const BranchPoint& p : branch.points)
-    if (spec.pellet < static_cast<int>(p.state.size()))
-      y.include(branch_y(spec, p.state[spec.pellet]));
+    if (pellet < static_cast<int>(p.state.size())) y.include(branch_y(coordinate, p.state[pellet]));
   return y;
 }
 
-void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& branch,
-                       const PlotSpec& spec, const Style& style, std::vector<LegendEntry>& legend,
-                       Obstacles& avoid) {
+void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& branch, int pellet,
+                       SectionCoordinate coordinate, const Style& style,
+                       std::vector<LegendEntry>& legend, Obstacles& avoid) {
   const auto& points = branch.points;
-  if (points.empty() || spec.pellet >= static_cast<int>(points.front().state.size())) return;
+  if (points.empty() || pellet >= static_cast<int>(points.front().state.size())) return;
   const double dash[] = {style.px(6.0), style.px(4.0)};
   bool any_stable = false, any_unstable = false;
   std::vector<Point> line;
   // One path per stretch of one stability; a segment takes the stability of its far end.
   for (std::size_t k = 0; k < points.size(); ++k) {
-    const Point at = tr.to_pixel(points[k].value, branch_y(spec, points[k].state[spec.pellet]));
+    const Point at = tr.to_pixel(points[k].value, branch_y(coordinate, points[k].state[pellet]));
     line.push_back(at);
     const bool last = k + 1 == points.size();
     if (!last && points[k + 1].stable == points[k].stable && k > 0) continue;
@@ -85,9 +84,9 @@ void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& bran
   bool seen[4] = {false, false, false, false};
   std::vector<Rect> labels;
   for (const Bifurcation& b : branch.bifurcations) {
-    if (spec.pellet >= static_cast<int>(b.state.size())) continue;
+    if (pellet >= static_cast<int>(b.state.size())) continue;
     const Mark m = mark_of(b.kind);
-    const Point at = tr.to_pixel(b.value, branch_y(spec, b.state[spec.pellet]));
+    const Point at = tr.to_pixel(b.value, branch_y(coordinate, b.state[pellet]));
     const Point centre[] = {at};
     draw_markers(cr, centre, m.shape, style.px(5.0), m.colour, kInk, style.px(0.8));
     // Beside the mark, stepped down past the labels of bifurcations close to it.
@@ -111,13 +110,12 @@ void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& bran
   }
 }
 
-void draw_branch_panel(cairo_t* cr, const PanelInput& in) {
-  if (in.data.sweep && in.data.sweep_spec) return draw_sweep_points_panel(cr, in);
-  const OrbitBranch& branch = *in.data.branch;
+void draw_branch_panel(cairo_t* cr, const PanelInput<BranchPlot>& in, const BranchData& continued) {
+  const OrbitBranch& branch = continued.branch;
   const Style& style = in.style;
   Range x;
   for (const BranchPoint& p : branch.points) x.include(p.value);
-  Range y = branch_range(branch, in.spec);
+  Range y = branch_range(branch, in.spec.pellet, in.spec.coordinate);
   if (x.empty()) x = {-1.0, 1.0};
   if (x.span() <= 0.0) x = {x.lo - 0.5, x.lo + 0.5};
   if (y.empty()) y = {-1.0, 1.0};
@@ -125,7 +123,7 @@ void draw_branch_panel(cairo_t* cr, const PanelInput& in) {
   const bool angle = in.spec.coordinate == SectionCoordinate::phi;
   const Rect& area = in.layout.plots.front();
   const Axis ax =
-      make_axis(padded(x, 0.02), area.w, false, parameter_label(in.data.continuation->parameter));
+      make_axis(padded(x, 0.02), area.w, false, parameter_label(continued.continuation.parameter));
   const Axis ay = make_axis(
       padded(y, 0.05), area.h, angle,
       std::string(angle ? "\u03c6 at t = kT [rad]" : "\u03c6\u0307 at t = kT [rad/s]"), true);
@@ -135,7 +133,7 @@ void draw_branch_panel(cairo_t* cr, const PanelInput& in) {
   clip_to(cr, area);
   std::vector<LegendEntry> legend;
   Obstacles avoid;
-  draw_branch_curve(cr, tr, branch, in.spec, style, legend, avoid);
+  draw_branch_curve(cr, tr, branch, in.spec.pellet, in.spec.coordinate, style, legend, avoid);
   draw_legend(cr, legend, area, avoid, style);
   cairo_restore(cr);
   draw_frame(cr, tr, ax, ay, style);

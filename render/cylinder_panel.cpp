@@ -37,11 +37,10 @@ namespace {
 
 // The visible branches, numbered so that branch n gets the colour it has in the 2-D panels
 // (render/gl counts its palette from 0), and φ̇ on a padded range that the caption states.
-gl::CylinderScene cylinder_scene(const PanelInput& in) {
+gl::CylinderScene cylinder_scene(const PanelInput<CylinderPlot>& in) {
   gl::CylinderScene scene;
   Range dphi;
   for (const Branch& b : find_track(in.run, in.spec.pellet)->branches) {
-    if (!branch_selected(in.spec, b.index)) continue;
     gl::CylinderBranch branch{b.index - 1, {}};
     for (const Sample& s : clip_to_window(b.samples, in.spec.t_from, in.spec.t_to)) {
       branch.points.push_back({s.phi, s.dphi});
@@ -62,7 +61,7 @@ std::string caption(const gl::DphiRange& r) {
          " rad/s";
 }
 
-std::string default_title(const PlotSpec& spec, double t_end) {
+std::string default_title(const CylinderPlot& spec, double t_end) {
   return "Phase cylinder, pellet " + std::to_string(spec.pellet + 1) + window_suffix(spec, t_end);
 }
 
@@ -102,11 +101,11 @@ std::vector<CylinderLabel> labels_of(const gl::CylinderScene& scene, const Model
 
 }  // namespace
 
-std::vector<CylinderLabel> cylinder_labels(const PanelInput& in) {
+std::vector<CylinderLabel> cylinder_labels(const PanelInput<CylinderPlot>& in) {
   return labels_of(cylinder_scene(in), in.model, in.layout.plots.front());
 }
 
-std::optional<std::string> draw_cylinder_panel(cairo_t* cr, const PanelInput& in) {
+std::optional<std::string> draw_cylinder_panel(cairo_t* cr, const PanelInput<CylinderPlot>& in) {
   const Rect& area = in.layout.plots.front();
   const gl::CylinderScene scene = cylinder_scene(in);
   // Views larger than render/gl allows are drawn at its limit and scaled up.
@@ -136,11 +135,11 @@ std::optional<std::string> draw_cylinder_panel(cairo_t* cr, const PanelInput& in
   return std::nullopt;
 }
 #else
-std::optional<std::string> draw_cylinder_panel(cairo_t*, const PanelInput&) {
+std::optional<std::string> draw_cylinder_panel(cairo_t*, const PanelInput<CylinderPlot>&) {
   return "3-D panels are not available in this build";
 }
 
-std::vector<CylinderLabel> cylinder_labels(const PanelInput&) { return {}; }
+std::vector<CylinderLabel> cylinder_labels(const PanelInput<CylinderPlot>&) { return {}; }
 #endif
 
 }  // namespace vibro::render

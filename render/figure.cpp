@@ -7,6 +7,7 @@
 #include <cstdio>
 #include <exception>
 #include <utility>
+#include <variant>
 
 #include "render/axes.h"
 #include "render/cairo_ptr.h"
@@ -26,9 +27,10 @@ using render::CairoPtr;
 using render::SurfacePtr;
 
 // The field that names the pellets a panel draws.
-const char* pellets_field(PlotKind kind) {
-  if (kind == PlotKind::time) return "pellets";
-  return kind == PlotKind::mechanism ? "kind" : "pellet";  // a mechanism draws every pellet
+const char* pellets_field(const PlotSpec& plot) {
+  if (std::holds_alternative<TimePlot>(plot)) return "pellets";
+  // A mechanism draws every pellet.
+  return std::holds_alternative<MechanismPlot>(plot) ? "kind" : "pellet";
 }
 
 // The run must hold the track of every pellet a panel draws, and reach the instant a mechanism
@@ -40,12 +42,13 @@ std::optional<FieldError> check_tracks(const FigureSpec& figure, const Model& mo
     const std::string field = "plots[" + std::to_string(i) + "].";
     for (int pellet : render::panel_pellets(plot, model.size())) {
       if (render::find_track(run, pellet)) continue;
-      return FieldError{field + pellets_field(plot.kind),
-                        "the run recorded no trajectory for pellet " + std::to_string(pellet + 1) +
-                            "; ask for its branches"};
+      return FieldError{field + pellets_field(plot), "the run recorded no trajectory for pellet " +
+                                                         std::to_string(pellet + 1) +
+                                                         "; ask for its branches"};
     }
     const double end = run.stats.t_reached;
-    if (plot.kind == PlotKind::mechanism && plot.t > end + 1e-12 * (1.0 + end)) {
+    const auto* mechanism = std::get_if<MechanismPlot>(&plot);
+    if (mechanism && mechanism->t > end + 1e-12 * (1.0 + end)) {
       char text[96];
       std::snprintf(text, sizeof text,
                     "is after the end of the run at t = %g s: must be within [0, t_end]", end);
@@ -55,58 +58,91 @@ std::optional<FieldError> check_tracks(const FigureSpec& figure, const Model& mo
   return std::nullopt;
 }
 
-// The panel of a sweep's plot kind (bifurcation, section, impact map: a cloud of points).
-void draw_sweep_panel(cairo_t* cr, const render::PanelInput& in) {
-  if (in.spec.kind == PlotKind::regime_map)
-    render::draw_regime_map_panel(cr, in);
-  else if (in.spec.kind == PlotKind::lyapunov)
-    render::draw_lyapunov_panel(cr, in);
-  else if (in.spec.kind == PlotKind::lyapunov_map)
-    render::draw_lyapunov_map_panel(cr, in);
-  else
-    render::draw_sweep_points_panel(cr, in);
-}
+// Where and from what a panel is drawn, whatever its kind.
+struct Frame {
+  const Model& model;
+  const RunResult& run;
+  const render::PanelLayout& layout;
+  const render::Style& style;
+  std::vector<PlotAxes>* axes;
+};
+
+// Draws one panel: each kind's drawer with the data it needs, or an error naming the panel's
+// kind when that data is not given.
+struct PanelDrawer {
+  cairo_t* cr;
+  const Frame& frame;
+  const PanelData& data;
+  std::string kind_field;  // "plots[i].kind"
+
+  using Drawn = std::optional<FieldError>;
+
+  template <class Plot>
+  render::PanelInput<Plot> input(const Plot& plot) const {
+    return {plot, frame.model, frame.run, frame.layout, frame.style, frame.axes};
+  }
+  Drawn operator()(const PhasePlot& plot) const {
+    render::draw_phase_panel(cr, input(plot));
+    return std::nullopt;
+  }
+  Drawn operator()(const TimePlot& plot) const {
+    render::draw_time_panel(cr, input(plot));
+    return std::nullopt;
+  }
+  Drawn operator()(const CylinderPlot& plot) const {
+    if (auto message = render::draw_cylinder_panel(cr, input(plot)))
+      return FieldError{kind_field, *message};
+    return std::nullopt;
+  }
+  Drawn operator()(const MechanismPlot& plot) const {
+    render::draw_mechanism_panel(cr, input(plot));
+    return std::nullopt;
+  }
+  Drawn operator()(const WorkPrecisionPlot& plot) const {
+    if (!data.work_precision) return FieldError{kind_field, "needs a work-precision sweep"};
+    render::draw_work_precision_panel(cr, input(plot), *data.work_precision);
+    return std::nullopt;
+  }
+  Drawn operator()(const SweepPlot& plot) const {
+    if (!data.sweep) return FieldError{kind_field, "needs a sweep"};
+    if (auto e = validate_sweep_plot(plot.view, data.sweep->spec)) return e;
+    const SweepData& sweep = *data.sweep;
+    if (plot.view == SweepView::regime_map)
+      render::draw_regime_map_panel(cr, input(plot), sweep);
+    else if (plot.view == SweepView::lyapunov)
+      render::draw_lyapunov_panel(cr, input(plot), sweep);
+    else if (plot.view == SweepView::lyapunov_map)
+      render::draw_lyapunov_map_panel(cr, input(plot), sweep);
+    else
+      render::draw_sweep_points_panel(cr, input(plot), sweep,
+                                      data.branch ? &*data.branch : nullptr);
+    return std::nullopt;
+  }
+  Drawn operator()(const BranchPlot& plot) const {
+    if (!data.branch) return FieldError{kind_field, "needs a continued periodic motion"};
+    if (!data.sweep) {
+      render::draw_branch_panel(cr, input(plot), *data.branch);
+      return std::nullopt;
+    }
+    // Over the sweep beneath it: that sweep's bifurcation diagram with the branch drawn on it.
+    const SweepPlot diagram{SweepView::bifurcation, plot.pellet, plot.coordinate, plot.title};
+    render::draw_sweep_points_panel(cr, input(diagram), *data.sweep, &*data.branch);
+    return std::nullopt;
+  }
+};
 
 // Draws panel i of the figure with the given layout.
 std::optional<FieldError> draw_panel(cairo_t* cr, const FigureSpec& figure, std::size_t i,
-                                     const render::PanelInput& in) {
-  const PanelData& data = in.data;
-  const std::string kind_field = "plots[" + std::to_string(i) + "].kind";
-  switch (figure.plots[i].kind) {
-    case PlotKind::phase:
-      render::draw_phase_panel(cr, in);
-      break;
-    case PlotKind::time:
-      render::draw_time_panel(cr, in);
-      break;
-    case PlotKind::cylinder:
-      if (auto message = render::draw_cylinder_panel(cr, in))
-        return FieldError{kind_field, *message};
-      break;
-    case PlotKind::work_precision:
-      if (!data.work_precision) return FieldError{kind_field, "needs a work-precision sweep"};
-      render::draw_work_precision_panel(cr, in);
-      break;
-    case PlotKind::bifurcation:
-    case PlotKind::section:
-    case PlotKind::impact_map:
-    case PlotKind::regime_map:
-    case PlotKind::lyapunov:
-    case PlotKind::lyapunov_map:
-      if (!data.sweep || !data.sweep_spec) return FieldError{kind_field, "needs a sweep"};
-      if (auto e = validate_sweep_plot(figure.plots[i].kind, *data.sweep_spec)) return e;
-      draw_sweep_panel(cr, in);
-      break;
-    case PlotKind::branch:
-      if (!data.branch || !data.continuation)
-        return FieldError{kind_field, "needs a continued periodic motion"};
-      render::draw_branch_panel(cr, in);
-      break;
-    case PlotKind::mechanism:
-      render::draw_mechanism_panel(cr, in);
-      break;
-  }
-  return std::nullopt;
+                                     const Frame& frame, const PanelData& data) {
+  return std::visit(PanelDrawer{cr, frame, data, "plots[" + std::to_string(i) + "].kind"},
+                    figure.plots[i]);
+}
+
+// Whether a panel's legend may move beside or above its plot (a 3-D view and a map keep theirs).
+bool legend_movable(const PlotSpec& plot) {
+  if (std::holds_alternative<CylinderPlot>(plot)) return false;
+  const auto* sweep = std::get_if<SweepPlot>(&plot);
+  return !sweep || (sweep->view != SweepView::regime_map && sweep->view != SweepView::lyapunov_map);
 }
 
 // The same panel with room for its legend beside the plot or above it, whichever leaves the data
@@ -140,17 +176,14 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
   render::SurfacePtr scratch_surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 1, 1));
   render::CairoPtr scratch(cairo_create(scratch_surface.get()));
   for (std::size_t i = 0; i < layouts.size(); ++i) {
-    const PlotKind kind = figure.plots[i].kind;
-    const bool movable = kind != PlotKind::cylinder && kind != PlotKind::regime_map &&
-                         kind != PlotKind::lyapunov_map;
+    const bool movable = legend_movable(figure.plots[i]);
     render::LegendFit fit;
     std::vector<PlotAxes> measured;
     cairo_t* first = raster || !movable ? cr : scratch.get();
     render::watch_legends(first, &fit);
     const std::size_t axes_before = axes.size();
-    auto e = draw_panel(
-        first, figure, i,
-        {figure.plots[i], model, run, layouts[i], style, data, first == cr ? &axes : &measured});
+    auto e = draw_panel(first, figure, i,
+                        {model, run, layouts[i], style, first == cr ? &axes : &measured}, data);
     render::watch_legends(first, nullptr);
     if (e) return e;
     if (movable && fit.hid_data) {
@@ -163,12 +196,11 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
       }
       const auto [roomy, place] = with_room_for_legend(layouts[i], style, fit);
       render::place_legends(cr, place);
-      e = draw_panel(cr, figure, i, {figure.plots[i], model, run, roomy, style, data, &axes});
+      e = draw_panel(cr, figure, i, {model, run, roomy, style, &axes}, data);
       render::place_legends(cr, render::LegendPlace::inside);
       if (e) return e;
     } else if (first != cr) {
-      if (auto again = draw_panel(cr, figure, i,
-                                  {figure.plots[i], model, run, layouts[i], style, data, &axes}))
+      if (auto again = draw_panel(cr, figure, i, {model, run, layouts[i], style, &axes}, data))
         return again;
     }
     if (layouts.size() > 1) render::draw_panel_letter(cr, layouts[i].cell, i, style);

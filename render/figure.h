@@ -38,9 +38,11 @@ std::optional<ImageFormat> image_format_of_file(std::string_view path);
 // Where a phase or time panel's plot lies on the image and what its axes span, so that a point
 // of the image names a state or a time: the web page starts a pellet where a portrait is clicked,
 // and moves markers over the image as it animates the run.
+enum class PlotAxesKind { phase, time };
 struct PlotAxes {
-  PlotKind kind = PlotKind::phase;  // phase: x φ (rad), y φ̇ (rad/s); time: x t (s), y φ (rad)
-  int pellet = -1;                  // phase: the pellet drawn
+  // phase: x φ (rad), y φ̇ (rad/s); time: x t (s), y φ (rad)
+  PlotAxesKind kind = PlotAxesKind::phase;
+  int pellet = -1;                                          // phase: the pellet drawn
   double left = 0.0, top = 0.0, width = 0.0, height = 0.0;  // the plot area, image pixels
   double x_lo = 0.0, x_hi = 0.0;                            // at the left and right edges
   double y_lo = 0.0, y_hi = 0.0;                            // at the bottom and top edges
@@ -67,17 +69,27 @@ std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model&
 // Whether a sweep can be drawn as a plot of this kind, before it runs: the Lyapunov plots need
 // the exponents ("sweep.lyapunov": true), and a line of them against one parameter a 1-D sweep
 // (a 2-D one is drawn as a Lyapunov map). The field named is the sweep's.
-std::optional<FieldError> validate_sweep_plot(PlotKind kind, const SweepSpec& spec);
+std::optional<FieldError> validate_sweep_plot(SweepView view, const SweepSpec& spec);
 
-// What panels that draw more than the run draw: work-precision panels a report, bifurcation
-// panels a sweep and its spec, branch panels a continued periodic motion (and a sweep of the same
-// scene beneath it, if given; a bifurcation panel draws a given branch over its points).
+// A sweep and the spec it ran, drawn together.
+struct SweepData {
+  const SweepSpec& spec;
+  const SweepResult& result;
+};
+
+// A continued periodic motion and the continuation that made it.
+struct BranchData {
+  const OrbitBranch& branch;
+  const ContinuationSpec& continuation;
+};
+
+// What panels that draw more than the run draw, each part whole or absent: work-precision panels
+// a report, sweep panels a sweep, branch panels a continued periodic motion (over the sweep
+// beneath it, if given; a bifurcation panel draws a given branch over its points).
 struct PanelData {
   const WorkPrecisionReport* work_precision = nullptr;
-  const SweepSpec* sweep_spec = nullptr;
-  const SweepResult* sweep = nullptr;
-  const OrbitBranch* branch = nullptr;
-  const ContinuationSpec* continuation = nullptr;
+  std::optional<SweepData> sweep = std::nullopt;
+  std::optional<BranchData> branch = std::nullopt;
 };
 
 // Validates, then draws every panel. Also errors: a pellet whose track the run did not record,

@@ -1,5 +1,6 @@
 // Checks of a figure request that can be made before any simulation.
 #include <cmath>
+#include <variant>
 
 #include "render/figure.h"
 
@@ -18,35 +19,48 @@ std::optional<FieldError> check_pellet(const std::string& field, int pellet, int
                                std::to_string(pellet)};
 }
 
-std::optional<FieldError> check_plot(std::size_t i, const PlotSpec& plot, const Model& model,
-                                     ImageFormat format) {
-  if (plot.kind == PlotKind::time) {
+std::optional<FieldError> check_window(std::size_t i, const TimeWindow& w) {
+  if (!std::isfinite(w.t_from) || w.t_from < 0.0)
+    return FieldError{plot_field(i, "t_from"), "must be a finite time ≥ 0 s"};
+  if (std::isnan(w.t_to) || w.t_to <= w.t_from)
+    return FieldError{plot_field(i, "t_to"), "must be later than t_from"};
+  return std::nullopt;
+}
+
+// Each kind's checks, in the order a plot's fields are reported: its pellets, its branches, its
+// window, its instant, its overlay, its 3-D view.
+struct PlotCheck {
+  std::size_t i;
+  const Model& model;
+  ImageFormat format;
+
+  using Checked = std::optional<FieldError>;
+
+  Checked pellet(int p) const { return check_pellet(plot_field(i, "pellet"), p, model.size()); }
+  Checked operator()(const PhasePlot& plot) const {
+    if (auto e = pellet(plot.pellet)) return e;
+    for (std::size_t j = 0; j < plot.branches.size(); ++j)
+      if (plot.branches[j] < 1)
+        return FieldError{plot_field(i, "branches") + "[" + std::to_string(j) + "]",
+                          "must be a branch number ≥ 1 (branches count from 1)"};
+    if (auto e = check_window(i, plot)) return e;
+    const auto& through = plot.first_integral_through;
+    if (through && (!std::isfinite(through->phi) || !std::isfinite(through->dphi)))
+      return FieldError{plot_field(i, "first_integral_through"), "must be a finite (phi, dphi)"};
+    return std::nullopt;
+  }
+  Checked operator()(const TimePlot& plot) const {
     if (plot.pellets.empty() && model.size() == 0)
       return FieldError{plot_field(i, "pellets"), "the model has no pellets"};
     for (std::size_t j = 0; j < plot.pellets.size(); ++j) {
       const std::string field = plot_field(i, "pellets") + "[" + std::to_string(j) + "]";
       if (auto e = check_pellet(field, plot.pellets[j], model.size())) return e;
     }
-  } else if (plot.kind == PlotKind::work_precision || plot.kind == PlotKind::mechanism) {
-    // Draws the work-precision sweep, or every pellet: no pellet to check.
-  } else if (auto e = check_pellet(plot_field(i, "pellet"), plot.pellet, model.size())) {
-    return e;
+    return check_window(i, plot);
   }
-  for (std::size_t j = 0; j < plot.branches.size(); ++j)
-    if (plot.branches[j] < 1)
-      return FieldError{plot_field(i, "branches") + "[" + std::to_string(j) + "]",
-                        "must be a branch number ≥ 1 (branches count from 1)"};
-  if (!std::isfinite(plot.t_from) || plot.t_from < 0.0)
-    return FieldError{plot_field(i, "t_from"), "must be a finite time ≥ 0 s"};
-  if (std::isnan(plot.t_to) || plot.t_to <= plot.t_from)
-    return FieldError{plot_field(i, "t_to"), "must be later than t_from"};
-  // Whether t is within the run is checked against the run (render_figure).
-  if (plot.kind == PlotKind::mechanism && !(std::isfinite(plot.t) && plot.t >= 0.0))
-    return FieldError{plot_field(i, "t"), "must be a finite time ≥ 0 s, within [0, t_end]"};
-  if (plot.first_integral_through && (!std::isfinite(plot.first_integral_through->phi) ||
-                                      !std::isfinite(plot.first_integral_through->dphi)))
-    return FieldError{plot_field(i, "first_integral_through"), "must be a finite (phi, dphi)"};
-  if (plot.kind == PlotKind::cylinder) {
+  Checked operator()(const CylinderPlot& plot) const {
+    if (auto e = pellet(plot.pellet)) return e;
+    if (auto e = check_window(i, plot)) return e;
     if (format != ImageFormat::png)
       return FieldError{plot_field(i, "kind"), "3-D panels render only to PNG"};
     if (!cylinder_panels_available())
@@ -56,19 +70,30 @@ std::optional<FieldError> check_plot(std::size_t i, const PlotSpec& plot, const 
         !std::isfinite(c.distance) || c.distance <= 0.0)
       return FieldError{plot_field(i, "camera"),
                         "needs finite angles (degrees) and a distance > 0"};
+    return std::nullopt;
   }
-  return std::nullopt;
-}
+  // Every pellet, at one instant; whether t is within the run is checked against the run
+  // (render_figure).
+  Checked operator()(const MechanismPlot& plot) const {
+    if (!(std::isfinite(plot.t) && plot.t >= 0.0))
+      return FieldError{plot_field(i, "t"), "must be a finite time ≥ 0 s, within [0, t_end]"};
+    return std::nullopt;
+  }
+  // Draws the work-precision sweep: no pellet to check.
+  Checked operator()(const WorkPrecisionPlot& plot) const { return check_window(i, plot); }
+  Checked operator()(const SweepPlot& plot) const { return pellet(plot.pellet); }
+  Checked operator()(const BranchPlot& plot) const { return pellet(plot.pellet); }
+};
 
 }  // namespace
 
-std::optional<FieldError> validate_sweep_plot(PlotKind kind, const SweepSpec& spec) {
-  if (kind != PlotKind::lyapunov && kind != PlotKind::lyapunov_map) return std::nullopt;
-  const std::string name = kind == PlotKind::lyapunov ? "\"lyapunov\"" : "\"lyapunov_map\"";
+std::optional<FieldError> validate_sweep_plot(SweepView view, const SweepSpec& spec) {
+  if (view != SweepView::lyapunov && view != SweepView::lyapunov_map) return std::nullopt;
+  const std::string name = view == SweepView::lyapunov ? "\"lyapunov\"" : "\"lyapunov_map\"";
   if (!spec.lyapunov)
     return FieldError{"sweep.lyapunov", "must be true for the " + name +
                                             " plot: this sweep computed no Lyapunov exponents"};
-  if (kind == PlotKind::lyapunov && spec.axis2)
+  if (view == SweepView::lyapunov && spec.axis2)
     return FieldError{"sweep.parameter2",
                       "makes a 2-D sweep, which the \"lyapunov\" plot (one "
                       "parameter) cannot draw: draw it as \"lyapunov_map\""};
@@ -82,7 +107,7 @@ std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model&
   if (static_cast<int>(figure.plots.size()) > limits.plots)
     return FieldError{"plots", "must list at most " + std::to_string(limits.plots) + " plots"};
   for (std::size_t i = 0; i < figure.plots.size(); ++i)
-    if (auto e = check_plot(i, figure.plots[i], model, format)) return e;
+    if (auto e = std::visit(PlotCheck{i, model, format}, figure.plots[i])) return e;
   return std::nullopt;
 }
 

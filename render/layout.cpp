@@ -72,14 +72,17 @@ std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
   std::vector<PanelLayout> layouts;
   for (std::size_t i = 0; i < cells.size(); ++i) {
     const PlotSpec& plot = figure.plots[i];
-    if (plot.kind == PlotKind::cylinder || plot.kind == PlotKind::mechanism) {
+    if (std::holds_alternative<CylinderPlot>(plot) || std::holds_alternative<MechanismPlot>(plot)) {
       const Rect& c = cells[i];
       const double top = std::min(style.px(kTop), c.h - 1.0);
       layouts.push_back(
           {c, {c.x + 0.5 * c.w, c.y + style.px(kTitleTop)}, {{c.x, c.y + top, c.w, c.h - top}}});
     } else {
-      const int stacked = plot.kind == PlotKind::time && plot.show_dphi ? 2 : 1;
-      const bool map = plot.kind == PlotKind::regime_map || plot.kind == PlotKind::lyapunov_map;
+      const auto* time = std::get_if<TimePlot>(&plot);
+      const int stacked = time && time->show_dphi ? 2 : 1;
+      const auto* sweep = std::get_if<SweepPlot>(&plot);
+      const bool map =
+          sweep && (sweep->view == SweepView::regime_map || sweep->view == SweepView::lyapunov_map);
       layouts.push_back(panel_layout(cells[i], style, stacked, map ? kMapLegendColumn : 0.0));
     }
   }

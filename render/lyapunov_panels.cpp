@@ -64,18 +64,18 @@ void draw_series(cairo_t* cr, const Transform& tr, std::span<const SweepRun> run
 
 }  // namespace
 
-void draw_lyapunov_map_panel(cairo_t* cr, const PanelInput& in) {
+void draw_lyapunov_map_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep) {
   const Style& style = in.style;
   std::vector<double> values;
   bool any_held = false, any_missing = false;
-  for (const SweepRun& run : in.data.sweep->runs) {
+  for (const SweepRun& run : sweep.result.runs) {
     if (!shown_in_cell(run)) continue;
     if (finite(run)) values.push_back(*run.lyapunov);
     any_held = any_held || held(run);
     any_missing = any_missing || (!finite(run) && !held(run));
   }
   const DivergingScale scale = diverging_scale(values);
-  const CellMap map = draw_cells(cr, in, [&scale](const SweepRun& run) {
+  const CellMap map = draw_cells(cr, in, sweep, [&scale](const SweepRun& run) {
     return finite(run) ? scale.at(*run.lyapunov) : held(run) ? kHeld : kNoValue;
   });
   draw_frame(cr, map.tr, map.x, map.y, style);
@@ -97,9 +97,9 @@ void draw_lyapunov_map_panel(cairo_t* cr, const PanelInput& in) {
              style);
 }
 
-void draw_lyapunov_panel(cairo_t* cr, const PanelInput& in) {
-  const std::vector<SweepRun>& runs = in.data.sweep->runs;
-  const SweepSpec& spec = *in.data.sweep_spec;
+void draw_lyapunov_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep) {
+  const std::vector<SweepRun>& runs = sweep.result.runs;
+  const SweepSpec& spec = sweep.spec;
   const Style& style = in.style;
   Range y;
   y.include(0.0);  // the sign is the answer: the zero line is always on the plot

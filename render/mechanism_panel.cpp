@@ -229,7 +229,7 @@ Transform mechanism_frame(const Rect& area, double R) {
                    {-half * area.h / side, half * area.h / side});
 }
 
-void draw_mechanism_panel(cairo_t* cr, const PanelInput& in) {
+void draw_mechanism_panel(cairo_t* cr, const PanelInput<MechanismPlot>& in) {
   const Model& model = in.model;
   const Style& style = in.style;
   const double R = model.R, t = in.spec.t;

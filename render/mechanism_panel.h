@@ -17,6 +17,6 @@ Transform mechanism_frame(const Rect& area, double R);
 // pellets where the run had them at `spec.t` in their series colours, and the force on each forced
 // pellet at that time as a tangential arrow as long as |F| is large, with its value in N; a
 // scale bar in m. The run must have recorded every pellet up to spec.t.
-void draw_mechanism_panel(cairo_t* cr, const PanelInput& in);
+void draw_mechanism_panel(cairo_t* cr, const PanelInput<MechanismPlot>& in);
 
 }  // namespace vibro::render

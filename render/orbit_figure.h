@@ -1,7 +1,9 @@
 // The figure of a periodic motion (API.md, "Periodic motions and their stability"): with a
 // continued branch, the branch over its parameter (over the sweep's bifurcation diagram when one
 // of the same parameter is given); without, the scene's own plots of one return of the motion,
-// started on its state, so a phase portrait shows the closed orbit with its impacts.
+// started on its state, so a phase portrait shows the closed orbit with its impacts. render/
+// runs nothing: the caller runs that return (core/analysis orbit_return, planned with plan_run)
+// and draws it with render_figure.
 #pragma once
 
 #include "core/analysis/orbit_continuation.h"
@@ -11,17 +13,18 @@
 namespace vibro {
 
 struct OrbitFigure {
-  const PeriodicOrbit& orbit;
   const OrbitBranch* branch = nullptr;  // with its spec, when continued
   const ContinuationSpec* continuation = nullptr;
   const SweepSpec* sweep_spec = nullptr;  // drawn beneath the branch, if given
   const SweepResult* sweep = nullptr;
 };
 
-// `figure` is the scene's (its size, and its plots for the motion itself); `options` its run's.
-// An orbit that was not found is an error naming "periodic_orbit" with the reason.
-RenderResult render_orbit_figure(const FigureSpec& figure, const Model& model,
-                                 const SimOptions& options, const OrbitFigure& orbit,
-                                 ImageFormat format);
+// Whether the figure is the continued branch (a continuation with points); else it is one
+// return of the motion.
+bool draws_branch(const OrbitFigure& orbit);
+
+// The continued branch in one panel; `figure` is the scene's (its size). Call when draws_branch.
+RenderResult render_branch_figure(const FigureSpec& figure, const Model& model,
+                                  const OrbitFigure& orbit, ImageFormat format);
 
 }  // namespace vibro

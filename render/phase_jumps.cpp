@@ -21,7 +21,7 @@ const Branch* branch_at(const PelletTrack& track, double t) {
 }  // namespace
 
 std::vector<Jump> velocity_jumps(const PelletTrack& track, std::span<const Event> events,
-                                 const PlotSpec& spec) {
+                                 const PhasePlot& spec) {
   std::vector<Jump> jumps;
   // Branches that meet without a jump (reversals, sticks) are not impacts.
   for (std::size_t i = 1; i < track.branches.size(); ++i) {

@@ -23,7 +23,7 @@ struct Jump {
 
 // The jumps of one pellet's track inside the plot's window and branch selection.
 std::vector<Jump> velocity_jumps(const PelletTrack& track, std::span<const Event> events,
-                                 const PlotSpec& spec);
+                                 const PhasePlot& spec);
 
 // A vertical segment in pixels, from y `top` down to `bottom` at `x`.
 struct VerticalLine {

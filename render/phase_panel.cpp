@@ -52,7 +52,7 @@ void wrap_into(VisibleBranch b, std::vector<VisibleBranch>& out) {
   out[longest].labelled = true;
 }
 
-std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const PlotSpec& spec) {
+std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const PhasePlot& spec) {
   std::vector<VisibleBranch> branches;
   for (const Branch& b : track.branches) {
     if (!branch_selected(spec, b.index)) continue;
@@ -106,7 +106,7 @@ void draw_friction_zones(cairo_t* cr, const Transform& tr, double alpha0) {
   cairo_fill(cr);
 }
 
-std::string default_title(const PlotSpec& spec, double t_end) {
+std::string default_title(const PhasePlot& spec, double t_end) {
   std::string title = "Phase portrait, pellet " + std::to_string(spec.pellet + 1);
   if (!spec.branches.empty()) {
     title += spec.branches.size() == 1 ? ", motion interval " : ", motion intervals ";
@@ -118,8 +118,8 @@ std::string default_title(const PlotSpec& spec, double t_end) {
 
 }  // namespace
 
-void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
-  const PlotSpec& spec = in.spec;
+void draw_phase_panel(cairo_t* cr, const PanelInput<PhasePlot>& in) {
+  const PhasePlot& spec = in.spec;
   const Style& style = in.style;
   const Rect area = in.layout.plots.front();
   const PelletTrack& track = *find_track(in.run, spec.pellet);
@@ -144,7 +144,7 @@ void draw_phase_panel(cairo_t* cr, const PanelInput& in) {
   const Axis y = make_axis(dphi_axis, area.h, false, kDphiLabel, true);
   const Transform tr(area, x.range, y.range);
   if (in.plot_axes)
-    in.plot_axes->push_back({PlotKind::phase, spec.pellet, area.x, area.y, area.w, area.h,
+    in.plot_axes->push_back({PlotAxesKind::phase, spec.pellet, area.x, area.y, area.w, area.h,
                              x.range.lo, x.range.hi, y.range.lo, y.range.hi});
 
   draw_grid(cr, tr, x, y, style);

@@ -1,44 +1,23 @@
-// What a scene asks to be drawn: the `plots` list of API.md, as plain values.
-// The scene reader (io/) fills these; render/ draws them. Indices count from 0.
+// What a scene asks to be drawn: the `plots` list of API.md, as plain values, one struct per kind
+// holding the fields that kind reads. The scene reader (io/plot_json.h) creates them; render/
+// draws them. Indices count from 0.
+//
+// A new kind: its struct here and in the PlotSpec variant, its reader and writer in
+// io/plot_json.cpp, its drawer (render/panel.h and its own file) and its case in
+// render/figure.cpp; the compiler names every visitor that misses it.
 #pragma once
 
 #include <limits>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/run/result.h"
 
 namespace vibro {
 
-enum class PlotKind {
-  phase,           // (φ, φ̇) of one pellet, branches told apart
-  time,            // φ(t) (optionally φ̇(t)) of the listed pellets
-  cylinder,        // 3-D (OSMesa): the trajectory on the phase cylinder (cos φ, sin φ, φ̇)
-  work_precision,  // log error against log run time, one line per method (a sweep, not the run)
-  bifurcation,     // a sweep's section points of one pellet against the swept parameter
-  section,         // a sweep's section points of one pellet in the (φ, φ̇) plane
-  impact_map,      // a sweep's impacts of one pellet: φ̇ before impact against the forcing phase
-  regime_map,      // a 2-D sweep's cells coloured by the period of the motion
-  lyapunov,        // a 1-D sweep's largest Lyapunov exponents against the swept parameter
-  lyapunov_map,    // a 2-D sweep's cells coloured by the largest Lyapunov exponent
-  branch,          // a continued periodic motion against its parameter, stability and bifurcations
-  mechanism,  // the circle, limiters, pellets and forces at one instant, to scale (paper Fig. 1)
-};
-// The plot kinds that draw a sweep rather than a run.
-inline bool draws_sweep(PlotKind kind) {
-  return kind == PlotKind::bifurcation || kind == PlotKind::section ||
-         kind == PlotKind::impact_map || kind == PlotKind::regime_map ||
-         kind == PlotKind::lyapunov || kind == PlotKind::lyapunov_map;
-}
-
-// The plot kinds that draw the scene's own run (the others draw a report, a sweep or a branch).
-inline bool draws_run(PlotKind kind) {
-  return kind == PlotKind::phase || kind == PlotKind::time || kind == PlotKind::cylinder ||
-         kind == PlotKind::mechanism;
-}
-
-// The section coordinate a bifurcation diagram draws against the parameter.
+// The section coordinate a bifurcation diagram or a branch draws against the parameter.
 enum class SectionCoordinate { dphi, phi };
 
 struct Camera {
@@ -53,25 +32,80 @@ struct AxisLimits {
   double hi = 1.0;
 };
 
-struct PlotSpec {
-  PlotKind kind = PlotKind::phase;
-  int pellet = 0;            // phase, cylinder
-  std::vector<int> pellets;  // time
-  bool show_dphi = false;    // time: also draw φ̇(t) on a second axis
-  double t_from = 0.0;       // window drawn, s
+// The part of the run a panel draws, s.
+struct TimeWindow {
+  double t_from = 0.0;
   double t_to = std::numeric_limits<double>::infinity();  // clipped to t_end
-  double t = 0.0;             // mechanism: the instant drawn, s, in [0, t_end]
-  std::vector<int> branches;  // phase: only these motion intervals (numbered from 1); empty: all
-  std::optional<PhasePoint> first_integral_through;  // phase: exact unforced curve through it
-  bool friction_zone = false;  // phase: shade |φ| ≤ α0 (mod 2π) where a pellet can rest
-  bool wrap = false;           // phase: φ on one turn, [−π, π)
-  bool branch_labels = true;   // phase: number the branches
-  std::optional<AxisLimits> phi_range;   // phase, time: the φ axis; default: the data's
-  std::optional<AxisLimits> dphi_range;  // phase, time: the φ̇ axis; default: the data's
-  std::string title;                     // empty: a default title
-  Camera camera;                         // cylinder
-  SectionCoordinate coordinate = SectionCoordinate::dphi;  // bifurcation, branch
 };
+
+// (φ, φ̇) of one pellet, branches told apart.
+struct PhasePlot : TimeWindow {
+  int pellet = 0;
+  std::vector<int> branches;  // only these motion intervals (numbered from 1); empty: all
+  std::optional<PhasePoint> first_integral_through;  // the exact unforced curve through it
+  bool friction_zone = false;            // shade |φ| ≤ α0 (mod 2π) where a pellet can rest
+  bool wrap = false;                     // φ on one turn, [−π, π)
+  bool branch_labels = true;             // number the branches
+  std::optional<AxisLimits> phi_range;   // default: the data's
+  std::optional<AxisLimits> dphi_range;  // default: the data's
+  std::string title;                     // empty: a default title
+};
+
+// φ(t) (optionally φ̇(t) on a second axis) of the listed pellets.
+struct TimePlot : TimeWindow {
+  std::vector<int> pellets;  // empty: every pellet of the model
+  bool show_dphi = false;
+  std::optional<AxisLimits> phi_range;
+  std::optional<AxisLimits> dphi_range;
+  std::string title;
+};
+
+// 3-D (OSMesa): the trajectory of one pellet on the phase cylinder (cos φ, sin φ, φ̇).
+struct CylinderPlot : TimeWindow {
+  int pellet = 0;
+  Camera camera;
+  std::string title;
+};
+
+// The circle, limiters, pellets and forces at one instant, to scale (paper Fig. 1).
+struct MechanismPlot {
+  double t = 0.0;  // s, in [0, t_end]
+  std::string title;
+};
+
+// Log error against log run time, one line per method: a sweep of runs, not the run. Its window
+// is read and written back with the scene; only how far the scene's run goes depends on it.
+struct WorkPrecisionPlot : TimeWindow {
+  std::string title;
+};
+
+// How a sweep plot shows the sweep.
+enum class SweepView {
+  bifurcation,   // section points of one pellet against the swept parameter
+  section,       // section points of one pellet in the (φ, φ̇) plane
+  impact_map,    // impacts of one pellet: φ̇ before impact against the forcing phase
+  regime_map,    // a 2-D sweep's cells coloured by the period of the motion
+  lyapunov,      // a 1-D sweep's largest Lyapunov exponents against the swept parameter
+  lyapunov_map,  // a 2-D sweep's cells coloured by the largest Lyapunov exponent
+};
+
+// A sweep drawn (the sweep's result, not the scene's run).
+struct SweepPlot {
+  SweepView view = SweepView::bifurcation;
+  int pellet = 0;                                          // the point clouds
+  SectionCoordinate coordinate = SectionCoordinate::dphi;  // bifurcation
+  std::string title;
+};
+
+// A continued periodic motion against its parameter, stability and bifurcations marked.
+struct BranchPlot {
+  int pellet = 0;
+  SectionCoordinate coordinate = SectionCoordinate::dphi;
+  std::string title;
+};
+
+using PlotSpec = std::variant<PhasePlot, TimePlot, CylinderPlot, MechanismPlot, WorkPrecisionPlot,
+                              SweepPlot, BranchPlot>;
 
 struct FigureSpec {
   std::vector<PlotSpec> plots;

@@ -16,9 +16,9 @@ Point on_pixels(Point p) { return {std::round(p.x), std::round(p.y)}; }
 
 bool shown_in_cell(const SweepRun& run) { return run.start == 0 && run.direction >= 0; }
 
-CellMap draw_cells(cairo_t* cr, const PanelInput& in,
+CellMap draw_cells(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep,
                    const std::function<Colour(const SweepRun&)>& colour_of) {
-  const SweepSpec& spec = *in.data.sweep_spec;
+  const SweepSpec& spec = sweep.spec;
   const SweepAxis& a = spec.axis;
   const SweepAxis one{"", 0.0, 0.0, 1};
   const SweepAxis& b = spec.axis2 ? *spec.axis2 : one;
@@ -28,7 +28,7 @@ CellMap draw_cells(cairo_t* cr, const PanelInput& in,
               make_axis(y, area.h, false, spec.axis2 ? parameter_label(b.parameter) : "", true),
               Transform(area, x, y)};
   const double w = x.span() / std::max(a.count, 1), h = y.span() / std::max(b.count, 1);
-  for (const SweepRun& run : in.data.sweep->runs) {
+  for (const SweepRun& run : sweep.result.runs) {
     if (!shown_in_cell(run)) continue;
     // Cells on whole pixels, their edges computed alike from the index, filled without
     // antialiasing: neighbours meet without a seam or an overlap.
@@ -52,7 +52,7 @@ CellMap draw_cells(cairo_t* cr, const PanelInput& in,
   return map;
 }
 
-Rect legend_column(const PanelInput& in) {
+Rect legend_column(const PanelInput<SweepPlot>& in) {
   const Rect& area = in.layout.plots.front();
   return {area.right(), area.y, in.style.px(kMapLegendColumn), area.h};
 }

@@ -24,10 +24,10 @@ struct CellMap {
 // Axes of the sweep's parameters (a 1-D sweep: one row), and every shown run's cell filled in
 // the colour `colour_of` gives it, struck through where the trust check could not vouch for the
 // run. The frame is the caller's, drawn over the cells.
-CellMap draw_cells(cairo_t* cr, const PanelInput& in,
+CellMap draw_cells(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep,
                    const std::function<Colour(const SweepRun&)>& colour_of);
 
 // The column right of the plot area that a map keeps for its legend.
-Rect legend_column(const PanelInput& in);
+Rect legend_column(const PanelInput<SweepPlot>& in);
 
 }  // namespace vibro::render

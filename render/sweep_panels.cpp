@@ -33,7 +33,7 @@ struct Cloud {
   std::string title;
 };
 
-Cloud cloud_of(const PlotSpec& spec, const SweepSpec& sweep) {
+Cloud cloud_of(const SweepPlot& spec, const SweepSpec& sweep) {
   const bool stroboscopic = sweep.section == SectionKind::stroboscopic;
   const std::string where = stroboscopic ? " at t = kT" : " before impact";
   const std::string section = stroboscopic ? "stroboscopic" : "impact";
@@ -41,8 +41,8 @@ Cloud cloud_of(const PlotSpec& spec, const SweepSpec& sweep) {
   auto phi = [](const SweepRun&, const SectionPoint& p) { return wrap_angle(p.phi); };
   auto dphi = [](const SweepRun&, const SectionPoint& p) { return p.dphi; };
   Cloud c;
-  switch (spec.kind) {
-    case PlotKind::section:
+  switch (spec.view) {
+    case SweepView::section:
       c = {phi,
            dphi,
            std::string("\u03c6") + where + " [rad]",
@@ -51,7 +51,7 @@ Cloud cloud_of(const PlotSpec& spec, const SweepSpec& sweep) {
            false,
            "Poincar\u00e9 section (" + section + "), " + pellet};
       break;
-    case PlotKind::impact_map:
+    case SweepView::impact_map:
       c = {[](const SweepRun&, const SectionPoint& p) { return p.phase; },
            dphi,
            "phase of the forcing at impact, \u03a9t mod 2\u03c0 [rad]",
@@ -85,9 +85,10 @@ Colour period_colour(int period) {
 
 }  // namespace
 
-void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
-  const SweepResult& sweep = *in.data.sweep;
-  const SweepSpec& spec = *in.data.sweep_spec;
+void draw_sweep_points_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& swept,
+                             const BranchData* over) {
+  const SweepResult& sweep = swept.result;
+  const SweepSpec& spec = swept.spec;
   const Style& style = in.style;
   const int pellet = in.spec.pellet;
   const Cloud cloud = cloud_of(in.spec, spec);
@@ -102,17 +103,15 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
   if (x.empty()) x = {-1.0, 1.0};
   if (x.span() <= 0.0) x = {x.lo - 0.5, x.lo + 0.5};
   x = padded(x, 0.02);
-  if (in.spec.kind == PlotKind::impact_map) x = {0.0, 2.0 * M_PI};
-  if (in.spec.kind == PlotKind::bifurcation || in.spec.kind == PlotKind::branch)
-    x = bifurcation_range(spec.axis);
+  if (in.spec.view == SweepView::impact_map) x = {0.0, 2.0 * M_PI};
+  if (in.spec.view == SweepView::bifurcation) x = bifurcation_range(spec.axis);
   // A continued branch drawn over a bifurcation diagram of the same parameter.
-  const OrbitBranch* branch =
-      in.spec.kind != PlotKind::section && in.spec.kind != PlotKind::impact_map && in.data.branch &&
-              in.data.continuation && in.data.continuation->parameter == spec.axis.parameter
-          ? in.data.branch
-          : nullptr;
+  const OrbitBranch* branch = in.spec.view == SweepView::bifurcation && over &&
+                                      over->continuation.parameter == spec.axis.parameter
+                                  ? &over->branch
+                                  : nullptr;
   if (branch) {
-    const Range b = branch_range(*branch, in.spec);
+    const Range b = branch_range(*branch, pellet, in.spec.coordinate);
     if (!b.empty()) {
       y.include(b.lo);
       y.include(b.hi);
@@ -154,7 +153,7 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
   }
   avoid.lines.push_back(drawn);
   std::vector<LegendEntry> legend;
-  if (branch) draw_branch_curve(cr, tr, *branch, in.spec, style, legend, avoid);
+  if (branch) draw_branch_curve(cr, tr, *branch, pellet, in.spec.coordinate, style, legend, avoid);
   if (any_backward) {
     legend.push_back({"swept up", series_colour(0), Swatch::marker});
     legend.push_back({"swept down", series_colour(1), Swatch::marker});
@@ -169,13 +168,13 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput& in) {
              style);
 }
 
-void draw_regime_map_panel(cairo_t* cr, const PanelInput& in) {
-  const CellMap map = draw_cells(cr, in, [](const SweepRun& run) {
+void draw_regime_map_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep) {
+  const CellMap map = draw_cells(cr, in, sweep, [](const SweepRun& run) {
     return run.at_rest ? Colour{1.0, 1.0, 1.0, 1.0} : period_colour(run.period);
   });
   std::vector<int> periods;
   bool rest = false;
-  for (const SweepRun& run : in.data.sweep->runs) {
+  for (const SweepRun& run : sweep.result.runs) {
     if (!shown_in_cell(run)) continue;
     rest = rest || run.at_rest;
     if (!run.at_rest && std::find(periods.begin(), periods.end(), run.period) == periods.end())
@@ -205,9 +204,10 @@ namespace vibro {
 
 std::optional<ParameterAxis> parameter_axis(const FigureSpec& figure, const SweepSpec& spec) {
   if (figure.plots.empty()) return std::nullopt;
-  const PlotKind kind = figure.plots.front().kind;
-  const bool map = kind == PlotKind::regime_map || kind == PlotKind::lyapunov_map;
-  if (!map && kind != PlotKind::bifurcation && kind != PlotKind::lyapunov) return std::nullopt;
+  const auto* plot = std::get_if<SweepPlot>(&figure.plots.front());
+  if (!plot || plot->view == SweepView::section || plot->view == SweepView::impact_map)
+    return std::nullopt;
+  const bool map = plot->view == SweepView::regime_map || plot->view == SweepView::lyapunov_map;
   const render::Rect area = render::figure_layout(figure).front().plots.front();
   const render::Range x =
       map ? render::cell_range(spec.axis) : render::bifurcation_range(spec.axis);

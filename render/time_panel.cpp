@@ -22,7 +22,8 @@ struct PelletSeries {
 
 // The window cuts the joined curve, the gaps between branches included (a pellet at rest is
 // not sampled): cut branch by branch, a window starting in a rest began at the next sample.
-std::vector<PelletSeries> pellet_series(const PanelInput& in, const std::vector<int>& pellets) {
+std::vector<PelletSeries> pellet_series(const PanelInput<TimePlot>& in,
+                                        const std::vector<int>& pellets) {
   std::vector<PelletSeries> series;
   for (int pellet : pellets) {
     std::vector<Sample> joined;
@@ -45,7 +46,7 @@ std::string pellet_list(const std::vector<int>& pellets) {
   return list;
 }
 
-std::string default_title(const PlotSpec& spec, const std::vector<int>& pellets, double t_end) {
+std::string default_title(const TimePlot& spec, const std::vector<int>& pellets, double t_end) {
   const std::string what = spec.show_dphi ? "\u03c6(t) and \u03c6\u0307(t)" : "\u03c6(t)";
   return what + (pellets.size() == 1 ? ", pellet " : ", pellets ") + pellet_list(pellets) +
          window_suffix(spec, t_end);
@@ -53,7 +54,8 @@ std::string default_title(const PlotSpec& spec, const std::vector<int>& pellets,
 
 // Marks the impacts touching the drawn pellets just above the time axis: limiter impacts and
 // collisions on one row, chatter on the row above.
-std::vector<const EventMark*> draw_event_row(cairo_t* cr, const Transform& tr, const PanelInput& in,
+std::vector<const EventMark*> draw_event_row(cairo_t* cr, const Transform& tr,
+                                             const PanelInput<TimePlot>& in,
                                              const std::vector<int>& pellets) {
   std::vector<const EventMark*> shown;
   const Rect& a = tr.area();
@@ -76,8 +78,8 @@ std::vector<const EventMark*> draw_event_row(cairo_t* cr, const Transform& tr, c
 
 }  // namespace
 
-void draw_time_panel(cairo_t* cr, const PanelInput& in) {
-  const PlotSpec& spec = in.spec;
+void draw_time_panel(cairo_t* cr, const PanelInput<TimePlot>& in) {
+  const TimePlot& spec = in.spec;
   const Style& style = in.style;
   const auto pellets = panel_pellets(spec, in.model.size());
   const auto series = pellet_series(in, pellets);
@@ -102,8 +104,8 @@ void draw_time_panel(cairo_t* cr, const PanelInput& in) {
   const Axis y_phi = make_axis(phi_range, top.h, true, kPhiLabel, true);
   const Transform tr_phi(top, x.range, y_phi.range);
   if (in.plot_axes)
-    in.plot_axes->push_back({PlotKind::time, -1, top.x, top.y, top.w, top.h, x.range.lo, x.range.hi,
-                             y_phi.range.lo, y_phi.range.hi});
+    in.plot_axes->push_back({PlotAxesKind::time, -1, top.x, top.y, top.w, top.h, x.range.lo,
+                             x.range.hi, y_phi.range.lo, y_phi.range.hi});
 
   Obstacles avoid;
   std::vector<LegendEntry> legend;

@@ -57,7 +57,7 @@ std::optional<Sample> state_at(const PelletTrack& track, double t) {
   return Sample{t, held->phi, held->dphi};
 }
 
-bool branch_selected(const PlotSpec& spec, int index) {
+bool branch_selected(const PhasePlot& spec, int index) {
   return spec.branches.empty() ||
          std::find(spec.branches.begin(), spec.branches.end(), index) != spec.branches.end();
 }
@@ -75,7 +75,7 @@ const Event* find_impact(std::span<const Event> events, int pellet, double t) {
   return nullptr;
 }
 
-std::string window_suffix(const PlotSpec& spec, double t_end) {
+std::string window_suffix(const TimeWindow& spec, double t_end) {
   const bool from = spec.t_from > 0.0;
   const bool to = std::isfinite(spec.t_to) && !(t_end > 0.0 && spec.t_to >= t_end);
   char text[96];
@@ -89,9 +89,11 @@ std::string window_suffix(const PlotSpec& spec, double t_end) {
 }
 
 std::vector<int> panel_pellets(const PlotSpec& spec, int pellet_count) {
-  if (!draws_run(spec.kind)) return {};
-  if (spec.kind != PlotKind::time && spec.kind != PlotKind::mechanism) return {spec.pellet};
-  if (spec.kind == PlotKind::time && !spec.pellets.empty()) return spec.pellets;
+  if (const auto* phase = std::get_if<PhasePlot>(&spec)) return {phase->pellet};
+  if (const auto* cylinder = std::get_if<CylinderPlot>(&spec)) return {cylinder->pellet};
+  const auto* time = std::get_if<TimePlot>(&spec);
+  if (!time && !std::holds_alternative<MechanismPlot>(spec)) return {};
+  if (time && !time->pellets.empty()) return time->pellets;
   std::vector<int> all;
   for (int i = 0; i < pellet_count; ++i) all.push_back(i);
   return all;

@@ -24,8 +24,9 @@ const PelletTrack* find_track(const RunResult& run, int pellet);
 // samples.
 std::optional<Sample> state_at(const PelletTrack& track, double t);
 
-// The pellets a panel draws: `pellet` for phase and cylinder panels; `pellets` for time panels,
-// or every pellet of the model when that list is empty; every pellet for mechanism panels.
+// The pellets of the run a panel draws: `pellet` for phase and cylinder panels; `pellets` for
+// time panels, or every pellet of the model when that list is empty; every pellet for mechanism
+// panels; none for the kinds that draw a sweep, a report or a branch.
 std::vector<int> panel_pellets(const PlotSpec& spec, int pellet_count);
 
 // The marked event (limiter impact, collision, chatter) touching `pellet` at time t (within
@@ -35,14 +36,16 @@ const Event* find_impact(std::span<const Event> events, int pellet, double t);
 // Whether the event touches the pellet.
 bool touches(const Event& event, int pellet);
 
-// Whether a phase or cylinder panel draws branch number `index` (all when `branches` is empty).
-bool branch_selected(const PlotSpec& spec, int index);
+// Whether a phase panel draws branch number `index` (all when `branches` is empty).
+bool branch_selected(const PhasePlot& spec, int index);
 
 // ", t ∈ [2, 6] s" for a title when the window restricts the run, else empty. Times after
 // `t_end` (the end of the run) count as unrestricted.
-std::string window_suffix(const PlotSpec& spec, double t_end);
+std::string window_suffix(const TimeWindow& spec, double t_end);
 
 // Whether event time t is inside the window.
-inline bool in_window(double t, const PlotSpec& spec) { return t >= spec.t_from && t <= spec.t_to; }
+inline bool in_window(double t, const TimeWindow& spec) {
+  return t >= spec.t_from && t <= spec.t_to;
+}
 
 }  // namespace vibro::render

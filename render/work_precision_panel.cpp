@@ -65,8 +65,8 @@ std::string error_label(ErrorReference r) {
 
 }  // namespace
 
-void draw_work_precision_panel(cairo_t* cr, const PanelInput& in) {
-  const WorkPrecisionReport& report = *in.data.work_precision;
+void draw_work_precision_panel(cairo_t* cr, const PanelInput<WorkPrecisionPlot>& in,
+                               const WorkPrecisionReport& report) {
   const Style& style = in.style;
   std::map<Method, std::vector<const WorkPrecisionPoint*>> lines;
   Range x, y;

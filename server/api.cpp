@@ -337,9 +337,13 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
     return send_error(
         res,
         {400, "format", "must be \"json\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
-  JobResult drawn = orbit_image(job->scene, *job->orbit, *image_format);
-  if (auto* e = std::get_if<ApiError>(&drawn)) return send_error(res, *e);
-  Produced& p = std::get<Produced>(drawn);
+  // Drawn on a worker, not the connection's thread: a branch without points is drawn as one
+  // return of the motion, which is a simulation.
+  auto produced = run_on_worker(
+      [job, format = *image_format] { return orbit_image(job->scene, *job->orbit, format); }, res);
+  if (!produced) return;
+  if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
+  Produced& p = std::get<Produced>(*produced);
   res.set_content(std::move(p.body), p.content_type);
 }
 
@@ -355,11 +359,11 @@ void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Res
     return send_error(
         res, {400, "format",
               "must be \"json\", \"csv\", \"png\", \"svg\" or \"pdf\", got \"" + format + "\""});
-  PlotSpec plot;
+  SweepPlot plot;
   const auto kind = sweep_plot_kind(req.get_param_value("plot"), spec);
   if (!kind) return send_error(res, {400, "plot", std::string("must be ") + kSweepPlotNames});
   if (auto e = validate_sweep_plot(*kind, spec)) return send_error(res, ApiError::from(*e));
-  plot.kind = *kind;
+  plot.view = *kind;
   if (req.has_param("pellet")) {
     const std::string p = req.get_param_value("pellet");
     plot.pellet = p.size() == 1 && p[0] >= '0' && p[0] <= '9' ? p[0] - '0' : -1;
@@ -377,8 +381,8 @@ void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Res
   // A point plot in SVG or PDF keeps every point as a mark of its own (Limits::
   // sweep_vector_points): a large sweep is drawn as PNG.
   const long most = config_.limits.sweep_vector_points;
-  const bool marks_points = plot.kind == PlotKind::bifurcation || plot.kind == PlotKind::section ||
-                            plot.kind == PlotKind::impact_map;
+  const bool marks_points = plot.view == SweepView::bifurcation ||
+                            plot.view == SweepView::section || plot.view == SweepView::impact_map;
   if (*image_format != ImageFormat::png && marks_points && job.points > most)
     return send_error(res, {400, "format",
                             "the sweep's " + std::to_string(job.points) +
@@ -393,7 +397,7 @@ void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Res
   auto draw = [figure, model = job.scene.model, spec, sweep = job.sweep,
                format = *image_format]() -> JobResult {
     const RenderResult image =
-        render_figure(figure, model, RunResult{}, format, {nullptr, &spec, sweep.get()});
+        render_figure(figure, model, RunResult{}, format, {nullptr, SweepData{spec, *sweep}});
     if (!image.ok()) return ApiError::from(*image.error, 500);
     Produced p{std::string(image.bytes.begin(), image.bytes.end()), image.content_type, {}};
     // Where the parameter lies on the image, so that a click on it can name a value (the page).

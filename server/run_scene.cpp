@@ -66,7 +66,7 @@ std::optional<ApiError> stopped_by_limit(const RunResult& run, const Scene& scen
 std::string plot_axes_header(const std::vector<PlotAxes>& axes) {
   nlohmann::json list = nlohmann::json::array();
   for (const PlotAxes& a : axes)
-    list.push_back({{"kind", a.kind == PlotKind::phase ? "phase" : "time"},
+    list.push_back({{"kind", a.kind == PlotAxesKind::phase ? "phase" : "time"},
                     {"pellet", a.pellet},
                     {"left", a.left},
                     {"top", a.top},
@@ -85,7 +85,7 @@ std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, con
   for (std::size_t i = 0; i < f.plots.size(); ++i) {
     // A sweep is some 120 timed runs: far over one request's budget, and its timings would make
     // the same scene give different bytes.
-    if (f.plots[i].kind == PlotKind::work_precision) {
+    if (std::holds_alternative<WorkPrecisionPlot>(f.plots[i])) {
       return ApiError{400, "plots[" + std::to_string(i) + "].kind",
                       "a work-precision diagram is a sweep of many timed runs: ask POST "
                       "/api/work-precision?format=png for it"};
@@ -158,11 +158,20 @@ std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits) {
   return std::nullopt;
 }
 
+RenderResult draw_orbit_return(const Scene& scene, const PeriodicOrbit& orbit, ImageFormat format) {
+  const auto once = orbit_return(scene.model, scene.sim, orbit);
+  if (const auto* e = std::get_if<FieldError>(&once)) return {{}, {}, *e, {}};
+  const OrbitReturn& r = std::get<OrbitReturn>(once);
+  const RunPlan plan = plan_run(scene.figure, r.options, r.model.size());
+  return render_figure(scene.figure, r.model, simulate(r.model, plan.options), format);
+}
+
 JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format) {
   const auto& continuation = scene.periodic_orbit->continuation;
-  const RenderResult image = render_orbit_figure(
-      scene.figure, scene.model, scene.sim,
-      {result.orbit, &result.branch, continuation ? &*continuation : nullptr}, format);
+  const OrbitFigure figure{&result.branch, continuation ? &*continuation : nullptr};
+  const RenderResult image = draws_branch(figure)
+                                 ? render_branch_figure(scene.figure, scene.model, figure, format)
+                                 : draw_orbit_return(scene, result.orbit, format);
   if (!image.ok())
     return ApiError::from(*image.error, image.error->field == "periodic_orbit" ? 422 : 500);
   return Produced{std::string(image.bytes.begin(), image.bytes.end()), image.content_type, {}};
@@ -216,9 +225,7 @@ JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> im
   FigureSpec figure;
   figure.width = scene.figure.width;
   figure.height = scene.figure.height;
-  PlotSpec plot;
-  plot.kind = PlotKind::work_precision;
-  figure.plots = {plot};
+  figure.plots = {WorkPrecisionPlot{}};
   RenderResult drawn = render_figure(figure, scene.model, RunResult{}, *image, {&report});
   if (!drawn.ok()) return ApiError::from(*drawn.error);
   return Produced{std::string(drawn.bytes.begin(), drawn.bytes.end()), drawn.content_type, {}};

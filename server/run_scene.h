@@ -48,7 +48,13 @@ std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits);
 // `image` names a format, one return of the motion drawn in the scene's plots.
 JobResult orbit_scene(const Scene& scene, std::optional<ImageFormat> image = std::nullopt);
 
-// A finished orbit job's result drawn: its continued branch (render/orbit_figure.h).
+// One return of a found periodic motion (core/analysis orbit_return), run within the scene's
+// options and drawn in the scene's plots; an orbit not found is an error naming
+// "periodic_orbit". Simulates and draws: the server calls it on a worker, `vibro orbit` too.
+RenderResult draw_orbit_return(const Scene& scene, const PeriodicOrbit& orbit, ImageFormat format);
+
+// An orbit's result drawn: its continued branch (render/orbit_figure.h), or else one return of
+// the motion, run here, in the scene's plots. Simulates and draws: call it on a worker.
 JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format);
 
 // The scene's run options within the server's limits (events, steps, deadline per run).

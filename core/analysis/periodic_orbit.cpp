@@ -321,4 +321,17 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
   return orbit;
 }
 
+std::variant<OrbitReturn, FieldError> orbit_return(const Model& model, const SimOptions& options,
+                                                   const PeriodicOrbit& orbit) {
+  if (!orbit.converged)
+    return FieldError{"periodic_orbit", "no periodic motion to draw: " + orbit.message};
+  OrbitReturn once{model, options};
+  for (int i = 0; i < once.model.size(); ++i) {
+    once.model.pellets[i].phi0 = orbit.state[i].phi;
+    once.model.pellets[i].dphi0 = orbit.state[i].dphi;
+  }
+  once.options.t_end = orbit.periods * orbit.period;
+  return once;
+}
+
 }  // namespace vibro

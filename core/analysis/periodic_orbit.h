@@ -8,6 +8,7 @@
 #include <complex>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "core/integrators/ode.h"
@@ -81,5 +82,16 @@ struct PeriodicOrbit {
 // Newton's method. Call validate_orbit first.
 PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
                                   const OrbitSpec& spec);
+
+// One return of a found periodic motion as a run to make: the model started on the orbit's state
+// and the options of a run over its periods. The section time t0 is a whole number of every
+// force's periods, so the forces' phases are those of t = 0 and the run starts there.
+struct OrbitReturn {
+  Model model;
+  SimOptions options;
+};
+// An orbit that was not found is an error naming "periodic_orbit" with the reason.
+std::variant<OrbitReturn, FieldError> orbit_return(const Model& model, const SimOptions& options,
+                                                   const PeriodicOrbit& orbit);
 
 }  // namespace vibro

@@ -201,8 +201,7 @@ Scene to_scene(const RandomScene& scene, Method method, double rtol,
   s.sim.method = o.method;
   s.sim.rtol = o.rtol;
   s.sim.atol = o.atol;
-  PlotSpec time;
-  time.kind = PlotKind::time;
+  TimePlot time;
   for (int i = 0; i < scene.model.size(); ++i) time.pellets.push_back(i);
   s.figure.plots = {time};
   return s;

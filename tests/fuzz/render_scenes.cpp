@@ -4,6 +4,8 @@
 #include <cmath>
 #include <numbers>
 #include <string>
+#include <type_traits>
+#include <variant>
 
 #include "core/run/validate.h"
 #include "render/figure.h"
@@ -70,7 +72,7 @@ void add_pellets(Model& m, Draw& d) {
 }
 
 // A time window inside [0, t_end], or beyond its end, or one of a nanosecond.
-void window(PlotSpec& p, double t_end, Draw& d) {
+void window(TimeWindow& p, double t_end, Draw& d) {
   if (d.chance(0.7)) return;
   p.t_from = d.chance(0.3) ? 0.0 : d.uniform(0.0, t_end);
   p.t_to = p.t_from + (d.chance(0.2) ? 1e-9 : d.log_uniform(1e-3, 2.0 * t_end));
@@ -82,7 +84,8 @@ AxisLimits limits(Draw& d) {
   return {lo, lo + d.log_uniform(1e-9, 1e4)};
 }
 
-void ranges(PlotSpec& p, Draw& d) {
+template <class Plot>
+void ranges(Plot& p, Draw& d) {
   if (d.chance(0.15)) p.phi_range = limits(d);
   if (d.chance(0.15)) p.dphi_range = limits(d);
 }
@@ -93,9 +96,8 @@ std::string long_title(Draw& d) {
   return title;
 }
 
-PlotSpec phase_plot(int pellets, double t_end, Draw& d) {
-  PlotSpec p;
-  p.kind = PlotKind::phase;
+PhasePlot phase_plot(int pellets, double t_end, Draw& d) {
+  PhasePlot p;
   p.pellet = d.below(pellets);
   window(p, t_end, d);
   ranges(p, d);
@@ -108,9 +110,8 @@ PlotSpec phase_plot(int pellets, double t_end, Draw& d) {
   return p;
 }
 
-PlotSpec time_plot(int pellets, double t_end, Draw& d) {
-  PlotSpec p;
-  p.kind = PlotKind::time;
+TimePlot time_plot(int pellets, double t_end, Draw& d) {
+  TimePlot p;
   // Every pellet, or a few, repeats included.
   const int listed = d.chance(0.5) ? pellets : d.between(1, pellets + 1);
   for (int k = 0; k < listed; ++k) p.pellets.push_back(listed == pellets ? k : d.below(pellets));
@@ -120,16 +121,14 @@ PlotSpec time_plot(int pellets, double t_end, Draw& d) {
   return p;
 }
 
-PlotSpec mechanism_plot(double t_end, Draw& d) {
-  PlotSpec p;
-  p.kind = PlotKind::mechanism;
+MechanismPlot mechanism_plot(double t_end, Draw& d) {
+  MechanismPlot p;
   p.t = d.chance(0.2) ? (d.chance(0.5) ? 0.0 : t_end) : d.uniform(0.0, t_end);
   return p;
 }
 
-PlotSpec cylinder_plot(int pellets, double t_end, Draw& d) {
-  PlotSpec p;
-  p.kind = PlotKind::cylinder;
+CylinderPlot cylinder_plot(int pellets, double t_end, Draw& d) {
+  CylinderPlot p;
   p.pellet = d.below(pellets);
   window(p, t_end, d);
   p.camera = Camera{d.uniform(-180, 180), d.uniform(-89, 89), d.uniform(1.5, 50)};
@@ -148,7 +147,7 @@ PlotSpec any_plot(int pellets, double t_end, Draw& d) {
     p = mechanism_plot(t_end, d);
   else
     p = cylinder_plot(pellets, t_end, d);
-  if (d.chance(0.1)) p.title = long_title(d);
+  if (d.chance(0.1)) std::visit([&d](auto& plot) { plot.title = long_title(d); }, p);
   return p;
 }
 
@@ -156,23 +155,30 @@ PlotSpec any_plot(int pellets, double t_end, Draw& d) {
 void break_one(Scene& s, Draw& d) {
   PlotSpec& p = s.figure.plots[d.below(static_cast<int>(s.figure.plots.size()))];
   switch (d.below(5)) {
-    case 0:
-      p.pellet = s.model.size();
-      break;  // a pellet past the last
-    case 1:
-      p.t_to = p.t_from;
-      break;  // an empty window
+    case 0:  // a pellet past the last
+      if (auto* phase = std::get_if<PhasePlot>(&p)) phase->pellet = s.model.size();
+      if (auto* cylinder = std::get_if<CylinderPlot>(&p)) cylinder->pellet = s.model.size();
+      break;
+    case 1:  // an empty window
+      std::visit(
+          [](auto& plot) {
+            if constexpr (std::is_base_of_v<TimeWindow, std::decay_t<decltype(plot)>>)
+              plot.t_to = plot.t_from;
+          },
+          p);
+      break;
     case 2:
-      p.t = 2.0 * s.sim.t_end;
-      p.kind = PlotKind::mechanism;
+      p = MechanismPlot{2.0 * s.sim.t_end, {}};
       break;
     case 3:
       s.figure.width = 63;
       break;
-    default:
-      p.kind = PlotKind::cylinder;
-      p.camera.distance = 0.5;
+    default: {
+      CylinderPlot cylinder;
+      cylinder.camera.distance = 0.5;
+      p = cylinder;
       break;
+    }
   }
 }
 

@@ -53,9 +53,19 @@ extern "C" int LLVMFuzzerTestOneInput(const std::uint8_t* data, std::size_t size
   }
   // 3-D panels load OSMesa and work-precision panels run a sweep of whole simulations: both
   // too slow for fuzzing, so they are drawn as phase portraits of the same pellet.
-  for (PlotSpec& p : scene->figure.plots)
-    if (p.kind == PlotKind::cylinder || p.kind == PlotKind::work_precision)
-      p.kind = PlotKind::phase;
+  for (PlotSpec& p : scene->figure.plots) {
+    PhasePlot phase;
+    if (const auto* cylinder = std::get_if<CylinderPlot>(&p)) {
+      static_cast<TimeWindow&>(phase) = *cylinder;
+      phase.pellet = cylinder->pellet;
+      phase.title = cylinder->title;
+      p = phase;
+    } else if (const auto* report = std::get_if<WorkPrecisionPlot>(&p)) {
+      static_cast<TimeWindow&>(phase) = *report;
+      phase.title = report->title;
+      p = phase;
+    }
+  }
   // Both output formats, chosen by the input's length so each is covered.
   const ImageFormat format = size % 2 ? ImageFormat::svg : ImageFormat::png;
   if (validate_figure(scene->figure, scene->model, format)) return 0;

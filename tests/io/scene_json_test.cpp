@@ -200,13 +200,14 @@ TEST(SceneJson, AMechanismPanelReadsItsTimeWithinTheRun) {
   scene["plots"][1] = {{"kind", "mechanism"}, {"t", 1.5}};
   const SceneOrError read = scene_from_json(scene);
   ASSERT_TRUE(std::holds_alternative<Scene>(read)) << std::get<FieldError>(read).field;
-  const PlotSpec& plot = std::get<Scene>(read).figure.plots[1];
-  EXPECT_EQ(plot.kind, PlotKind::mechanism);
-  EXPECT_EQ(plot.t, 1.5);
+  const auto* plot = std::get_if<MechanismPlot>(&std::get<Scene>(read).figure.plots[1]);
+  ASSERT_NE(plot, nullptr);
+  EXPECT_EQ(plot->t, 1.5);
   EXPECT_EQ(scene_to_json(std::get<Scene>(read))["plots"][1],
             json({{"kind", "mechanism"}, {"t", 1.5}}));
   scene["plots"][1].erase("t");
-  EXPECT_EQ(std::get<Scene>(scene_from_json(scene)).figure.plots[1].t, 0.0);
+  EXPECT_EQ(std::get<MechanismPlot>(std::get<Scene>(scene_from_json(scene)).figure.plots[1]).t,
+            0.0);
   for (const json& bad : {json(-0.1), json(2.5), json("1")}) {
     scene["plots"][1]["t"] = bad;
     EXPECT_EQ(field_of(scene), "plots[1].t") << bad;

@@ -168,8 +168,8 @@ TEST(SweepJson, TheResultIsWrittenInPiecesAndStopsWhenTheReaderGoesAway) {
 
 TEST(SweepJson, TheLyapunovPlotsHaveNames) {
   const SweepSpec spec;
-  EXPECT_EQ(sweep_plot_kind("lyapunov", spec), PlotKind::lyapunov);
-  EXPECT_EQ(sweep_plot_kind("lyapunov_map", spec), PlotKind::lyapunov_map);
+  EXPECT_EQ(sweep_plot_kind("lyapunov", spec), SweepView::lyapunov);
+  EXPECT_EQ(sweep_plot_kind("lyapunov_map", spec), SweepView::lyapunov_map);
   EXPECT_EQ(sweep_plot_kind("lyapunov map", spec), std::nullopt);
   EXPECT_NE(std::string(kSweepPlotNames).find("\"lyapunov_map\""), std::string::npos);
 }

@@ -45,11 +45,10 @@ Continued continued() {
 RenderResult draw(const Continued& c, ImageFormat format, const SweepSpec* sweep_spec = nullptr,
                   const SweepResult* sweep = nullptr) {
   FigureSpec figure;
-  PlotSpec plot;
-  plot.kind = PlotKind::branch;
-  figure.plots = {plot};
-  return render_figure(figure, impact_oscillator(6.0), RunResult{}, format,
-                       {nullptr, sweep_spec, sweep, &c.branch, &c.spec});
+  figure.plots = {BranchPlot{}};
+  PanelData data{nullptr, std::nullopt, BranchData{c.branch, c.spec}};
+  if (sweep_spec && sweep) data.sweep.emplace(SweepData{*sweep_spec, *sweep});
+  return render_figure(figure, impact_oscillator(6.0), RunResult{}, format, data);
 }
 
 long dark_pixels(const testing::Decoded& image) {
@@ -93,9 +92,7 @@ TEST(BranchPlot, DrawsOverTheBifurcationDiagramOfTheSameParameter) {
 
 TEST(BranchPlot, WithoutABranchItIsRefused) {
   FigureSpec figure;
-  PlotSpec plot;
-  plot.kind = PlotKind::branch;
-  figure.plots = {plot};
+  figure.plots = {BranchPlot{}};
   const RenderResult r =
       render_figure(figure, impact_oscillator(6.0), RunResult{}, ImageFormat::png);
   ASSERT_FALSE(r.ok());

@@ -43,8 +43,7 @@ double largest_path_coordinate(const std::string& svg) {
 TEST(FarOutside, ANarrowRangeDrawsNothingFarOffTheImage) {
   const Model model = testing::synthetic_model();
   const RunResult run = testing::synthetic_run(model, 10.0);
-  PlotSpec plot;
-  plot.kind = PlotKind::phase;
+  PhasePlot plot;
   plot.dphi_range = AxisLimits{0.0, 0.01};
   const int width = 800, height = 600;
   const RenderResult svg = render_figure({{plot}, width, height}, model, run, ImageFormat::svg);

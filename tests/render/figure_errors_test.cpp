@@ -31,12 +31,13 @@ class FigureErrors : public ::testing::Test {
 TEST_F(FigureErrors, PelletOutOfRange) {
   FigureSpec f = figure();
   f.plots.push_back(PlotSpec{});
-  f.plots[1].pellet = 2;
+  std::get<PhasePlot>(f.plots[1]).pellet = 2;
   EXPECT_EQ(field_of(f), "plots[1].pellet");
-  f.plots[1].pellet = -1;
+  std::get<PhasePlot>(f.plots[1]).pellet = -1;
   EXPECT_EQ(field_of(f), "plots[1].pellet");
-  f.plots[1].kind = PlotKind::time;
-  f.plots[1].pellets = {0, 5};
+  TimePlot time;
+  time.pellets = {0, 5};
+  f.plots[1] = time;
   EXPECT_EQ(field_of(f), "plots[1].pellets[1]");
 }
 
@@ -80,8 +81,7 @@ TEST_F(FigureErrors, SizeAgainstTightenedLimits) {
 
 TEST_F(FigureErrors, SvgWithA3DPanel) {
   FigureSpec f = figure();
-  f.plots.push_back(PlotSpec{});
-  f.plots[1].kind = PlotKind::cylinder;
+  f.plots.push_back(CylinderPlot{});
   EXPECT_EQ(field_of(f, ImageFormat::svg), "plots[1].kind");
   const RenderResult result = render_figure(f, model, run, ImageFormat::svg);
   EXPECT_NE(result.error->message.find("PNG"), std::string::npos);
@@ -91,7 +91,7 @@ TEST_F(FigureErrors, TrackNotRecorded) {
   RunResult only_first = run;
   only_first.tracks.resize(1);
   FigureSpec f = figure();
-  f.plots[0].pellet = 1;
+  std::get<PhasePlot>(f.plots[0]).pellet = 1;
   const RenderResult result = render_figure(f, model, only_first, ImageFormat::png);
   ASSERT_FALSE(result.ok());
   EXPECT_EQ(result.error->field, "plots[0].pellet");
@@ -99,17 +99,18 @@ TEST_F(FigureErrors, TrackNotRecorded) {
 
 TEST_F(FigureErrors, WindowsBranchesAndOverlays) {
   FigureSpec f = figure();
-  f.plots[0].t_from = 2.0;
-  f.plots[0].t_to = 1.0;
+  std::get<PhasePlot>(f.plots[0]).t_from = 2.0;
+  std::get<PhasePlot>(f.plots[0]).t_to = 1.0;
   EXPECT_EQ(field_of(f), "plots[0].t_to");
   f = figure();
-  f.plots[0].t_from = -1.0;
+  std::get<PhasePlot>(f.plots[0]).t_from = -1.0;
   EXPECT_EQ(field_of(f), "plots[0].t_from");
   f = figure();
-  f.plots[0].branches = {1, 0};
+  std::get<PhasePlot>(f.plots[0]).branches = {1, 0};
   EXPECT_EQ(field_of(f), "plots[0].branches[1]");
   f = figure();
-  f.plots[0].first_integral_through = PhasePoint{0.0, std::numeric_limits<double>::quiet_NaN()};
+  std::get<PhasePlot>(f.plots[0]).first_integral_through =
+      PhasePoint{0.0, std::numeric_limits<double>::quiet_NaN()};
   EXPECT_EQ(field_of(f), "plots[0].first_integral_through");
 }
 
@@ -123,7 +124,7 @@ TEST_F(FigureErrors, NoPlots) {
 
 TEST_F(FigureErrors, ValidateBeforeSimulating) {
   FigureSpec f = figure();
-  f.plots[0].pellet = 7;
+  std::get<PhasePlot>(f.plots[0]).pellet = 7;
   const auto error = validate_figure(f, model, ImageFormat::png);
   ASSERT_TRUE(error);
   EXPECT_EQ(error->field, "plots[0].pellet");

@@ -39,9 +39,8 @@ FigureSpec one_plot(PlotSpec plot, int width = 1200, int height = 800) {
   return figure;
 }
 
-PlotSpec time_plot(std::vector<int> pellets) {
-  PlotSpec plot;
-  plot.kind = PlotKind::time;
+TimePlot time_plot(std::vector<int> pellets) {
+  TimePlot plot;
   plot.pellets = std::move(pellets);
   return plot;
 }
@@ -111,8 +110,9 @@ TEST_F(FigureTest, TimePanelDrawsEachPelletInItsColourInsideItsArea) {
 
 TEST_F(FigureTest, TwoPanelsShareTheImageSideBySide) {
   FigureSpec figure = one_plot(PlotSpec{});
-  figure.plots.push_back(time_plot({0}));
-  figure.plots[1].show_dphi = true;
+  TimePlot both = time_plot({0});
+  both.show_dphi = true;
+  figure.plots.push_back(both);
   const RenderResult result = render_figure(figure, model, run, ImageFormat::png);
   ASSERT_TRUE(result.ok()) << result.error->message;
   const auto image = testing::decode_png(result.bytes);
@@ -145,7 +145,7 @@ TEST_F(FigureTest, PanelsOfAFigureAreLettered) {
 TEST_F(FigureTest, TimeWindowRestrictsWhatIsDrawn) {
   // The first branch of pellet 1 ends at its first event: a window before it shows branch 1 only.
   const double first_event = run.tracks[0].branches[0].samples.back().t;
-  PlotSpec early;
+  PhasePlot early;
   early.t_to = 0.8 * first_event;
   const auto image =
       testing::decode_png(render_figure(one_plot(early), model, run, ImageFormat::png).bytes);
@@ -159,7 +159,7 @@ TEST_F(FigureTest, TimeWindowRestrictsWhatIsDrawn) {
 }
 
 TEST_F(FigureTest, BranchSelectionDrawsOnlyTheListedBranches) {
-  PlotSpec plot;
+  PhasePlot plot;
   plot.branches = {2};
   const FigureSpec figure = one_plot(plot);
   const auto image = testing::decode_png(render_figure(figure, model, run, ImageFormat::png).bytes);
@@ -182,7 +182,7 @@ TEST_F(FigureTest, SvgIsWellFormedAndGrowsWithTheBranches) {
 
   int previous = 0;
   for (int count : {1, 3, 6}) {
-    PlotSpec plot;
+    PhasePlot plot;
     for (int b = 1; b <= count; ++b) plot.branches.push_back(b);
     const auto bytes = render_figure(one_plot(plot), model, run, ImageFormat::svg).bytes;
     const std::string text(bytes.begin(), bytes.end());
@@ -253,7 +253,7 @@ TEST(RealRun, ThePortraitMarksAChatterSequenceToRest) {
   const RunResult run = simulate(model, testing::paper_options());
   const PelletTrack* track = render::find_track(run, 0);
   ASSERT_NE(track, nullptr);
-  const auto jumps = render::velocity_jumps(*track, run.events, PlotSpec{});
+  const auto jumps = render::velocity_jumps(*track, run.events, PhasePlot{});
   int chatter = 0, limiter = 0, collision = 0;
   for (const render::Jump& j : jumps) {
     if (j.mark == render::event_mark(EventKind::chatter)) {
@@ -272,7 +272,7 @@ TEST(RealRun, ThePortraitMarksAChatterSequenceToRest) {
 // A scene sets the axes: a swing of ±0.3 rad on a φ axis of [−1, 1] fills the middle of the
 // plot only; wrapped, the same swing a turn on is drawn on one turn, [−π, π).
 TEST(RealRun, AScenesAxisLimitsAndWrapHold) {
-  auto columns = [](const Model& m, PlotSpec plot, double t_end) {
+  auto columns = [](const Model& m, const PhasePlot& plot, double t_end) {
     SimOptions o;
     o.t_end = t_end;
     o.record = {true};
@@ -294,7 +294,7 @@ TEST(RealRun, AScenesAxisLimitsAndWrapHold) {
   Model swing;
   swing.R = 0.5;
   swing.pellets = {{0.1, 0.3, 0.0, {}}};
-  PlotSpec limited;
+  PhasePlot limited;
   limited.phi_range = AxisLimits{-1.0, 1.0};
   const auto [l1, r1] = columns(swing, limited, 1.0);  // past half a swing (0.71 s)
   EXPECT_NEAR(l1, 0.35, 0.03);
@@ -303,7 +303,7 @@ TEST(RealRun, AScenesAxisLimitsAndWrapHold) {
   // The same swing a turn further on: wrapped, it is drawn about 0 in the middle of [−π, π).
   Model turned = swing;
   turned.pellets[0].phi0 += 2.0 * M_PI;
-  PlotSpec wrapped;
+  PhasePlot wrapped;
   wrapped.wrap = true;
   const auto [l2, r2] = columns(turned, wrapped, 1.0);
   EXPECT_NEAR(l2, 0.5 - 0.3 / (2.0 * M_PI), 0.01);
@@ -316,8 +316,9 @@ TEST(RealRun, SvgKeepsItsLabelsAsText) {
   const Model model = testing::paper_model();
   const RunResult run = simulate(model, testing::paper_options());
   FigureSpec figure = one_plot(PlotSpec{});
-  figure.plots.push_back(time_plot({0, 1}));
-  figure.plots[1].title = "φ(t) < 2π & more";
+  TimePlot titled = time_plot({0, 1});
+  titled.title = "φ(t) < 2π & more";
+  figure.plots.push_back(titled);
   const RenderResult svg = render_figure(figure, model, run, ImageFormat::svg);
   ASSERT_TRUE(svg.ok());
   const std::string text(svg.bytes.begin(), svg.bytes.end());
@@ -333,8 +334,7 @@ TEST(RealRun, CylinderPanelCompositesIntoPng) {
   if (!cylinder_panels_available()) GTEST_SKIP() << "built without render/gl";
   const Model model = testing::synthetic_model();
   const RunResult run = testing::synthetic_run(model, 3.0);
-  PlotSpec plot;
-  plot.kind = PlotKind::cylinder;
+  CylinderPlot plot;
   const FigureSpec figure = one_plot(plot, 600, 500);
   const RenderResult result = render_figure(figure, model, run, ImageFormat::png);
   if (!result.ok()) {
@@ -363,16 +363,14 @@ TEST(RealRun, TheCylinderViewIsLabelled) {
   if (!cylinder_panels_available()) GTEST_SKIP() << "built without render/gl";
   const Model model = testing::synthetic_model();
   const RunResult run = testing::synthetic_run(model, 3.0);
-  PlotSpec plot;
-  plot.kind = PlotKind::cylinder;
+  CylinderPlot plot;
   const FigureSpec figure = one_plot(plot, 900, 700);
   const RenderResult result = render_figure(figure, model, run, ImageFormat::png);
   if (!result.ok()) GTEST_SKIP() << result.error->message;
   const auto image = testing::decode_png(result.bytes);
   const auto layouts = render::figure_layout(figure);
   const render::Style style = render::style_for(figure.width, figure.height);
-  const PanelData data;
-  const render::PanelInput in{figure.plots[0], model, run, layouts[0], style, data};
+  const render::PanelInput<CylinderPlot> in{plot, model, run, layouts[0], style};
   const auto labels = render::cylinder_labels(in);
   ASSERT_EQ(labels.size(), 4u + 2u + model.limiters.size());
   std::vector<std::string> texts;

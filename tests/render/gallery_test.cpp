@@ -21,43 +21,40 @@ struct GalleryFigure {
   bool synthetic = false;
 };
 
-PlotSpec phase(int pellet) {
-  PlotSpec p;
+PhasePlot phase(int pellet) {
+  PhasePlot p;
   p.pellet = pellet;
   return p;
 }
 
-PlotSpec time(std::vector<int> pellets, bool show_dphi) {
-  PlotSpec p;
-  p.kind = PlotKind::time;
+TimePlot time(std::vector<int> pellets, bool show_dphi) {
+  TimePlot p;
   p.pellets = std::move(pellets);
   p.show_dphi = show_dphi;
   return p;
 }
 
-PlotSpec mechanism(double t) {
-  PlotSpec p;
-  p.kind = PlotKind::mechanism;
+MechanismPlot mechanism(double t) {
+  MechanismPlot p;
   p.t = t;
   return p;
 }
 
 std::vector<GalleryFigure> gallery() {
   std::vector<GalleryFigure> figures;
-  PlotSpec zone = phase(0);
+  PhasePlot zone = phase(0);
   zone.friction_zone = true;
   figures.push_back({"paper_phase", {{zone}, 1200, 800}});
   figures.push_back({"paper_phase_time", {{phase(0), time({0, 1}, false)}, 1200, 800}});
   figures.push_back({"paper_time_dphi", {{time({0, 1}, true)}, 1200, 800}});
-  PlotSpec cylinder = phase(0);
-  cylinder.kind = PlotKind::cylinder;
+  CylinderPlot cylinder;
   figures.push_back(
       {"paper_four", {{phase(0), phase(1), time({0, 1}, false), cylinder}, 1400, 1000}});
-  PlotSpec window = phase(1);
+  PhasePlot window = phase(1);
   window.t_from = 2.0;
   window.t_to = 6.0;
   figures.push_back({"paper_window_thumb", {{window}, 480, 340}});
-  PlotSpec overlay = phase(0);
+  PhasePlot overlay = phase(0);
   overlay.first_integral_through = PhasePoint{0.2, 9.0};
   overlay.friction_zone = true;
   figures.push_back({"synthetic_overlay", {{overlay, time({0, 1}, true)}, 1200, 800}, true});
@@ -74,7 +71,7 @@ void write(const std::string& path, const std::vector<std::uint8_t>& bytes) {
 
 bool has_cylinder(const FigureSpec& f) {
   for (const PlotSpec& p : f.plots)
-    if (p.kind == PlotKind::cylinder) return true;
+    if (std::holds_alternative<CylinderPlot>(p)) return true;
   return false;
 }
 

@@ -58,9 +58,9 @@ TEST(PanelLayout, PlotAreasSitInsideTheCellWithRoomForLabels) {
 
 TEST(FigureLayout, StacksTheTimePanelWhenItShowsDphi) {
   FigureSpec figure;
-  figure.plots = {PlotSpec{}, PlotSpec{}};
-  figure.plots[1].kind = PlotKind::time;
-  figure.plots[1].show_dphi = true;
+  TimePlot both;
+  both.show_dphi = true;
+  figure.plots = {PhasePlot{}, both};
   const auto layouts = figure_layout(figure);
   ASSERT_EQ(layouts.size(), 2u);
   EXPECT_EQ(layouts[0].plots.size(), 1u);
@@ -75,11 +75,9 @@ TEST(FigureLayout, PlotAreasStayInsideTheirCellsInTheSmallestFigures) {
   for (int count = 1; count <= 16; ++count) {
     for (int kind = 0; kind < 3; ++kind) {
       FigureSpec figure;
-      figure.plots.assign(count, PlotSpec{});
-      for (PlotSpec& p : figure.plots) {
-        p.kind = kind == 2 ? PlotKind::mechanism : PlotKind::time;
-        p.show_dphi = kind == 1;  // two stacked plot areas
-      }
+      TimePlot time;
+      time.show_dphi = kind == 1;  // two stacked plot areas
+      figure.plots.assign(count, kind == 2 ? PlotSpec{MechanismPlot{}} : PlotSpec{time});
       for (int side : {64, 78, 101, 160}) {
         figure.width = side;
         figure.height = side - 9;

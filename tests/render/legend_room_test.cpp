@@ -31,7 +31,7 @@ TEST(LegendRoom, InASmallFigureThePortraitsLegendsStayOutOfTheirPlots) {
   const Model model = testing::paper_model();
   const RunResult run = simulate(model, testing::paper_options());
   FigureSpec figure;
-  PlotSpec a, b;
+  PhasePlot a, b;
   b.pellet = 1;
   figure.plots = {a, b};
   figure.width = 600;

@@ -82,7 +82,7 @@ struct Drawn {
   }
 };
 
-Drawn draw_png(PlotKind kind, const Swept& s) {
+Drawn draw_png(SweepView kind, const Swept& s) {
   const RenderResult png = draw(kind, s, ImageFormat::png);
   EXPECT_TRUE(png.ok()) << png.error->message;
   Drawn d{testing::decode_png(png.bytes),
@@ -94,7 +94,7 @@ Drawn draw_png(PlotKind kind, const Swept& s) {
 }
 
 // The SVG of a plot, checked well formed.
-std::string draw_svg(PlotKind kind, const Swept& s) {
+std::string draw_svg(SweepView kind, const Swept& s) {
   const RenderResult svg = draw(kind, s, ImageFormat::svg);
   EXPECT_TRUE(svg.ok());
   const std::string text(svg.bytes.begin(), svg.bytes.end());
@@ -104,7 +104,7 @@ std::string draw_svg(PlotKind kind, const Swept& s) {
 
 TEST(LyapunovPlots, TheMapColoursItsCellsAndItsColourBarBlueToRed) {
   const Swept s = grid();
-  const Drawn d = draw_png(PlotKind::lyapunov_map, s);
+  const Drawn d = draw_png(SweepView::lyapunov_map, s);
   ASSERT_FALSE(d.image.argb.empty());
   const long cell = static_cast<long>(d.area.w / 24) * static_cast<long>(d.area.h / 12);
   // The first and last columns take the scale's ends; the cell without a value is grey, the −∞
@@ -119,24 +119,24 @@ TEST(LyapunovPlots, TheMapColoursItsCellsAndItsColourBarBlueToRed) {
   EXPECT_GT(d.count_near(bar_from, bar_to, kMostPositive, 12), 20);
   EXPECT_GT(d.count_near(bar_from, bar_to, 0xffffbf, 12), 20);
 
-  const std::string text = draw_svg(PlotKind::lyapunov_map, s);
+  const std::string text = draw_svg(SweepView::lyapunov_map, s);
   for (const char* label : {kLabel, "no value", "\u2212\u221e: pellets held", "not trusted"})
     EXPECT_EQ(testing::count_of(text, label), 1) << label;
 }
 
 TEST(LyapunovPlots, TheLineDrawsEachDirectionAgainstTheParameter) {
   const Swept s = line();
-  const Drawn d = draw_png(PlotKind::lyapunov, s);
+  const Drawn d = draw_png(SweepView::lyapunov, s);
   ASSERT_FALSE(d.image.argb.empty());
   EXPECT_GT(d.count_near(d.left, d.right, 0x0072b2, 24), 500);  // swept up
   EXPECT_GT(d.count_near(d.left, d.right, 0xd55e00, 24), 500);  // swept down
 
-  const std::string text = draw_svg(PlotKind::lyapunov, s);
+  const std::string text = draw_svg(SweepView::lyapunov, s);
   EXPECT_EQ(testing::count_of(text, kLabel), 1);  // the y axis
   for (const char* entry : {"swept up", "swept down", "not trusted", "\u2212\u221e: pellets held"})
     EXPECT_EQ(testing::count_of(text, entry), 1) << entry;
   // The parameter is where a click on the image names it, as on a bifurcation diagram.
-  const auto axis = parameter_axis(figure_of(PlotKind::lyapunov), s.spec);
+  const auto axis = parameter_axis(figure_of(SweepView::lyapunov), s.spec);
   ASSERT_TRUE(axis);
   EXPECT_LT(axis->from, 3.0);
   EXPECT_GT(axis->to, 9.0);
@@ -161,8 +161,8 @@ TEST(LyapunovPlots, AFewFarValuesDoNotWashOutTheScale) {
 }
 
 TEST(LyapunovPlots, ASweepWithoutExponentsIsRefusedNamingTheField) {
-  for (PlotKind kind : {PlotKind::lyapunov, PlotKind::lyapunov_map}) {
-    Swept s = kind == PlotKind::lyapunov ? line() : grid();
+  for (SweepView kind : {SweepView::lyapunov, SweepView::lyapunov_map}) {
+    Swept s = kind == SweepView::lyapunov ? line() : grid();
     s.spec.lyapunov = false;
     const RenderResult r = draw(kind, s, ImageFormat::png);
     ASSERT_FALSE(r.ok());
@@ -170,11 +170,11 @@ TEST(LyapunovPlots, ASweepWithoutExponentsIsRefusedNamingTheField) {
     EXPECT_NE(r.error->message.find("no Lyapunov exponents"), std::string::npos);
   }
   // A line of exponents against one parameter cannot draw a 2-D sweep; the map can draw a 1-D one.
-  const auto two_d = validate_sweep_plot(PlotKind::lyapunov, grid().spec);
+  const auto two_d = validate_sweep_plot(SweepView::lyapunov, grid().spec);
   ASSERT_TRUE(two_d);
   EXPECT_EQ(two_d->field, "sweep.parameter2");
-  EXPECT_FALSE(validate_sweep_plot(PlotKind::lyapunov_map, line().spec));
-  EXPECT_TRUE(draw(PlotKind::lyapunov_map, line(), ImageFormat::png).ok());
+  EXPECT_FALSE(validate_sweep_plot(SweepView::lyapunov_map, line().spec));
+  EXPECT_TRUE(draw(SweepView::lyapunov_map, line(), ImageFormat::png).ok());
 }
 
 }  // namespace

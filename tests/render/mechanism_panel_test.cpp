@@ -26,8 +26,7 @@ constexpr std::uint32_t kPellet2 = 0xD55E00;  // series colour 1
 constexpr double kPi = std::numbers::pi;
 
 FigureSpec mechanism_at(double t, int width = 900, int height = 700) {
-  PlotSpec plot;
-  plot.kind = PlotKind::mechanism;
+  MechanismPlot plot;
   plot.t = t;
   return {{plot}, width, height};
 }

@@ -68,11 +68,9 @@ TEST(RasterStroke, IssueSceneDrawsItsTimePanelToPng) {
   const RunResult run = simulate(model, options);
   ASSERT_EQ(run.stats.termination, Termination::completed);
 
-  PlotSpec phase0, phase2, time;
-  phase0.kind = PlotKind::phase;
-  phase2.kind = PlotKind::phase;
+  PhasePlot phase0, phase2;
+  TimePlot time;
   phase2.pellet = 2;
-  time.kind = PlotKind::time;
   time.pellets = {0, 1, 2};
   const FigureSpec figure{{phase0, phase2, time}, 1200, 800};
   const RenderResult image = render_figure(figure, model, run, ImageFormat::png);

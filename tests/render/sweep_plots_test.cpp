@@ -52,13 +52,13 @@ TEST(SweepPlots, EachKindDrawsItsPoints) {
   const Swept impacts = sweep(SectionKind::impact, false);
   const Swept grid = sweep(SectionKind::stroboscopic, true);
   const struct {
-    PlotKind kind;
+    SweepView kind;
     const Swept* swept;
     double at_least;  // share of pixels in the first series colour
-  } cases[] = {{PlotKind::bifurcation, &strobe, 2e-4},
-               {PlotKind::section, &strobe, 2e-4},
-               {PlotKind::impact_map, &impacts, 2e-4},
-               {PlotKind::regime_map, &grid, 0.03}};  // cells of period 1 fill part of it
+  } cases[] = {{SweepView::bifurcation, &strobe, 2e-4},
+               {SweepView::section, &strobe, 2e-4},
+               {SweepView::impact_map, &impacts, 2e-4},
+               {SweepView::regime_map, &grid, 0.03}};  // cells of period 1 fill part of it
   for (const auto& c : cases) {
     const RenderResult png = draw(c.kind, *c.swept, ImageFormat::png);
     ASSERT_TRUE(png.ok()) << png.error->message;
@@ -92,8 +92,8 @@ TEST(SweepPlots, TheRegimeMapsLegendAndSeamsHideNoCell) {
       run.period = 1;
       s.result.runs.push_back(run);
     }
-  const FigureSpec figure = figure_of(PlotKind::regime_map);
-  const RenderResult png = draw(PlotKind::regime_map, s, ImageFormat::png);
+  const FigureSpec figure = figure_of(SweepView::regime_map);
+  const RenderResult png = draw(SweepView::regime_map, s, ImageFormat::png);
   ASSERT_TRUE(png.ok()) << png.error->message;
   const testing::Decoded image = testing::decode_png(png.bytes);
   const render::Rect area = render::figure_layout(figure).front().plots.front();
@@ -112,7 +112,7 @@ TEST(SweepPlots, TheRegimeMapsLegendAndSeamsHideNoCell) {
 }
 
 TEST(SweepPlots, WithoutASweepTheyAreRefused) {
-  const RenderResult r = render_figure(figure_of(PlotKind::bifurcation), impact_oscillator(),
+  const RenderResult r = render_figure(figure_of(SweepView::bifurcation), impact_oscillator(),
                                        RunResult{}, ImageFormat::png);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error->field, "plots[0].kind");

@@ -14,17 +14,17 @@ struct Swept {
 };
 
 // A figure of one plot of this kind, the rest defaults.
-inline FigureSpec figure_of(PlotKind kind) {
+inline FigureSpec figure_of(SweepView view) {
   FigureSpec figure;
-  PlotSpec plot;
-  plot.kind = kind;
+  SweepPlot plot;
+  plot.view = view;
   figure.plots = {plot};
   return figure;
 }
 
-inline RenderResult draw(PlotKind kind, const Swept& s, ImageFormat format) {
-  return render_figure(figure_of(kind), impact_oscillator(), RunResult{}, format,
-                       {nullptr, &s.spec, &s.result});
+inline RenderResult draw(SweepView view, const Swept& s, ImageFormat format) {
+  return render_figure(figure_of(view), impact_oscillator(), RunResult{}, format,
+                       {nullptr, SweepData{s.spec, s.result}});
 }
 
 }  // namespace vibro::testing

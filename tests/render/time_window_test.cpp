@@ -31,8 +31,7 @@ Model one_pellet() {
 
 // The time axis of a φ(t) panel of the resting run over [t_from, t_to].
 PlotAxes time_axes(double t_from, double t_to) {
-  PlotSpec plot;
-  plot.kind = PlotKind::time;
+  TimePlot plot;
   plot.t_from = t_from;
   plot.t_to = t_to;
   const RenderResult r =

@@ -67,21 +67,19 @@ TEST(FindImpact, MatchesTimePelletAndMarkedKind) {
 }
 
 TEST(PanelPellets, TimeAndMechanismPanelsDefaultToEveryPellet) {
-  PlotSpec time;
-  time.kind = PlotKind::time;
+  TimePlot time;
   EXPECT_EQ(panel_pellets(time, 3), (std::vector<int>{0, 1, 2}));
   time.pellets = {1};
   EXPECT_EQ(panel_pellets(time, 3), (std::vector<int>{1}));
-  PlotSpec phase;
+  PhasePlot phase;
   phase.pellet = 2;
   EXPECT_EQ(panel_pellets(phase, 3), (std::vector<int>{2}));
-  PlotSpec mechanism;
-  mechanism.kind = PlotKind::mechanism;
+  MechanismPlot mechanism;
   EXPECT_EQ(panel_pellets(mechanism, 2), (std::vector<int>{0, 1}));
 }
 
 TEST(WindowSuffix, NamesARestrictedWindowOnly) {
-  PlotSpec spec;
+  TimeWindow spec;
   EXPECT_EQ(window_suffix(spec, 12.0), "");
   spec.t_to = 12.0;
   EXPECT_EQ(window_suffix(spec, 12.0), "");

@@ -25,9 +25,8 @@ TEST(TwoDimensionalScene, NeverLoadsOsmesa) {
   const Model model = testing::paper_model();
   const RunResult run = simulate(model, testing::paper_options());
   FigureSpec figure;
-  PlotSpec phase, time;
-  phase.kind = PlotKind::phase;
-  time.kind = PlotKind::time;
+  PhasePlot phase;
+  TimePlot time;
   figure.plots = {phase, time};
   for (ImageFormat format : {ImageFormat::png, ImageFormat::svg}) {
     const RenderResult image = render_figure(figure, model, run, format);

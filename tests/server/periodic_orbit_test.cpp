@@ -6,6 +6,7 @@
 #include <complex>
 #include <nlohmann/json.hpp>
 #include <thread>
+#include <vector>
 
 #include "tests/io/orbit_scene.h"
 #include "tests/server/test_server.h"
@@ -31,6 +32,19 @@ json status_when_ended(httplib::Client& c, const std::string& location, int poll
     std::this_thread::sleep_for(std::chrono::milliseconds(50));
   }
   return status;
+}
+
+// The impact oscillator's orbit continued in Ω to 6.3, posted as a job: its Location, or empty.
+std::string continuation_job(httplib::Client& c) {
+  json s = impact_oscillator_orbit();
+  s["periodic_orbit"]["continuation"] = {
+      {"parameter", "model.pellets[0].Omega"}, {"to", 6.3}, {"max_points", 30}};
+  auto res = c.Post("/api/periodic-orbit", s.dump(), "application/json");
+  if (!res || res->status != 202) {
+    ADD_FAILURE() << (res ? res->body : "no answer");
+    return "";
+  }
+  return res->get_header_value("Location");
 }
 
 class PeriodicOrbitApi : public SharedServerTest {};
@@ -159,17 +173,46 @@ TEST(PeriodicOrbitJobs, AContinuationIsBoundedByTheJobsWallClockBudget) {
   config.limits.sweep_seconds = 0.001;
   TestServer server(config);
   auto c = server.client();
-  json s = impact_oscillator_orbit();
-  s["periodic_orbit"]["continuation"] = {
-      {"parameter", "model.pellets[0].Omega"}, {"to", 6.3}, {"max_points", 30}};
-  auto res = c.Post("/api/periodic-orbit", s.dump(), "application/json");
-  ASSERT_TRUE(res);
-  ASSERT_EQ(res->status, 202) << res->body;
-  const std::string location = res->get_header_value("Location");
+  const std::string location = continuation_job(c);
+  ASSERT_FALSE(location.empty());
   const json status = status_when_ended(c, location, 600);
   ASSERT_FALSE(status.is_null());
   ASSERT_EQ(status["status"], "failed") << status.dump();
   EXPECT_EQ(status["field"], "periodic_orbit.continuation.max_points") << status.dump();
+}
+
+// An orbit job's image is drawn on a worker, as every image is, and not on the connection's
+// thread: while slow runs hold the one worker and its queue, asking for it is answered 503.
+TEST(PeriodicOrbitJobs, AJobsImageIsDrawnOnAWorker) {
+  server::ServerConfig config;
+  config.workers = 1;
+  config.queue = 1;
+  config.limits.deadline_ms = 1500;  // each slow run holds the one worker this long
+  TestServer server(config);
+  auto c = server.client();
+  const std::string location = continuation_job(c);
+  ASSERT_FALSE(location.empty());
+  const json status = status_when_ended(c, location, 1200);
+  ASSERT_FALSE(status.is_null());
+  ASSERT_EQ(status["status"], "done") << status.dump();
+
+  std::vector<std::thread> slow;
+  for (int k = 0; k < 2; ++k)
+    slow.emplace_back([&server, k] {
+      server.client().Get(
+          ("/api/simulate?preset=high-frequency&t_end=" + std::to_string(100 + k)).c_str());
+    });
+  bool busy = false;
+  for (int k = 0; k < 40; ++k) {
+    std::this_thread::sleep_for(std::chrono::milliseconds(25));
+    auto png = c.Get((location + "/result?format=png").c_str());
+    if (!png) break;  // failed below: no 503 seen
+    busy = png->status == 503;
+    if (busy) break;
+    EXPECT_EQ(png->status, 200) << png->body;
+  }
+  for (std::thread& t : slow) t.join();
+  EXPECT_TRUE(busy) << "the image was drawn while the worker and its queue were taken";
 }
 
 }  // namespace
