@@ -1,6 +1,6 @@
 #include "render/orbit_figure.h"
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "render/run_plan.h"
 
 namespace vibro {

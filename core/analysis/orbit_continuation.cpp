@@ -5,8 +5,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/analysis/checked_run.h"
 #include "core/model/parameter.h"
-#include "core/run/simulate.h"
 
 namespace vibro {
 namespace {

@@ -6,8 +6,8 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/analysis/checked_run.h"
 #include "core/analysis/monodromy.h"
-#include "core/run/simulate.h"
 
 namespace vibro {
 namespace {

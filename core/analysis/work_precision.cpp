@@ -4,7 +4,7 @@
 #include <chrono>
 #include <cmath>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 
 namespace vibro {
 namespace {

@@ -8,8 +8,8 @@
 #include <set>
 #include <tuple>
 
+#include "core/analysis/checked_run.h"
 #include "core/model/first_integral.h"
-#include "core/run/simulate.h"
 #include "tests/core/scenes.h"
 
 namespace vibro {
