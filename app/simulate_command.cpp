@@ -8,7 +8,7 @@
 #include "app/commands.h"
 #include "app/scene_options.h"
 #include "app/usage.h"
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "io/result_json.h"
 #include "io/run_csv.h"
 #include "io/whole_file.h"

@@ -3,7 +3,7 @@
 #include <benchmark/benchmark.h>
 
 #include "bench_scenes.h"
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "render/figure.h"
 #include "render/run_plan.h"
 

@@ -10,7 +10,7 @@
 #include <vector>
 
 #include "bench_scenes.h"
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "run_error.h"
 #include "solvers.h"
 #if defined(VIBRO_BENCH_ODEINT) || defined(VIBRO_BENCH_CVODE)

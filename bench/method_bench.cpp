@@ -7,7 +7,7 @@
 #include <string>
 
 #include "bench_scenes.h"
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 
 namespace vibro::bench {
 namespace {

@@ -6,9 +6,9 @@
 #include <vector>
 
 #include "bench_scenes.h"
+#include "core/analysis/checked_run.h"
 #include "core/model/dynamics.h"
 #include "core/model/motion.h"
-#include "core/run/simulate.h"
 
 namespace vibro::bench {
 namespace {

@@ -10,7 +10,7 @@
 #include <cstring>
 
 #include "bench_scenes.h"
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "render/figure.h"
 #include "render/png.h"
 #include "render/run_plan.h"

@@ -4,7 +4,7 @@
 #include <cmath>
 #include <vector>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 
 namespace vibro::bench {
 namespace {

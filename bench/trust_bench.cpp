@@ -5,7 +5,7 @@
 #include <string>
 
 #include "bench_scenes.h"
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "io/presets.h"
 
 namespace vibro::bench {

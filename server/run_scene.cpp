@@ -5,9 +5,9 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
+#include "core/analysis/checked_run.h"
 #include "core/analysis/work_precision.h"
 #include "core/model/parameter.h"
-#include "core/run/simulate.h"
 #include "io/orbit_json.h"
 #include "io/result_json.h"
 #include "io/work_precision_json.h"

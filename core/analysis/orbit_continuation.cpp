@@ -7,8 +7,8 @@
 #include <sstream>
 #include <utility>
 
+#include "core/analysis/checked_run.h"
 #include "core/model/parameter.h"
-#include "core/run/simulate.h"
 
 namespace vibro {
 namespace {

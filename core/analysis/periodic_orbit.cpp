@@ -6,9 +6,9 @@
 #include <optional>
 #include <sstream>
 
+#include "core/analysis/checked_run.h"
 #include "core/analysis/monodromy.h"
 #include "core/run/deadline.h"
-#include "core/run/simulate.h"
 
 namespace vibro {
 namespace {

@@ -8,8 +8,8 @@
 #include <thread>
 #include <tuple>
 
+#include "core/analysis/checked_run.h"
 #include "core/model/parameter.h"
-#include "core/run/simulate.h"
 
 namespace vibro {
 namespace {

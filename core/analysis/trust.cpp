@@ -9,6 +9,7 @@
 #include <tuple>
 
 #include "core/analysis/monodromy.h"
+#include "core/analysis/trust_policy.h"
 #include "core/events/event_tolerances.h"
 #include "core/model/motion.h"
 
@@ -43,7 +44,7 @@ std::string describe_run_end(const RunResult& run) {
 // The time from event k to the nearest event at another instant (or the run's start or end).
 double spacing(const std::vector<Event>& events, std::size_t k, double t_end) {
   const double t = events[k].t;
-  const double same = 1e-12 * (1.0 + std::abs(t));
+  const double same = kTrustPolicy.same_instant * (1.0 + std::abs(t));
   double before = t, after = t_end - t;
   for (std::size_t j = k; j-- > 0;)
     if (events[j].t < t - same) {
@@ -66,24 +67,25 @@ double spacing(const std::vector<Event>& events, std::size_t k, double t_end) {
 double grazing_window(const Model& model, const Stats& st, double phi) {
   double a = model.g / model.R;
   for (const Pellet& p : model.pellets) a += std::abs(p.force.F0) / (p.m * model.R);
-  const double delta = 10.0 * (st.rtol * (1.0 + angle_size(phi)) + st.atol);
+  const double delta =
+      kTrustPolicy.grazing_tolerances * (st.rtol * (1.0 + angle_size(phi)) + st.atol);
   return a > 0.0 ? std::sqrt(2.0 * delta / a) : 0.0;
 }
 
 // Where the trust ends when the runs part at event k: `margin` before the earlier of their
 // events k, but never before the last event both list alike (or the start), less ten times the
-// event times' error. The true sequence may part earlier than either run: a reference listed an
-// impact 1.4 ms before the first event the runs listed otherwise, their times 0.5 ms apart, and
-// a chatter 8.5e-11 s before the collision both listed last, 2e-13 s before their stick (trust
-// scan, seed 25, scene 463). The margin is ten times the event times' error (the bound the
-// estimate keeps), and where the runs list different events, at least the grazing window.
+// event times' error. The true sequence may part earlier than either run, before the last event
+// both list alike (Trust.TheTrustEndsTenErrorsBeforeTheLastEventListedAlike). The margin is ten
+// times the event times' error (the bound the estimate keeps), and where the runs list different
+// events, at least the grazing window.
 double trust_end(const std::vector<Event>& run, const std::vector<Event>& shadow, std::size_t k,
                  double margin, double error) {
   double first = std::numeric_limits<double>::infinity();
   if (k < run.size()) first = run[k].t;
   if (k < shadow.size()) first = std::min(first, shadow[k].t);
-  const double last =
-      k == 0 ? 0.0 : std::max(0.0, std::min(run[k - 1].t, shadow[k - 1].t) - 10.0 * error);
+  const double last = k == 0 ? 0.0
+                             : std::max(0.0, std::min(run[k - 1].t, shadow[k - 1].t) -
+                                                 kTrustPolicy.margin_errors * error);
   return std::max(last, first - margin);
 }
 
@@ -97,7 +99,8 @@ double placement_round_off(const Event& e) {
   if (e.kind == EventKind::collision && e.dphi_before.size() == 2)
     approach = std::abs(e.dphi_before[0] - e.dphi_before[1]);
   if (!(approach > 0.0)) return 0.0;
-  return 1e2 * std::numeric_limits<double>::epsilon() * (1.0 + std::abs(e.phi)) / approach;
+  return kTrustPolicy.placement_round_off_ulps * std::numeric_limits<double>::epsilon() *
+         (1.0 + std::abs(e.phi)) / approach;
 }
 
 // How far a start a round-off apart moves an instant, to first order (from the variational
@@ -105,17 +108,14 @@ double placement_round_off(const Event& e) {
 struct StartShift {
   // The shadow's own start 64 ulps ahead (check_model). A chain that amplifies errors amplifies
   // it as it amplifies the run's own error, and where the two are alike the shadow lands where
-  // the run did: Radau IIA at rtol 1e-8 put an event 6.39e-9 s early, the start 64 ulps ahead
-  // put the shadow's 6.35e-9 s early, and the two agreed to 5e-13 s (trust scan, seed 20, scene
-  // 657). Less this shift, the shadow is where it would be from the run's start.
+  // the run did (Trust.AShadowsStartDoesNotHideTheRunsError). Less this shift, the shadow is where
+  // it would be from the run's start.
   double start = 0.0;
   // Every angle a few ulps on (4ε·(1 + |φ|)), the resting pellets' too (not those exactly on a
   // limiter's angle), every other pellet's back: the round-off a run carries, as the chain
   // amplifies it. The shadow cannot move resting pellets (it would break equilibria), and a
-  // chain from rest amplified round-off it did not see: two resting pellets 1e-6 rad apart, one
-  // forced, collided 112 times, and the last collision scattered by ±3e-9 s over every
-  // tolerance from 1e-8 to 1e-13 while a run and its shadow agreed to 3e-10 s (seed 28, scene
-  // 859). Pellets at one place moved alike would keep their gaps; 64 ulps over-stated that
+  // chain from rest amplifies round-off it does not see (Trust.AChainFromRestCarriesItsRoundOff).
+  // Pellets at one place moved alike would keep their gaps; 64 ulps over-stated that
   // scatter sixtyfold.
   double round_off = 0.0;
 };
@@ -127,7 +127,7 @@ class StartShifts {
   StartShifts(const Model& model, const RunResult& shadow, double budget_ms) {
     if (shadow.path.empty()) return;
     const Model moved = check_model(model);
-    const double ulps = 4.0 * std::numeric_limits<double>::epsilon();
+    const double ulps = kTrustPolicy.carried_ulps * std::numeric_limits<double>::epsilon();
     Mat deltas = Mat::Zero(2 * model.size(), 2);
     for (int i = 0; i < model.size(); ++i) {
       const Pellet& p = model.pellets[i];
@@ -141,14 +141,15 @@ class StartShifts {
     }
     // A tenth of the shift is all the estimate needs: `auto` at rtol 1e-4 put the shifts within
     // 1 % of the difference of shadows started with and without the 64 ulps.
-    const InstantShifts s = instant_shifts(model, shadow.path, deltas, 1e-4, budget_ms);
+    const InstantShifts s =
+        instant_shifts(model, shadow.path, deltas, kTrustPolicy.shift_rtol, budget_ms);
     for (Eigen::Index k = 0; k < s.dt.rows(); ++k)
       if (!shadow.path[k].events.empty())
         at_.push_back({shadow.path[k].t, {s.dt(k, 0), s.dt(k, 1)}});
   }
   // The instant at t's (none where none is known).
   StartShift at(double t) const {
-    const double same = 1e-12 * (1.0 + std::abs(t));
+    const double same = kTrustPolicy.same_instant * (1.0 + std::abs(t));
     auto it = std::lower_bound(at_.begin(), at_.end(), t - same,
                                [](const Instant& x, double v) { return x.t < v; });
     return it != at_.end() && it->t <= t + same ? it->shift : StartShift{};
@@ -161,6 +162,43 @@ class StartShifts {
   };
   std::vector<Instant> at_;  // in time order
 };
+
+// Whether the times of event k, dt apart, leave the events' order and spacing unresolved: they
+// differ by more than a share of the time to the neighbouring events and by more than the
+// tolerance explains, or the two runs put the spacing before it that share apart and more than
+// round-off (kTrustPolicy.unresolved_share).
+bool unresolved(const std::vector<Event>& a, const std::vector<Event>& b, std::size_t k, double dt,
+                double explained, double round_off, double t_reached) {
+  const double t = a[k].t;
+  const double gap_a = t - (k == 0 ? 0.0 : a[k - 1].t),
+               gap_b = b[k].t - (k == 0 ? 0.0 : b[k - 1].t);
+  const double gap_difference = std::abs(gap_a - gap_b);
+  return (dt > kTrustPolicy.unresolved_share * spacing(a, k, t_reached) && dt > explained) ||
+         (gap_difference > kTrustPolicy.unresolved_share * std::min(gap_a, gap_b) &&
+          gap_difference > round_off);
+}
+
+// Ends the trust before the first event one run lists and the other does not (or lists
+// otherwise): event k of both, or the first past the shorter list, if it comes before t_common.
+void end_at_first_difference(const Model& model, const Stats& st, const std::vector<Event>& a,
+                             const std::vector<Event>& b, std::size_t k, double t_common,
+                             TrustReport& r) {
+  const std::size_t n = std::min(a.size(), b.size());
+  const Event* e = nullptr;
+  if (k < n && !listed_alike(a[k], b[k])) {
+    e = a[k].t < b[k].t ? &a[k] : &b[k];
+  } else if (k == n && a.size() != b.size()) {
+    const std::vector<Event>& longer = a.size() > n ? a : b;
+    if (longer[n].t <= t_common) e = &longer[n];
+  }
+  if (!e) return;
+  r.first_difference = static_cast<int>(k);
+  const double window = grazing_window(model, st, e->phi);
+  r.trusted_until =
+      std::min(r.trusted_until,
+               trust_end(a, b, k, std::max(kTrustPolicy.margin_errors * r.event_time_error, window),
+                         r.event_time_error));
+}
 
 // The final states' difference completes a report.
 TrustReport finish(const Model& model, const RunResult& run, const RunResult& shadow,
@@ -246,7 +284,8 @@ std::vector<Event> by_instant(const std::vector<Event>& events) {
   for (std::size_t i = 0; i < events.size();) {
     const double t = events[i].t;
     const auto first = static_cast<std::ptrdiff_t>(out.size());
-    for (; i < events.size() && events[i].t <= t + 1e-12 * (1.0 + std::abs(t)); ++i) {
+    for (; i < events.size() && events[i].t <= t + kTrustPolicy.same_instant * (1.0 + std::abs(t));
+         ++i) {
       const Event& e = events[i];
       const bool merges = e.kind == EventKind::collision || e.kind == EventKind::limiter;
       auto same = std::find_if(out.begin() + first, out.end(), [&](const Event& x) {
@@ -269,8 +308,9 @@ std::vector<Event> by_instant(const std::vector<Event>& events) {
   return out;
 }
 
-SimOptions check_options(const SimOptions& run) {
-  SimOptions o = run;
+ShadowOptions check_options(const SimOptions& run) {
+  ShadowOptions shadow{run};
+  SimOptions& o = shadow.options;
   // Another method errs independently where the same one at a tighter tolerance may take the
   // same steps: DOP853 checks DOPRI5 (it is the cheaper at the tighter tolerance), and `auto`
   // (an explicit method where the scene is not stiff) checks Radau IIA, whose own shadow shared
@@ -284,8 +324,8 @@ SimOptions check_options(const SimOptions& run) {
   // cancelled its error (trust scan, seed 4, scene 52: 3e-3 s estimated at 1.1e-4 s). DOP853's
   // run and shadow share their steps only where the longest step holds both, and the shadow's is
   // half the run's: a capped step errs 2⁹ times less (2⁶ for DOPRI5). Held alike, a run at rtol
-  // 1e-6 and its shadow at 1e-8 took the same 280 steps of 1/Ω and shared an error a chaotic
-  // chain amplified to 1.6e-7 s (seed 1, scene 380: estimated at 6.7e-10 s).
+  // 1e-6 and its shadow at 1e-8 took the same steps of 1/Ω and shared an error a chaotic
+  // chain amplified (Trust.AShadowDoesNotShareTheRunsCappedSteps).
   //
   // The shadow's error must be well below the run's, whatever the methods' error constants
   // and whatever luck a run has: it runs at a hundredth of both tolerances (at a thirtieth
@@ -295,26 +335,26 @@ SimOptions check_options(const SimOptions& run) {
   // run for DOP853, 2.11× for DOPRI5, 1.31× for Radau IIA).
   if (run.method == Method::dopri5) o.method = Method::dop853;
   if (run.method == Method::radau5) o.method = Method::automatic;
-  if (run.method == Method::automatic &&
-      auto_explicit_for(run.rtol, run.auto_explicit) == AutoExplicit::dopri5)
-    o.auto_explicit = AutoExplicit::dop853;  // covers the runs that weigh DOPRI5 against DOP853
-  o.rtol = std::max(run.rtol / 100.0, kSmallestRtol);
-  o.atol = std::max(run.atol / 100.0, kSmallestAtol);
-  o.longest_step_scale = 0.5 * run.longest_step_scale;
+  if (run.method == Method::automatic && auto_explicit_for(run.rtol) == AutoExplicit::dopri5)
+    shadow.auto_explicit =
+        AutoExplicit::dop853;  // covers the runs that weigh DOPRI5 against DOP853
+  o.rtol = std::max(run.rtol / kTrustPolicy.shadow_tolerance_ratio, kSmallestRtol);
+  o.atol = std::max(run.atol / kTrustPolicy.shadow_tolerance_ratio, kSmallestAtol);
+  shadow.longest_step_scale = kTrustPolicy.shadow_step_share;
   o.record.clear();
   o.stops.clear();
   o.check = false;
   // The start's shifts are found along its path, over its first 20,000 instants (about 20 MB; a
   // run may list 200,000): past them the shadow is taken as it is.
   o.keep_path = true;
-  o.path_limit = 20000;
+  o.path_limit = kTrustPolicy.shift_instants;
   o.lyapunov = false;
-  return o;
+  return shadow;
 }
 
 Model check_model(const Model& model) {
   Model m = model;
-  const double ulps = 64.0 * std::numeric_limits<double>::epsilon();
+  const double ulps = kTrustPolicy.start_ulps * std::numeric_limits<double>::epsilon();
   for (Pellet& p : m.pellets) {
     if (p.dphi0 != 0.0) p.phi0 += ulps * (1.0 + std::abs(p.phi0));
     p.dphi0 *= 1.0 + ulps;
@@ -342,7 +382,8 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     const StartShift shift = shifts.at(b[k].t);
     const double dt = std::max(std::abs(t - b[k].t), std::abs(t - (b[k].t - shift.start)));
     const double round_off =
-        std::max({1e3 * std::numeric_limits<double>::epsilon() * (time_scale + t),
+        std::max({kTrustPolicy.time_round_off_ulps * std::numeric_limits<double>::epsilon() *
+                      (time_scale + t),
                   placement_round_off(a[k]), std::abs(shift.round_off)});
     // Times that differ by more than a tenth of the time to the neighbouring events, and by
     // more than the tolerance explains (a thousand times rtol over the time scale and the time
@@ -352,16 +393,13 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     // tolerance explains: a chaotic run at rtol 1e-7 and its shadow put a turn and an impact
     // 5.7e-7 s and 6.9e-6 s apart (each 2e-5 s off, less than the 9e-5 s the tolerance
     // explains), and a reference listed them the other way round.
-    const double explained = 1e3 * run.stats.rtol * (time_scale + t);
-    const double gap_a = t - (k == 0 ? 0.0 : a[k - 1].t),
-                 gap_b = b[k].t - (k == 0 ? 0.0 : b[k - 1].t);
-    const double gap_difference = std::abs(gap_a - gap_b);
-    if ((dt > 0.1 * spacing(a, k, run.stats.t_reached) && dt > explained) ||
-        (gap_difference > 0.1 * std::min(gap_a, gap_b) && gap_difference > round_off)) {
+    const double explained = kTrustPolicy.explained_rtols * run.stats.rtol * (time_scale + t);
+    if (unresolved(a, b, k, dt, explained, round_off, run.stats.t_reached)) {
       r.unresolved = static_cast<int>(k);
       r.trusted_until =
           std::min(r.trusted_until,
-                   trust_end(a, b, k, 10.0 * std::max(dt, r.event_time_error), r.event_time_error));
+                   trust_end(a, b, k, kTrustPolicy.margin_errors * std::max(dt, r.event_time_error),
+                             r.event_time_error));
       return finish(model, run, shadow, r);
     }
     // Errors the run and its shadow share, the shadow cannot see: the round-off of event times
@@ -374,27 +412,10 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     // A run vouches for no less than a hundredth of what its tolerance asks, rtol·(T0 + t): a
     // run and its shadow of one method that agree far better than asked may share the error
     // (both 1e-12 s apart, a reference 2e-11 s away, rtol asking 1e-9 s).
-    const double asked = 1e-2 * run.stats.rtol * (time_scale + t);
+    const double asked = kTrustPolicy.asked_share * run.stats.rtol * (time_scale + t);
     r.event_time_error = std::max({r.event_time_error, dt, round_off, chatter, asked});
   }
-  // The first event one run lists and the other does not (or lists otherwise).
-  if (k < n && !listed_alike(a[k], b[k])) {
-    r.first_difference = static_cast<int>(k);
-    const Event& e = a[k].t < b[k].t ? a[k] : b[k];
-    const double window = grazing_window(model, run.stats, e.phi);
-    r.trusted_until = std::min(
-        r.trusted_until,
-        trust_end(a, b, k, std::max(10.0 * r.event_time_error, window), r.event_time_error));
-  } else if (k == n && a.size() != b.size()) {
-    const std::vector<Event>& longer = a.size() > n ? a : b;
-    if (longer[n].t <= t_common) {
-      r.first_difference = static_cast<int>(n);
-      const double window = grazing_window(model, run.stats, longer[n].phi);
-      r.trusted_until = std::min(
-          r.trusted_until,
-          trust_end(a, b, n, std::max(10.0 * r.event_time_error, window), r.event_time_error));
-    }
-  }
+  end_at_first_difference(model, run.stats, a, b, k, t_common, r);
   return finish(model, run, shadow, r);
 }
 

@@ -20,7 +20,14 @@ namespace vibro {
 // tolerances (down to the smallest the integrators accept) with its longest step halved: DOPRI5
 // checked by DOP853, Radau IIA by `auto`, DOP853 by itself, and `auto` by itself, on DOP853 where
 // it weighs DOPRI5 against DOP853 (rtol 1e-6 and looser).
-SimOptions check_options(const SimOptions& run);
+struct ShadowOptions {
+  SimOptions options;
+  // The shadow's stepper (make_stepper, core/run/simulate.h): which explicit method its `auto`
+  // runs, and its longest step as a share of longest_step(model).
+  AutoExplicit auto_explicit = AutoExplicit::by_tolerance;
+  double longest_step_scale = 1.0;
+};
+ShadowOptions check_options(const SimOptions& run);
 
 // The shadow's scene: the run's, its initial speeds 64 ulps faster and the angles of the pellets
 // that move 64 ulps ahead. Where the run and its shadow take the same steps (flights cut short by
@@ -28,9 +35,8 @@ SimOptions check_options(const SimOptions& run);
 // amplified by a chaotic chain of impacts, has already moved (trust scan seed 7, scene 534:
 // DOP853 at rtol 1e-10 and its shadow vouched for a turn where a reference listed a collision;
 // now their trust ends before). Speeds alone do not move a chain that starts at once: a pellet
-// 2e-9 rad from its limiter at 41 rad/s struck it at 4.8e-11 s, 64 ulps faster 7e-25 s sooner,
-// and the run and its shadow then agreed to 1e-22 s through 50 impacts whose round-off (1e-15 s)
-// a chaotic cascade amplified to 4e-7 s by 4 ms, estimated at 2.6e-8 s (seed 10, scene 71). Rest
+// near its limiter strikes it at once, and run and shadow then agree far below the round-off a
+// chaotic cascade amplifies (Trust.AShadowOfAnImpactAtOnceStrikesARoundOffApart). Rest
 // stays rest, contacts stay contacts, and the shadow's answer moves by round-off where the scene
 // does not amplify it. Over trust_scan seeds 1-32 (640,000 runs) the angles took the estimates
 // ten times short from 24 to 13 and the wrong events vouched for from 8 to 4, with the share

@@ -5,8 +5,8 @@
 #include <string>
 #include <vector>
 
+#include "core/analysis/checked_run.h"
 #include "core/run/deadline.h"
-#include "core/run/simulate.h"
 
 namespace vibro {
 namespace {

@@ -8,9 +8,9 @@
 #include <algorithm>
 #include <string>
 
+#include "core/analysis/checked_run.h"
 #include "core/integrators/auto_switch.h"
 #include "core/integrators/stepper.h"
-#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {

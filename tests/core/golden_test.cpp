@@ -10,7 +10,7 @@
 #include <fstream>
 #include <sstream>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "io/presets.h"
 #include "scenes.h"
 

@@ -7,8 +7,8 @@
 #include <cmath>
 #include <numbers>
 
+#include "core/analysis/checked_run.h"
 #include "core/analysis/monodromy.h"
-#include "core/run/simulate.h"
 
 namespace vibro {
 namespace {

@@ -4,8 +4,8 @@
 
 #include <cmath>
 
+#include "core/analysis/checked_run.h"
 #include "core/events/watch.h"
-#include "core/run/simulate.h"
 #include "scenes.h"
 
 namespace vibro {

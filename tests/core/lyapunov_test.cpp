@@ -8,9 +8,9 @@
 
 #include <cmath>
 
+#include "core/analysis/checked_run.h"
 #include "core/analysis/periodic_orbit.h"
 #include "core/analysis/sweep.h"
-#include "core/run/simulate.h"
 #include "tests/core/impact_oscillator.h"
 
 namespace vibro {

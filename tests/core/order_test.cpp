@@ -6,7 +6,7 @@
 #include <numeric>
 #include <random>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "scenes.h"
 
 namespace vibro {

@@ -14,9 +14,9 @@
 #include <map>
 #include <string>
 
+#include "core/analysis/checked_run.h"
 #include "core/analysis/monodromy.h"
 #include "core/analysis/orbit_continuation.h"
-#include "core/run/simulate.h"
 #include "tests/core/impact_oscillator.h"
 
 namespace vibro {

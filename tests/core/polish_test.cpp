@@ -5,7 +5,7 @@
 #include <algorithm>
 #include <cmath>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "scenes.h"
 
 namespace vibro {

@@ -6,7 +6,7 @@
 
 #include <cmath>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "scenes.h"
 
 namespace vibro {

@@ -1,15 +1,18 @@
 // The recorder's sample budget (SimOptions::max_samples): past it the branches are thinned, so a
 // long run is drawn whole; what is kept is a subset of the unbounded run's samples, with every
 // branch's ends.
+#include "core/run/recorder.h"
+
 #include <gtest/gtest.h>
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <set>
 #include <tuple>
 
+#include "core/analysis/checked_run.h"
 #include "core/model/first_integral.h"
-#include "core/run/simulate.h"
 #include "tests/core/scenes.h"
 
 namespace vibro {
@@ -121,6 +124,63 @@ TEST(Recorder, ChordsBetweenSamplesStayOnTheCurve) {
   }
   EXPECT_GT(chords, 100);
   EXPECT_LT(worst, 3e-4);
+}
+
+// The Recorder on hand-made states: branches open at the first sample after end_branch, the same
+// state twice is one sample, nothing past record_until is kept, and the ends survive thinning.
+Vec state_of(double phi, double dphi) {
+  Vec y(3);
+  y << phi, dphi, 0.0;
+  return y;
+}
+
+TEST(Recorder, BranchesOpenAfterTheirEndAndTheSameStateTwiceIsOneSample) {
+  const Model m = testing::preset("impact-oscillator").model;
+  Recorder r(m, {true}, 2.5, 0);
+  r.sample(0.0, state_of(0.0, 1.0));
+  r.sample(0.5, state_of(0.5, 1.0));
+  r.sample(0.5, state_of(0.5, 1.0));  // once
+  r.end_branch(0);
+  r.sample(0.5, state_of(0.5, -1.0));  // the state after the instant opens branch 2
+  r.sample(2.0, state_of(-1.0, -1.0));
+  r.sample(3.0, state_of(-2.0, -1.0));  // past record_until
+  EXPECT_FALSE(r.wants_samples(2.5));
+  RunResult result;
+  r.finish(3.0, result);
+  ASSERT_EQ(result.tracks.size(), 1u);
+  const auto& branches = result.tracks[0].branches;
+  ASSERT_EQ(branches.size(), 2u);
+  EXPECT_EQ(branches[0].index, 1);
+  EXPECT_EQ(branches[1].index, 2);
+  EXPECT_EQ(branches[0].samples.size(), 2u);
+  ASSERT_EQ(branches[1].samples.size(), 2u);
+  EXPECT_EQ(branches[1].samples.front().dphi, -1.0);
+  EXPECT_EQ(branches[1].samples.back().t, 2.0);
+}
+
+TEST(Recorder, ThinningKeepsEveryBranchsEnds) {
+  const Model m = testing::preset("impact-oscillator").model;
+  Recorder r(m, {true}, std::numeric_limits<double>::infinity(), 10);
+  for (int k = 0; k <= 100; ++k) r.sample(0.01 * k, state_of(0.01 * k, 1.0));
+  RunResult result;
+  r.finish(1.0, result);
+  const auto& samples = result.tracks[0].branches.at(0).samples;
+  EXPECT_LE(samples.size(), 12u);
+  EXPECT_EQ(samples.front().t, 0.0);
+  EXPECT_EQ(samples.back().t, 1.0);
+  for (std::size_t k = 1; k < samples.size(); ++k) EXPECT_LT(samples[k - 1].t, samples[k].t);
+}
+
+TEST(Recorder, PiecesFollowTheCurvesBend) {
+  const Model m = testing::preset("impact-oscillator").model;
+  Recorder r(m, {true}, std::numeric_limits<double>::infinity(), 0);
+  const Vec a = state_of(0.0, 0.0), end = state_of(1.0, 1.0);
+  // A straight step needs no more pieces than asked; one that bows by a tenth of the extent needs
+  // about sqrt(0.1 / 1e-4) ≈ 32.
+  EXPECT_EQ(r.pieces(a, state_of(0.5, 0.5), 0.5, end, 5), 5);
+  const int bent = r.pieces(a, state_of(0.5, 0.6), 0.5, end, 5);
+  EXPECT_GE(bent, 30);
+  EXPECT_LE(bent, 64);
 }
 
 }  // namespace

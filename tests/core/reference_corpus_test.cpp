@@ -15,7 +15,7 @@
 #include <nlohmann/json.hpp>
 #include <sstream>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "io/scene_json.h"
 
 #ifndef VIBRO_REFERENCE_CORPUS

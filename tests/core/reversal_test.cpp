@@ -6,9 +6,9 @@
 #include <string>
 #include <vector>
 
+#include "core/analysis/checked_run.h"
 #include "core/integrators/stepper.h"
 #include "core/model/dynamics.h"
-#include "core/run/simulate.h"
 
 namespace vibro {
 namespace {

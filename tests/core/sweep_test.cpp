@@ -9,8 +9,8 @@
 #include <cmath>
 #include <tuple>
 
+#include "core/analysis/checked_run.h"
 #include "core/model/parameter.h"
-#include "core/run/simulate.h"
 #include "tests/core/impact_oscillator.h"
 
 namespace vibro {

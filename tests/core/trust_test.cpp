@@ -9,7 +9,9 @@
 #include <cmath>
 #include <limits>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
+#include "core/analysis/trust_policy.h"
+#include "core/events/event_tolerances.h"
 #include "scenes.h"
 
 namespace vibro {
@@ -289,6 +291,72 @@ TEST(Trust, TheTrustEndsTenErrorsBeforeTheLastEventListedAlike) {
   EXPECT_DOUBLE_EQ(r.trusted_until, 1.0 - 10.0 * r.event_time_error);
 }
 
+// The policy's thresholds on hand-made lists (core/analysis/trust_policy.h): a run that agrees
+// with its shadow vouches for no less than asked_share of what its tolerance asks; a difference
+// past unresolved_share of the spacing and past what explained_rtols explain ends the trust.
+Event collision_at(double t) {
+  Event e;
+  e.t = t;
+  e.kind = EventKind::collision;
+  e.pellets = {0, 1};
+  return e;
+}
+
+TEST(TrustPolicy, AgreementFarBelowTheToleranceVouchesForWhatItAsks) {
+  const Model model = testing::preset("paper").model;
+  RunResult run;
+  run.events = {collision_at(0.5), collision_at(1.0)};
+  run.stats.t_reached = 2.0;
+  run.stats.rtol = 1e-9;
+  const TrustReport r = compare_runs(model, run, run);
+  const double time_scale = event_tolerances(model).time_scale;
+  EXPECT_EQ(r.first_difference, -1);
+  EXPECT_EQ(r.unresolved, -1);
+  EXPECT_EQ(r.trusted_until, 2.0);
+  EXPECT_DOUBLE_EQ(r.event_time_error,
+                   kTrustPolicy.asked_share * run.stats.rtol * (time_scale + 1.0));
+}
+
+TEST(TrustPolicy, ADifferencePastAShareOfTheSpacingIsUnresolved) {
+  const Model model = testing::preset("paper").model;
+  RunResult run, shadow;
+  run.stats.t_reached = shadow.stats.t_reached = 2.0;
+  run.stats.rtol = shadow.stats.rtol = 1e-12;  // explains almost nothing
+  const double spacing = 0.5;
+  const double within = 0.5 * kTrustPolicy.unresolved_share * spacing;
+  run.events = {collision_at(0.5), collision_at(1.0)};
+  shadow.events = {collision_at(0.5), collision_at(1.0 + within)};
+  EXPECT_EQ(compare_runs(model, run, shadow).unresolved, -1);
+  shadow.events.back().t = 1.0 + 2.0 * kTrustPolicy.unresolved_share * spacing;
+  const TrustReport r = compare_runs(model, run, shadow);
+  EXPECT_EQ(r.unresolved, 1);
+  EXPECT_LT(r.trusted_until, 1.0);
+}
+
+TEST(TrustPolicy, EventsWithinTheSameInstantAreOneInstant) {
+  const double t = 1.0;
+  std::vector<Event> events = {collision_at(t), collision_at(t)};
+  events[1].pellets = {1, 2};
+  events[1].t = t + 0.5 * kTrustPolicy.same_instant * (1.0 + t);
+  ASSERT_EQ(by_instant(events).size(), 1u);
+  EXPECT_EQ(by_instant(events)[0].pellets, (std::vector<int>{0, 1, 2}));
+  events[1].t = t + 2.0 * kTrustPolicy.same_instant * (1.0 + t);
+  EXPECT_EQ(by_instant(events).size(), 2u);
+}
+
+TEST(TrustPolicy, TheShadowFollowsThePolicy) {
+  SimOptions run;
+  run.rtol = 1e-8;
+  run.atol = 1e-10;
+  const ShadowOptions s = check_options(run);
+  EXPECT_EQ(s.options.rtol, run.rtol / kTrustPolicy.shadow_tolerance_ratio);
+  EXPECT_EQ(s.options.atol, run.atol / kTrustPolicy.shadow_tolerance_ratio);
+  EXPECT_EQ(s.longest_step_scale, kTrustPolicy.shadow_step_share);
+  EXPECT_EQ(s.options.path_limit, kTrustPolicy.shift_instants);
+  EXPECT_TRUE(s.options.keep_path);
+  EXPECT_TRUE(s.options.record.empty());
+}
+
 // The shadow's method and tolerances (docs/MODEL.md, "Error estimate and trust"): another
 // method where one errs alike at any tolerance, DOP853 its own, always at a hundredth of both
 // tolerances and with its longest step halved.
@@ -300,12 +368,12 @@ TEST(Trust, TheShadowsMethodAndTolerances) {
     run.atol = rtol / 100;
     return check_options(run);
   };
-  EXPECT_EQ(shadow_of(Method::dopri5, 1e-6).method, Method::dop853);
-  EXPECT_EQ(shadow_of(Method::dop853, 1e-6).method, Method::dop853);
-  EXPECT_EQ(shadow_of(Method::radau5, 1e-6).method, Method::automatic);
+  EXPECT_EQ(shadow_of(Method::dopri5, 1e-6).options.method, Method::dop853);
+  EXPECT_EQ(shadow_of(Method::dop853, 1e-6).options.method, Method::dop853);
+  EXPECT_EQ(shadow_of(Method::radau5, 1e-6).options.method, Method::automatic);
   // `auto` weighing DOPRI5 against DOP853 (rtol 1e-6 and looser) is checked by `auto` on
   // DOP853, a shadow more accurate than either; on DOP853 (rtol 1e-7 down), by itself.
-  SimOptions s = shadow_of(Method::automatic, 1e-6);
+  ShadowOptions s = shadow_of(Method::automatic, 1e-6);
   EXPECT_EQ(auto_explicit_for(1e-6), AutoExplicit::dopri5);
   EXPECT_EQ(s.auto_explicit, AutoExplicit::dop853);
   EXPECT_EQ(shadow_of(Method::automatic, 1e-7).auto_explicit, AutoExplicit::by_tolerance);
@@ -313,10 +381,10 @@ TEST(Trust, TheShadowsMethodAndTolerances) {
     for (double rtol : {1e-6, 1e-7, 1e-9}) {
       SCOPED_TRACE(testing::method_at(m, rtol));
       s = shadow_of(m, rtol);
-      EXPECT_DOUBLE_EQ(s.rtol, rtol / 100);
-      EXPECT_DOUBLE_EQ(s.atol, rtol / 1e4);
+      EXPECT_DOUBLE_EQ(s.options.rtol, rtol / 100);
+      EXPECT_DOUBLE_EQ(s.options.atol, rtol / 1e4);
       EXPECT_EQ(s.longest_step_scale, 0.5);
-      EXPECT_FALSE(s.check);
+      EXPECT_FALSE(s.options.check);
     }
   }
 }
@@ -363,7 +431,7 @@ TEST(Trust, AShadowOfAnImpactAtOnceStrikesARoundOffApart) {
   o.t_end = 1e-6;
   o.check = false;
   const RunResult run = simulate(model, o);
-  const RunResult shadow = simulate(check_model(model), check_options(o));
+  const RunResult shadow = run_shadow(model, o, o.deadline_ms);
   ASSERT_EQ(run.events.size(), 1u);
   ASSERT_EQ(shadow.events.size(), 1u);
   const double apart = std::abs(run.events[0].t - shadow.events[0].t);

@@ -7,7 +7,7 @@
 #include <tuple>
 #include <vector>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "tests/differential/conditioning.h"
 
 namespace vibro::differential {

@@ -31,8 +31,8 @@
 #include <thread>
 #include <vector>
 
+#include "core/analysis/checked_run.h"
 #include "core/analysis/trust.h"
-#include "core/run/simulate.h"
 #include "core/run/validate.h"
 #include "tests/differential/compare.h"
 #include "tests/differential/scene_gen.h"
@@ -181,7 +181,7 @@ void show(const RandomScene& scene, Method method, double rtol) {
   const auto [ref, alternates] = references(scene);
   const SimOptions o = checked_run(scene, method, rtol);
   const RunResult run = simulate(scene.model, o);
-  const RunResult shadow = simulate(check_model(scene.model), check_options(o));
+  const RunResult shadow = run_shadow(scene.model, o, o.deadline_ms);
   std::vector<std::vector<Event>> lists = {by_instant(run.events), by_instant(shadow.events),
                                            by_instant(ref.events)};
   std::cout << "run " << method_name(method) << " rtol " << rtol << ": event_time_error "

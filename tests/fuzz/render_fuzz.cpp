@@ -26,7 +26,7 @@
 #include <thread>
 #include <vector>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "io/scene_json.h"
 #include "render/figure.h"
 #include "render/run_plan.h"

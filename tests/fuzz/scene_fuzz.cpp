@@ -11,7 +11,7 @@
 #include <string>
 #include <string_view>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "io/orbit_json.h"
 #include "io/orbit_request.h"
 #include "io/scene_json.h"

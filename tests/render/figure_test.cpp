@@ -6,7 +6,7 @@
 
 #include <string>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "core/run/validate.h"
 #include "paper_scene.h"
 #include "png_decode.h"

@@ -5,7 +5,7 @@
 
 #include <string>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "paper_scene.h"
 #include "render/figure.h"
 

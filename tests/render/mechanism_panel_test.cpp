@@ -11,7 +11,7 @@
 #include <numbers>
 #include <string>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "paper_scene.h"
 #include "png_decode.h"
 #include "render/figure.h"

@@ -10,7 +10,7 @@
 
 #include <vector>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "png_decode.h"
 #include "render/cairo_ptr.h"
 #include "render/figure.h"

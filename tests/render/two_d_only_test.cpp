@@ -5,7 +5,7 @@
 #include <fstream>
 #include <string>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "paper_scene.h"
 #include "render/figure.h"
 #include "render/gl/offscreen_context.h"

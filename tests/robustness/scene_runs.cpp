@@ -2,7 +2,7 @@
 
 #include <gtest/gtest.h>
 
-#include "core/run/simulate.h"
+#include "core/analysis/checked_run.h"
 #include "io/scene_json.h"
 #include "tests/robustness/run_invariants.h"
 
