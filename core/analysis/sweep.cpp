@@ -10,6 +10,7 @@
 
 #include "core/analysis/checked_run.h"
 #include "core/model/parameter.h"
+#include "core/run/deadline.h"
 
 namespace vibro {
 namespace {
@@ -135,52 +136,55 @@ int section_period(const std::vector<StateAt>& stops, double speed_scale) {
 
 bool held(const FinalState& s) { return s.state != PelletState::sliding; }
 
-// One run of the sweep, from `start`; `last` receives its last state.
-SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec& spec,
-                 const Start& start, Start& last) {
-  const double T = sweep_period(model);
-  const double t_record = spec.transient * T;
+// The options of one run: the transient and the record, events kept from the record's start, the
+// stroboscopic stops where the section asks for them.
+SimOptions sweep_run_options(const SimOptions& options, const SweepSpec& spec, double T) {
   SimOptions o = options;
   o.t_end = (spec.transient + spec.record) * T;
   o.record.clear();
   o.stops.clear();
-  o.keep_events_from = t_record;
+  o.keep_events_from = spec.transient * T;
   o.lyapunov = spec.lyapunov;
   if (spec.section == SectionKind::stroboscopic)
     for (int k = spec.transient; k <= spec.transient + spec.record; ++k) o.stops.push_back(k * T);
-  Model m = model;
-  for (int i = 0; i < m.size(); ++i) {
-    m.pellets[i].phi0 = start.phi[i];
-    m.pellets[i].dphi0 = start.dphi[i];
-  }
-  const RunResult r = simulate(m, o);
+  return o;
+}
 
-  SweepRun run;
-  auto phase = [&](double t) { return kTwoPi * (t / T - std::floor(t / T)); };
-  if (spec.section == SectionKind::stroboscopic) {
-    run.points.reserve(r.stops.size() * m.pellets.size());
-    for (const StateAt& s : r.stops)
-      for (int i = 0; i < m.size(); ++i) {
-        run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase(s.t), -1,
-                              s.t <= r.stats.trusted_until});
-        run.sticks = run.sticks || held(s.pellets[i]);
-      }
-    run.period = section_period(r.stops, speed_scale(m));
-  }
+// The forcing's phase of time t, rad in [0, 2π).
+double phase_of(double t, double T) { return kTwoPi * (t / T - std::floor(t / T)); }
+
+// The stroboscopic section's points, whether a pellet was held at one, and the period they repeat.
+void add_stroboscopic_points(const RunResult& r, int pellets, double T, double speed,
+                             SweepRun& run) {
+  run.points.reserve(r.stops.size() * pellets);
+  for (const StateAt& s : r.stops)
+    for (int i = 0; i < pellets; ++i) {
+      run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase_of(s.t, T), -1,
+                            s.t <= r.stats.trusted_until});
+      run.sticks = run.sticks || held(s.pellets[i]);
+    }
+  run.period = section_period(r.stops, speed);
+}
+
+// The recorded events: impacts counted per period, sticks noted, limiter impacts as the impact
+// section's points.
+void add_recorded_events(const RunResult& r, const SweepSpec& spec, double T, SweepRun& run) {
   int impacts = 0;
   for (const Event& e : r.events) {
-    if (e.t < t_record) continue;
+    if (e.t < spec.transient * T) continue;
     if (e.kind == EventKind::limiter || e.kind == EventKind::collision ||
         e.kind == EventKind::chatter)
       ++impacts;
     if (e.kind == EventKind::stick) run.sticks = true;
     if (spec.section == SectionKind::impact && e.kind == EventKind::limiter)
-      run.points.push_back({e.pellets[0], e.t, e.phi, e.dphi_before[0], phase(e.t), e.limiter,
+      run.points.push_back({e.pellets[0], e.t, e.phi, e.dphi_before[0], phase_of(e.t, T), e.limiter,
                             e.t <= r.stats.trusted_until});
   }
-  // A vector's growth leaves up to half of it spare: a sweep keeps exactly its points.
-  run.points.shrink_to_fit();
   run.impacts_per_period = static_cast<double>(impacts) / spec.record;
+}
+
+// How the run ended, and how far it is trusted.
+void add_outcome(const RunResult& r, SweepRun& run) {
   run.at_rest = std::all_of(r.summary.final.begin(), r.summary.final.end(), held);
   run.termination = r.stats.termination;
   run.message = r.stats.message;
@@ -190,6 +194,25 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
   run.trusted_until = r.stats.trusted_until;
   if (r.lyapunov && r.lyapunov->unsupported.empty() && !r.lyapunov->exponents.empty())
     run.lyapunov = r.lyapunov->exponents.front();
+}
+
+// One run of the sweep, from `start`; `last` receives its last state.
+SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec& spec,
+                 const Start& start, Start& last) {
+  const double T = sweep_period(model);
+  Model m = model;
+  for (int i = 0; i < m.size(); ++i) {
+    m.pellets[i].phi0 = start.phi[i];
+    m.pellets[i].dphi0 = start.dphi[i];
+  }
+  const RunResult r = simulate(m, sweep_run_options(options, spec, T));
+  SweepRun run;
+  if (spec.section == SectionKind::stroboscopic)
+    add_stroboscopic_points(r, m.size(), T, speed_scale(m), run);
+  add_recorded_events(r, spec, T, run);
+  // A vector's growth leaves up to half of it spare: a sweep keeps exactly its points.
+  run.points.shrink_to_fit();
+  add_outcome(r, run);
   last.phi.clear();
   last.dphi.clear();
   for (const FinalState& f : r.summary.final) {
@@ -325,79 +348,119 @@ void order_sweep_runs(std::vector<SweepRun>& runs) {
                    [&](const SweepRun& a, const SweepRun& b) { return key(a) < key(b); });
 }
 
+namespace {
+
+// What the threads of one sweep share: the next chain to take, the counts, and why the sweep
+// stopped. Each worker takes whole chains; between runs it looks at the cancel flag and the
+// bounds (the wall-clock budget, the section points kept).
+class SweepWork {
+ public:
+  SweepWork(const Model& model, const SimOptions& options, const SweepSpec& spec,
+            const SweepControl& control)
+      : model_(model),
+        options_(options),
+        spec_(spec),
+        control_(control),
+        deadline_(Deadline::in_ms(control.budget_ms)),
+        chains_(sweep_chain_count(spec)),
+        total_(sweep_runs(spec)),
+        done_chains_(chains_) {}
+
+  // Takes chains until none is left or the sweep halts.
+  void work() {
+    for (int c = next_++; c < chains_ && look(); c = next_++) {
+      if (control_.skip && control_.skip(c)) continue;
+      done_chains_[c] = run_sweep_chain(
+          model_, options_, spec_, c, &halt_, [this] { run_done(); }, {},
+          [this](const SweepRun& run) { return admit(run); });
+      if (halt_) return;  // a chain cut short is not whole: no checkpoint keeps it
+      if (control_.chain_done) control_.chain_done(c, done_chains_[c]);
+    }
+  }
+
+  // The runs in a fixed order, whatever thread made which.
+  SweepResult result() {
+    SweepResult result;
+    for (auto& runs : done_chains_)
+      for (SweepRun& r : runs) result.runs.push_back(std::move(r));
+    order_sweep_runs(result.runs);
+    result.cancelled = cancelled_;
+    result.stopped = std::move(stopped_);
+    return result;
+  }
+
+ private:
+  void stop(FieldError why) {
+    const std::lock_guard lock(stop_mutex_);
+    if (!stopped_) stopped_ = std::move(why);
+    halt_ = true;
+  }
+
+  std::string runs_done() const {
+    return " after " + std::to_string(done_.load()) + " of " + std::to_string(total_) + " runs";
+  }
+
+  // The bounds and the cancel flag; false once the sweep halts.
+  bool look() {
+    if (control_.cancel && control_.cancel->load()) {
+      cancelled_ = true;
+      halt_ = true;
+    }
+    if (deadline_.left_ms() < 0.0)
+      stop({"sweep.count", "the sweep ran past its wall-clock budget of " +
+                               shortest_text(control_.budget_ms / 1000.0) + " s" + runs_done() +
+                               ": sweep fewer values, or record fewer periods"});
+    return !halt_;
+  }
+
+  // Whether the run's points fit under the bound on the points kept.
+  bool admit(const SweepRun& run) {
+    if (control_.max_points <= 0) return true;
+    const long n = static_cast<long>(run.points.size());
+    if (kept_.fetch_add(n) + n <= control_.max_points) return true;
+    kept_ -= n;
+    stop({"sweep.record", "the sweep's runs would keep more than its limit of " +
+                              std::to_string(control_.max_points) + " section points" +
+                              runs_done() + ": record fewer periods, or sweep fewer values"});
+    return false;
+  }
+
+  void run_done() {
+    const long d = ++done_;
+    if (control_.progress) control_.progress(d, total_);
+    look();
+  }
+
+  const Model& model_;
+  const SimOptions& options_;
+  const SweepSpec& spec_;
+  const SweepControl& control_;
+  const Deadline deadline_;
+  const int chains_;
+  const long total_;
+  std::vector<std::vector<SweepRun>> done_chains_;
+  std::atomic<int> next_{0};
+  std::atomic<long> done_{0};
+  std::atomic<long> kept_{0};  // section points of the runs kept
+  std::atomic<bool> cancelled_{false};
+  std::atomic<bool> halt_{false};  // cancelled or a bound reached: no new run starts
+  std::mutex stop_mutex_;
+  std::optional<FieldError> stopped_;
+};
+
+}  // namespace
+
 SweepResult run_sweep(const Model& model, const SimOptions& options, const SweepSpec& spec,
                       const SweepControl& control) {
   const auto t0 = std::chrono::steady_clock::now();
-  const int chains = sweep_chain_count(spec);
-  std::vector<std::vector<SweepRun>> done_chains(chains);
-  const long total = sweep_runs(spec);
-  std::atomic<int> next{0};
-  std::atomic<long> done{0};
-  std::atomic<long> kept{0};  // section points of the runs kept
-  std::atomic<bool> cancelled{false};
-  // Set when the sweep is cancelled or a bound is reached: no new run starts.
-  std::atomic<bool> halt{false};
-  std::mutex stop_mutex;
-  std::optional<FieldError> stopped;
-  auto stop = [&](FieldError why) {
-    const std::lock_guard lock(stop_mutex);
-    if (!stopped) stopped = std::move(why);
-    halt = true;
-  };
-  auto runs_done = [&] {
-    return " after " + std::to_string(done.load()) + " of " + std::to_string(total) + " runs";
-  };
-  // The bounds and the cancel flag, looked at between runs.
-  auto look = [&] {
-    if (control.cancel && control.cancel->load()) {
-      cancelled = true;
-      halt = true;
-    }
-    const double ms =
-        std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
-    if (ms > control.budget_ms)
-      stop({"sweep.count", "the sweep ran past its wall-clock budget of " +
-                               shortest_text(control.budget_ms / 1000.0) + " s" + runs_done() +
-                               ": sweep fewer values, or record fewer periods"});
-    return !halt;
-  };
-  auto admit = [&](const SweepRun& run) {
-    if (control.max_points <= 0) return true;
-    const long n = static_cast<long>(run.points.size());
-    if (kept.fetch_add(n) + n <= control.max_points) return true;
-    kept -= n;
-    stop({"sweep.record", "the sweep's runs would keep more than its limit of " +
-                              std::to_string(control.max_points) + " section points" + runs_done() +
-                              ": record fewer periods, or sweep fewer values"});
-    return false;
-  };
-  auto run_done = [&] {
-    const long d = ++done;
-    if (control.progress) control.progress(d, total);
-    look();
-  };
-  auto work = [&] {
-    for (int c = next++; c < chains && look(); c = next++) {
-      if (control.skip && control.skip(c)) continue;
-      done_chains[c] = run_sweep_chain(model, options, spec, c, &halt, run_done, {}, admit);
-      if (halt) return;  // a chain cut short is not whole: no checkpoint keeps it
-      if (control.chain_done) control.chain_done(c, done_chains[c]);
-    }
-  };
+  SweepWork sweep(model, options, spec, control);
   const int threads = std::max(1, control.threads);
   std::vector<std::thread> pool;
-  for (int k = 1; k < threads; ++k) pool.emplace_back(work);
-  work();
+  for (int k = 1; k < threads; ++k) pool.emplace_back([&sweep] { sweep.work(); });
+  sweep.work();
   for (std::thread& t : pool) t.join();
-
-  SweepResult result;
-  for (auto& runs : done_chains)
-    for (SweepRun& r : runs) result.runs.push_back(std::move(r));
-  // A fixed order, whatever thread made which run.
-  order_sweep_runs(result.runs);
+  SweepResult result = sweep.result();
   result.threads = threads;
-  result.cancelled = cancelled;
-  result.stopped = std::move(stopped);
   result.wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;

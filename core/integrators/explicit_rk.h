@@ -165,6 +165,9 @@ class ExplicitRk final : public Stepper {
   Vec f_precise_;    // f at the end of precise_state's step, if the scheme computes it
 };
 
+// One accepted step, retried until accepted or failed: DOPRI5's and DOP853's main loop (stages,
+// error norm, stiffness detection, step control), kept whole and in Hairer's order so that it
+// reads beside dopri5.f and dop853.f.
 template <class Scheme>
 StepStatus ExplicitRk<Scheme>::advance(double t_limit) {
   if (!f_finite_) return StepStatus::non_finite;

@@ -178,6 +178,9 @@ void Radau5::solve_stages(double h) {
   }
 }
 
+// RADAU5's simplified-Newton loop (Hairer's radau5.f): the rate estimate, the
+// divergence tests and the step-size hints are one decision, kept whole, in Hairer's order, so
+// that it reads line for line beside the Fortran it was checked against.
 Radau5::Newton Radau5::newton(double h, int& iterations) {
   if (first_) {
     for (Vec* v : {&z1_, &z2_, &z3_, &w1_, &w2_, &w3_}) v->setZero();
@@ -333,6 +336,9 @@ StepStatus Radau5::step(double t_limit) {
   return status;
 }
 
+// One accepted step, retried until accepted or failed: RADAU5's main loop (Jacobian reuse,
+// decompositions, Newton, error estimate, step control), kept whole and in Hairer's order for the
+// same reason as newton().
 StepStatus Radau5::advance(double t_limit) {
   if (!f_valid_) {
     sys_->rhs(t_, y_, f_);
