@@ -35,7 +35,7 @@ struct InstantView {
 
 // One accepted step over [a, b], before the state moves to its end (or to its event at t_event):
 // the event search's samples and the stepper's dense output over it.
-struct StepView {
+struct StepSamples {
   double a = 0.0, b = 0.0;
   const Vec& y_a;  // the state at a
   // The search's times inside the step and b last; states[k] holds the state at times[k] for k
@@ -70,8 +70,8 @@ class RunObserver {
   virtual void on_interval(double /*t*/, const Vec& /*y*/, const MotionInterval& /*interval*/) {}
   // A time steps must land on (> the current time), or infinity.
   virtual double landing() const { return std::numeric_limits<double>::infinity(); }
-  // Each accepted step, before its end (see StepView): cheap unless it asks for dense output.
-  virtual void on_step(const StepView& /*step*/) {}
+  // Each accepted step, before its end (see StepSamples): cheap unless it asks for dense output.
+  virtual void on_step(const StepSamples& /*step*/) {}
   // The state y at a step's end t, or at its first event (`at_event`), in the interval.
   virtual void on_step_end(double /*t*/, const Vec& /*y*/, const MotionInterval& /*interval*/,
                            bool /*at_event*/) {}

@@ -25,7 +25,7 @@ void Recording::on_interval(double t, const Vec& y, const MotionInterval& interv
 // The recorded curves of the step (a, b] before its event, if any (its own state is sampled at
 // on_step_end), in as many pieces as keep each chord close to its arc: the event search's
 // samples (computed here where the search skipped them), or more.
-void Recording::on_step(const StepView& s) {
+void Recording::on_step(const StepSamples& s) {
   if (!recorder_.wants_samples(s.a)) return;
   const int m = static_cast<int>(s.times.size()) - 1;
   states_.resize(s.times.size());

@@ -23,7 +23,7 @@ class Recording : public RunObserver {
 
   void on_instant(const InstantView& instant) override;
   void on_interval(double t, const Vec& y, const MotionInterval& interval) override;
-  void on_step(const StepView& step) override;
+  void on_step(const StepSamples& step) override;
   void on_step_end(double t, const Vec& y, const MotionInterval& interval, bool at_event) override;
   void on_end(const EndView& end, RunResult& result) override;
 

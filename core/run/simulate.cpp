@@ -87,14 +87,14 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     int first = 0;
     found = search_step(a, b, first);
     const bool event = !found.empty();
-    const StepView step{a,
-                        b,
-                        y_,
-                        times_,
-                        states_,
-                        first,
-                        event ? found.front().t : std::numeric_limits<double>::infinity(),
-                        stepper_};
+    const StepSamples step{a,
+                           b,
+                           y_,
+                           times_,
+                           states_,
+                           first,
+                           event ? found.front().t : std::numeric_limits<double>::infinity(),
+                           stepper_};
     for (RunObserver* o : observers_) o->on_step(step);
     t = event ? found.front().t : b;
     if (event) {

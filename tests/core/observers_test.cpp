@@ -34,7 +34,7 @@ class HookLog : public RunObserver {
     EXPECT_GE(t, last_t);
     ++intervals;
   }
-  void on_step(const StepView& s) override {
+  void on_step(const StepSamples& s) override {
     EXPECT_LT(s.a, s.b);
     EXPECT_EQ(s.times.back(), s.b);
     ++steps;
