@@ -64,7 +64,7 @@ if [[ $(id -u) -eq 0 ]]; then
 fi
 servers="" replica_upstreams="" job_routes=""
 for ((k = 1; k <= replicas; k++)); do
-  servers+="        server 127.0.0.1:$((port + k)) max_fails=1 fail_timeout=2s;"$'\n'
+  servers+="        server 127.0.0.1:$((port + k)) max_fails=3 fail_timeout=2s;"$'\n'
   replica_upstreams+="    upstream replica$k { server 127.0.0.1:$((port + k)); }"$'\n'
   job_routes+="        location ^~ /api/jobs/r$k- { proxy_pass http://replica$k; }"$'\n'
 done

@@ -1,5 +1,6 @@
 #include "server/connection_pool.h"
 
+#include <sys/ioctl.h>
 #include <sys/socket.h>
 
 namespace vibro::server {
@@ -69,7 +70,15 @@ void ConnectionPool::close_idle() {
     if (s.fd < 0 || s.idle_since > before) continue;
     // The socket may have been closed and its number reused since it went idle: it is shut
     // only while it is still the same connection.
-    if (is_connection(s.fd, s.connection)) ::shutdown(s.fd, SHUT_RD);
+    if (!is_connection(s.fd, s.connection)) {
+      s.fd = -1;
+      continue;
+    }
+    // A request already waiting in it makes it no longer idle: shut now, the client (a front
+    // door reusing the connection) would see it closed with its request unanswered.
+    int pending = 0;
+    if (::ioctl(s.fd, FIONREAD, &pending) == 0 && pending > 0) continue;
+    ::shutdown(s.fd, SHUT_RD);
     s.fd = -1;
   }
 }
