@@ -18,6 +18,7 @@
 #include "io/sweep_json.h"
 #include "server/run_scene.h"
 #include "tests/robustness/edge_values.h"
+#include "tests/sanitizers.h"
 
 namespace vibro::robustness {
 namespace {
@@ -147,17 +148,7 @@ void check_runs(const Scene& scene, const SweepResult& result, EdgeOutcome& out)
 
 // The sanitizers slow the work between two looks at a deadline some tenfold, while deadlines stay
 // wall clock: there the bound is four times as generous.
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double kSlack = 4.0;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr double kSlack = 4.0;
-#else
-constexpr double kSlack = 1.0;
-#endif
-#else
-constexpr double kSlack = 1.0;
-#endif
+constexpr double kSlack = vibro::testing::kUnderAsan ? 4.0 : 1.0;
 
 void check_time(const server::Limits& limits, EdgeOutcome& out) {
   if (out.ms > kSlack * (5.0 * limits.deadline_ms + 1000.0))

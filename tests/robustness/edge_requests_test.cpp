@@ -22,23 +22,14 @@
 #include "core/run/validate.h"
 #include "io/presets.h"
 #include "tests/robustness/edge_values.h"
+#include "tests/sanitizers.h"
 
 namespace vibro::robustness {
 namespace {
 
 using nlohmann::json;
 
-#if defined(__SANITIZE_ADDRESS__)
-constexpr double kDefaultFraction = 0.25;
-#elif defined(__has_feature)
-#if __has_feature(address_sanitizer)
-constexpr double kDefaultFraction = 0.25;
-#else
-constexpr double kDefaultFraction = 1.0;
-#endif
-#else
-constexpr double kDefaultFraction = 1.0;
-#endif
+constexpr double kDefaultFraction = vibro::testing::kUnderAsan ? 0.25 : 1.0;
 
 double fraction() {
   const char* s = std::getenv("VIBRO_EDGE_FRACTION");

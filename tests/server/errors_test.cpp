@@ -5,6 +5,7 @@
 #include <fstream>
 #include <nlohmann/json.hpp>
 
+#include "tests/sanitizers.h"
 #include "tests/server/test_server.h"
 
 namespace vibro::testing {
@@ -193,19 +194,7 @@ TEST_F(Errors, TwoContentLengthsAreRefused) {
 
 // AddressSanitizer's allocator keeps freed memory in quarantine: resident memory says nothing
 // about what the server gave back there.
-#if defined(__has_feature)
-#if __has_feature(address_sanitizer)
-#define VIBRO_OWN_ALLOCATOR 1
-#endif
-#endif
-#if defined(__SANITIZE_ADDRESS__)
-#define VIBRO_OWN_ALLOCATOR 1
-#endif
-#ifdef VIBRO_OWN_ALLOCATOR
-constexpr bool kGlibcAllocator = false;
-#else
-constexpr bool kGlibcAllocator = true;
-#endif
+constexpr bool kGlibcAllocator = !vibro::testing::kUnderAsan;
 
 // cpp-httplib keeps every header line it reads; a flood is refused, and its memory given back.
 TEST_F(Errors, AHeaderFloodIsRefusedAndItsMemoryGivenBack) {
