@@ -144,8 +144,7 @@ SceneOrError scene_from_json(const json& j, const Limits& limits) {
     s.sim.lyapunov = f.boolean("lyapunov", false);
     if (const json* plots = f.array("plots", limits.plots)) {
       for (std::size_t i = 0; i < plots->size(); ++i)
-        s.figure.plots.push_back(
-            plot_from_json((*plots)[i], item("plots", i), s.model.size(), s.sim.t_end));
+        s.figure.plots.push_back(plot_from_json((*plots)[i], item("plots", i), limits));
     }
     if (auto w = f.integer("width")) s.figure.width = static_cast<int>(*w);
     if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
