@@ -19,6 +19,7 @@ Pellet read_pellet(const json& j, const std::string& path) {
   p.m = f.required_number("m");
   p.phi0 = f.required_number("phi0");
   p.dphi0 = f.number("dphi0", 0.0);
+  p.c = f.number("c", 0.0);
   p.force.F0 = f.number("F0", 0.0);
   p.force.Omega = f.number("Omega", 0.0);
   p.force.psi = f.number("psi", 0.0);
@@ -282,6 +283,7 @@ json scene_to_json(const Scene& s) {
                        {"F0", p.force.F0},
                        {"Omega", p.force.Omega},
                        {"psi", p.force.psi}});
+    if (p.c != 0.0) pellets.back()["c"] = p.c;  // undamped scenes read back as before
   }
   model["pellets"] = pellets;
   json limiters = json::array();
