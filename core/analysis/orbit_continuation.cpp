@@ -67,6 +67,7 @@ class ScaledMap {
   Model at(double p) const { return at_phase(plain(p), phase_); }
   const SimOptions& options() const { return options_; }
   bool cancelled() const { return cancel_ && cancel_->load(); }
+  double band() const { return multiplier_band(options_); }
 
   Point evaluate(const Vec& v) const {
     Point pt;
@@ -214,13 +215,15 @@ struct Signature {
   std::vector<std::string> impacts;
 };
 
-Signature signature(const Point& pt, const Vec& t) {
+// Multipliers within `band` of the unit circle are neutral: they count neither way, so that an
+// area-preserving branch (on the circle to round-off) shows no Neimark–Sacker.
+Signature signature(const Point& pt, const Vec& t, double band) {
   Signature s;
   s.fold = t[t.size() - 1];
   std::complex<double> det = 1.0;
   for (const auto& mu : pt.multipliers) {
     det *= mu + 1.0;
-    if (std::abs(mu.imag()) > 1e-9 * std::abs(mu) && std::abs(mu) > 1.0) ++s.unstable_pairs;
+    if (std::abs(mu.imag()) > 1e-9 * std::abs(mu) && std::abs(mu) > 1.0 + band) ++s.unstable_pairs;
   }
   s.doubling = det.real();
   s.impacts = impact_pattern(pt.map.run);
@@ -265,12 +268,17 @@ Clearance clearance(const RunResult& run, double span) {
   return c;
 }
 
-// How near the motion is to a grazing, rad (speeds times the time scale): the slowest impact, or
-// the turn that comes nearest to a limiter. At zero an impact appears or vanishes, and the map has
-// a square root there that Newton's method cannot step across.
-double grazing_distance(const Model& model, const RunResult& run) {
+// How near the motion is to a grazing, rad (speeds times the time scale): the slowest impact, the
+// turn that comes nearest to a limiter, or the section's own state x near a limiter (a turn on
+// the section is no event of the map's run). At zero an impact appears or vanishes, and the map
+// has a square root there that Newton's method cannot step across.
+double grazing_distance(const Model& model, const RunResult& run, const Vec& x) {
   const double time = time_scale(model);
   double d = INFINITY;
+  for (int i = 0; i < model.size(); ++i)
+    for (const Limiter& l : model.limiters)
+      if (l.acts_on(i))
+        d = std::min(d, std::abs(wrap_angle(x[2 * i] - l.angle)) + std::abs(x[2 * i + 1]) * time);
   for (const Event& e : run.events) {
     if (e.kind == EventKind::limiter) d = std::min(d, std::abs(e.dphi_before[0]) * time);
     if (e.kind == EventKind::collision)
@@ -282,16 +290,12 @@ double grazing_distance(const Model& model, const RunResult& run) {
   return d;
 }
 
-bool stable(const std::vector<std::complex<double>>& multipliers) {
-  return std::all_of(multipliers.begin(), multipliers.end(),
-                     [](auto m) { return std::abs(m) < 1.0; });
-}
-
 BranchPoint branch_point(const ScaledMap& map, const Point& pt) {
   int impacts = 0;
   for (const Event& e : pt.map.run.events)
     impacts += e.kind == EventKind::limiter || e.kind == EventKind::collision;
-  return {map.value(pt.v), map.section_state(pt.v), pt.multipliers, stable(pt.multipliers),
+  return {map.value(pt.v), map.section_state(pt.v), pt.multipliers,
+          inside_unit_circle(pt.multipliers, map.band()),
           static_cast<double>(impacts) / map.periods()};
 }
 
@@ -319,7 +323,7 @@ Point locate(const ScaledMap& map, BifurcationKind kind, const Point& here, cons
     const double mid = 0.5 * (lo + hi);
     const Point p = correct(map, here.v + mid * ds * t, t, tol);
     if (!p.ok) break;
-    if (crossed(kind, sig, signature(p, tangent(p, t)))) {
+    if (crossed(kind, sig, signature(p, tangent(p, t), map.band()))) {
       hi = mid;
       at = p;
     } else {
@@ -443,7 +447,7 @@ OrbitBranch Continuation::run() {
   }
   keep_clear();
   t_ = tangent(here_, t_);
-  sig_ = signature(here_, t_);
+  sig_ = signature(here_, t_, map_.band());
   branch_.points.push_back(branch_point(map_, here_));
   ds_ = std::min(0.05, 2.0 / spec_.max_points);
   while (static_cast<int>(branch_.points.size()) < spec_.max_points) {
@@ -477,7 +481,7 @@ Continuation::Step Continuation::step_to(const Vec& predicted) const {
   Step next{correct(map_, predicted, t_, tol_), {}, {}};
   if (!next.point.ok) return next;
   next.t = tangent(next.point, t_);
-  next.sig = signature(next.point, next.t);
+  next.sig = signature(next.point, next.t, map_.band());
   const bool strayed = (next.point.v - predicted).norm() > 0.5 * ds_ + 10.0 * tol_;
   const bool turned = next.sig.impacts == sig_.impacts && t_.dot(next.t) < std::cos(0.3);
   if (strayed || turned) next.point.ok = false;
@@ -506,7 +510,7 @@ bool Continuation::cross_grazing() {
   std::ostringstream why;
   why << "the branch could not be followed past " << spec_.parameter << " = "
       << map_.value(here_.v);
-  if (grazing_distance(map_.at(map_.value(here_.v)), here_.map.run) > 1e-3) {
+  if (grazing_distance(map_.at(map_.value(here_.v)), here_.map.run, here_.map.x) > 1e-3) {
     branch_.message = why.str() + ": no nearby motion continues it";
     return false;
   }
@@ -524,7 +528,7 @@ bool Continuation::cross_grazing() {
   here_ = std::move(across->first);
   t_ = tangent(here_, way * along_parameter());
   keep_clear();
-  sig_ = signature(here_, t_);
+  sig_ = signature(here_, t_, map_.band());
   branch_.points.push_back(branch_point(map_, here_));
   ds_ = 1e-3;
   return true;
@@ -576,7 +580,8 @@ void Continuation::note_bifurcations(const Step& next) {
     Bifurcation b{kind, value, map_.section_state(at.v), {}, {}};
     if (kind == BifurcationKind::period_doubling)
       find_doubled(map_, at,
-                   (stable(here_.multipliers) ? 1.0 : -1.0) * (t_[n_] * span_ > 0.0 ? 1.0 : -1.0),
+                   (inside_unit_circle(here_.multipliers, map_.band()) ? 1.0 : -1.0) *
+                       (t_[n_] * span_ > 0.0 ? 1.0 : -1.0),
                    span_, b);
     branch_.bifurcations.push_back(std::move(b));
   }
@@ -596,7 +601,7 @@ void Continuation::move_to(Step next) {
   here_ = std::move(next.point);
   t_ = std::move(next.t);
   keep_clear();
-  sig_ = signature(here_, t_);
+  sig_ = signature(here_, t_, map_.band());
   // Steps shortened to a crawl (before a grazing) add nothing a figure shows.
   if (std::abs(map_.value(here_.v) - branch_.points.back().value) > 1e-6 * std::abs(span_) ||
       ds_ > 1e-4)

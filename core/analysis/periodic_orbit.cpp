@@ -78,6 +78,44 @@ std::string number(double v) {
   return s.str();
 }
 
+// Why pellet i at the unwrapped angle phi lies beyond a fixed limiter that acts on it, seen from
+// its start phi0: outside the turn between the nearest copies δ + 2πk of the limiters' angles
+// below and above phi0, which a run never leaves (a start on a copy may be on either side). The
+// simulator holds a pellet in that turn too (home_side, core/events/snap.cpp).
+std::optional<std::string> beyond_limiter(const Model& model, int i, double phi) {
+  const double start = model.pellets[i].phi0;
+  for (std::size_t l = 0; l < model.limiters.size(); ++l) {
+    const Limiter& lim = model.limiters[l];
+    if (lim.mobile || !lim.acts_on(i)) continue;
+    const double turns = std::floor((start - lim.angle) / kTwoPi);
+    const double below = lim.angle + kTwoPi * turns, above = lim.angle + kTwoPi * (turns + 1.0);
+    if (start == below || (phi >= below && phi <= above)) continue;
+    return "pellet " + std::to_string(i + 1) + " at φ = " + number(phi) + " rad, beyond limiter " +
+           std::to_string(l + 1) + " (" + number(lim.angle) +
+           " rad) from where it starts (φ0 = " + number(start) +
+           " rad): a motion the scene's pellet never reaches";
+  }
+  return std::nullopt;
+}
+
+// Why the map's run from x starts a pellet resting on a limiter from the side it did not start
+// on (held there by a limiter it could only reach through it); empty if none does.
+std::string rests_on_far_side(const Model& model, const RunResult& run) {
+  if (run.path.empty()) return {};
+  for (const Body& b : run.path.front().bodies) {
+    if (b.mode != Mode::resting || b.limiter < 0 || model.limiters[b.limiter].mobile) continue;
+    const int i = b.leader();
+    const double start = model.pellets[i].phi0;
+    const double angle = model.limiters[b.limiter].angle;
+    const double at = run.path.front().y[phi_index(i)];
+    const double copy = angle + kTwoPi * std::round((at - angle) / kTwoPi);
+    if (start == copy || (start > copy ? 1 : -1) == b.side) continue;
+    return "rests pellet " + std::to_string(i + 1) + " against limiter " +
+           std::to_string(b.limiter + 1) + " from the side it did not start on";
+  }
+  return {};
+}
+
 }  // namespace
 
 Model at_phase(const Model& model, double theta) {
@@ -155,10 +193,27 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
     if (auto e = validate_state("periodic_orbit.guess[" + std::to_string(i) + "]",
                                 spec.guess[i].phi, spec.guess[i].dphi))
       return e;
+  for (std::size_t i = 0; i < spec.guess.size(); ++i)
+    if (std::optional<std::string> off =
+            beyond_limiter(model, static_cast<int>(i), spec.guess[i].phi))
+      return FieldError{"periodic_orbit.guess[" + std::to_string(i) + "].phi", "puts " + *off};
   if (spec.max_iterations < 1 || spec.max_iterations > limits.orbit_iterations)
     return FieldError{"periodic_orbit.max_iterations", "expected a whole number from 1 to " +
                                                            std::to_string(limits.orbit_iterations)};
   return check_simulated_time(spec, T, limits);
+}
+
+std::optional<std::string> off_own_side(const Model& model, const Vec& x) {
+  for (int i = 0; i < model.size(); ++i)
+    if (std::optional<std::string> off = beyond_limiter(model, i, x[2 * i])) return off;
+  return std::nullopt;
+}
+
+double multiplier_band(const SimOptions& options) { return tolerance_for(options); }
+
+bool inside_unit_circle(const std::vector<std::complex<double>>& multipliers, double band) {
+  return std::all_of(multipliers.begin(), multipliers.end(),
+                     [band](auto m) { return std::abs(m) < 1.0 - band; });
 }
 
 MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int periods,
@@ -167,10 +222,21 @@ MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int per
   MapPoint p;
   const double t_end = periods * forcing_period(model);
   p.x = x;
+  p.image = x;
+  if (std::optional<std::string> off = off_own_side(model, x)) {
+    p.ok = false;
+    p.run.stats.message = "starts " + *off;
+    return p;
+  }
   p.run = map_run(model, options, t_end, x, true);
   p.ok = p.run.stats.termination == Termination::completed;
   p.image = final_state(p.run);
   if (!p.ok) return p;
+  if (std::string far = rests_on_far_side(model, p.run); !far.empty()) {
+    p.ok = false;
+    p.run.stats.message = far;
+    return p;
+  }
   const PathJacobian J = path_jacobian(started_at(model, x), p.run.path, options.rtol, deadline);
   p.run.path.clear();
   if (J.out_of_time) {
@@ -261,7 +327,7 @@ MapPoint newton(const Model& model, const SimOptions& options, const Deadline& d
 }
 
 // The converged orbit's multipliers, stability and events over one return (times from t0).
-void describe(const MapPoint& p, const OrbitSpec& spec, PeriodicOrbit& orbit) {
+void describe(const MapPoint& p, const OrbitSpec& spec, double band, PeriodicOrbit& orbit) {
   orbit.exact_jacobian = p.exact;
   orbit.jacobian_note = p.jacobian_note;
   const Eigen::EigenSolver<Mat> eig(p.jacobian, false);
@@ -269,8 +335,7 @@ void describe(const MapPoint& p, const OrbitSpec& spec, PeriodicOrbit& orbit) {
     orbit.multipliers.push_back(eig.eigenvalues()[k]);
   std::sort(orbit.multipliers.begin(), orbit.multipliers.end(),
             [](auto a, auto b) { return std::abs(a) > std::abs(b); });
-  orbit.stable = std::all_of(orbit.multipliers.begin(), orbit.multipliers.end(),
-                             [](auto m) { return std::abs(m) < 1.0; });
+  orbit.stable = inside_unit_circle(orbit.multipliers, band);
   int impacts = 0;
   for (Event e : p.run.events) {
     if (e.kind == EventKind::limiter || e.kind == EventKind::collision) ++impacts;
@@ -340,7 +405,7 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
                       "nonsmooth there";
     return orbit;
   }
-  describe(p, spec, orbit);
+  describe(p, spec, multiplier_band(options), orbit);
   check_admissible(model, until(options, deadline), spec, p.x, tol, orbit);
   return orbit;
 }

@@ -52,6 +52,19 @@ struct MapPoint {
 };
 MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int periods, const Vec& x);
 
+// Why x is no state of the scene's motion on the section (MODEL.md, "A fixed point never crosses
+// a limiter"), or nothing if it is one: a pellet's angle beyond a fixed limiter that acts on it,
+// on the side the pellet did not start on (the run from x would be a motion the scene's pellet
+// never reaches, on the far side of the limiter).
+std::optional<std::string> off_own_side(const Model& model, const Vec& x);
+
+// How far from the unit circle a multiplier must be to count as inside or outside it: the
+// accuracy of the map's Jacobian (the tolerance the orbit is converged to). Within it a
+// multiplier is neutral: an area-preserving map's lie on the circle to round-off.
+double multiplier_band(const SimOptions& options);
+// Whether every multiplier lies inside the unit circle by more than `band`.
+bool inside_unit_circle(const std::vector<std::complex<double>>& multipliers, double band);
+
 // The residual P(x) − x with angles compared modulo 2π, and its size with speeds scaled by
 // sqrt(R/g) (rad).
 Vec orbit_residual(const MapPoint& p);

@@ -15,6 +15,7 @@
 
 #include "core/analysis/checked_run.h"
 #include "core/analysis/periodic_orbit.h"
+#include "core/events/watch.h"
 #include "core/model/dynamics.h"
 #include "core/model/parameter.h"
 #include "core/run/validate.h"
@@ -231,6 +232,30 @@ TEST(Damping, MapJacobianMatchesDifferences) {
   EXPECT_LT((p.jacobian - fd).cwiseAbs().maxCoeff(), 1e-5 * std::max(1.0, fd.cwiseAbs().maxCoeff()))
       << p.jacobian << "\n"
       << fd;
+}
+
+// Two pellets sliding as one part where the one behind, force less damper per unit mass, no
+// longer pushes the one ahead: the separation watch carries −R·dphi·(c_behind − c_ahead), and
+// follows the speed (no watch of time alone) only where the parts are damped differently.
+TEST(Damping, PelletsDampedDifferentlyPartOnForceLessDamper) {
+  Model m;
+  m.R = kR;
+  m.pellets = {{0.1, 0.3, 0.0, {0.2, 0.0, 0.0}}, {0.3, 0.3 + 1e-6, 0.0, {0.3, 0.0, 0.0}}};
+  m.pellets[0].c = 2.0;
+  m.pellets[1].c = 0.5;
+  Body pair;
+  pair.members = {0, 1};
+  pair.s = 1;
+  Watch w{WatchKind::separation, 0, 0};
+  w.split = 1;
+  Vec y(6);
+  y << 0.3, 0.7, 0.0, 0.3, 0.7, 0.0;
+  const double forces = 0.2 / 0.1 - 0.3 / 0.3;
+  EXPECT_NEAR(raw_value(w, m, {pair}, 0.0, y), forces - kR * 0.7 * (2.0 - 0.5), 1e-15);
+  EXPECT_FALSE(depends_on_time_alone(w, m, {pair}));
+  m.pellets[1].c = 2.0;
+  EXPECT_NEAR(raw_value(w, m, {pair}, 0.0, y), forces, 1e-15);
+  EXPECT_TRUE(depends_on_time_alone(w, m, {pair}));
 }
 
 TEST(Damping, NegativeOrNonFiniteDampingIsRefusedByName) {

@@ -278,7 +278,22 @@ TEST(PeriodicOrbit, GuessesAreBoundedLikeStartingStates) {
   EXPECT_EQ(validate_orbit(m, from_guess(-1e4 - 1.0, 0.0))->field, "periodic_orbit.guess[0].phi");
   EXPECT_EQ(validate_orbit(m, from_guess(0.1, 2e7))->field, "periodic_orbit.guess[0].dphi");
   EXPECT_EQ(validate_orbit(m, from_guess(0.1, NAN))->field, "periodic_orbit.guess[0].dphi");
-  EXPECT_FALSE(validate_orbit(m, from_guess(1e4, -1e7)));
+  Model free = m;
+  free.limiters.clear();
+  EXPECT_FALSE(validate_orbit(free, from_guess(1e4, -1e7)));
+}
+
+// A guess beyond a fixed limiter from the pellet's start (MODEL.md, "A fixed point never crosses
+// a limiter") is refused: the stop at 0 holds the pellet that starts at 0.1 in (0, 2π).
+TEST(PeriodicOrbit, AGuessBeyondAStopFromTheStartIsRefused) {
+  const Model m = impact_oscillator(5.0);
+  EXPECT_FALSE(validate_orbit(m, from_guess(0.0, 0.3)));
+  EXPECT_FALSE(validate_orbit(m, from_guess(6.2, -0.3)));
+  const std::optional<FieldError> e = validate_orbit(m, from_guess(-0.05, 0.3));
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->field, "periodic_orbit.guess[0].phi");
+  EXPECT_NE(e->message.find("beyond limiter 1"), std::string::npos) << e->message;
+  EXPECT_EQ(validate_orbit(m, from_guess(0.1 + kTwoPi, 0.0))->field, "periodic_orbit.guess[0].phi");
 }
 
 }  // namespace
