@@ -21,19 +21,28 @@ py::array_t<T> column(std::size_t n, const Get& get) {
   return a;
 }
 
+// numpy's functions the columns of one table are made with, looked up once for the table (an
+// import is not free).
+struct Numpy {
+  Numpy() : module(py::module_::import("numpy")) {}
+  py::module_ module;
+  py::object array = module.attr("array");
+  py::object empty = module.attr("empty");
+};
+
 // The n strings get(0) … as a numpy array of str.
 template <class Get>
-py::array string_column(std::size_t n, const Get& get) {
+py::array string_column(const Numpy& np, std::size_t n, const Get& get) {
   py::list list(n);
   for (std::size_t k = 0; k < n; ++k) list[k] = py::str(std::string(get(k)));
-  return py::module_::import("numpy").attr("array")(list, py::arg("dtype") = "str");
+  return np.array(list, py::arg("dtype") = "str");
 }
 
 // The n Python objects get(0) … as a numpy array of dtype object: what a column holds whose
 // entries are lists (an event's pellets, its speeds), one tuple each.
 template <class Get>
-py::array object_column(std::size_t n, const Get& get) {
-  py::array a = py::module_::import("numpy").attr("empty")(n, py::arg("dtype") = "object");
+py::array object_column(const Numpy& np, std::size_t n, const Get& get) {
+  py::array a = np.empty(n, py::arg("dtype") = "object");
   for (std::size_t k = 0; k < n; ++k) a[py::int_(k)] = get(k);
   return a;
 }

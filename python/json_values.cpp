@@ -9,12 +9,25 @@ namespace {
 
 using nlohmann::json;
 
-// Where a value is, as the scene's field paths spell it: "model.pellets[0].m".
-std::string member_path(const std::string& path, const std::string& key) {
-  return path.empty() ? key : path + "." + key;
+// Where a value is in the scene: a chain from the top, spelled out only for an error as the
+// scene's field paths are ("model.pellets[0].m"), since most values are never named.
+struct Where {
+  const Where* parent = nullptr;
+  const std::string* key = nullptr;  // a dict's member: its key; else a list's item
+  std::size_t index = 0;
+};
+
+std::string path_of(const Where* w) {
+  if (w == nullptr) return "";
+  const std::string above = path_of(w->parent);
+  if (w->key) return above.empty() ? *w->key : above + "." + *w->key;
+  return above + "[" + std::to_string(w->index) + "]";
 }
 
-json integer_json(py::handle value, const std::string& path) {
+// The field an error names: the value's path, "scene" for the scene itself.
+std::string field_of(const Where* w) { return w == nullptr ? "scene" : path_of(w); }
+
+json integer_json(py::handle value, const Where* where) {
   int overflow = 0;
   const long long x = PyLong_AsLongLongAndOverflow(value.ptr(), &overflow);
   if (overflow == 0) {
@@ -29,15 +42,15 @@ json integer_json(py::handle value, const std::string& path) {
   const double d = PyLong_AsDouble(value.ptr());
   if (d == -1.0 && PyErr_Occurred()) {
     PyErr_Clear();
-    raise_scene_error({path.empty() ? "scene" : path, "is an integer beyond a double's range"});
+    raise_scene_error({field_of(where), "is an integer beyond a double's range"});
   }
   return json(d);
 }
 
-json convert(py::handle value, const std::string& path, int depth, int max_depth) {
+json convert(py::handle value, const Where* where, int depth, int max_depth) {
   if (value.is_none()) return json(nullptr);
   if (PyBool_Check(value.ptr())) return json(value.ptr() == Py_True);
-  if (PyLong_Check(value.ptr())) return integer_json(value, path);
+  if (PyLong_Check(value.ptr())) return integer_json(value, where);
   if (PyFloat_Check(value.ptr())) return json(PyFloat_AS_DOUBLE(value.ptr()));
   if (PyUnicode_Check(value.ptr())) return json(value.cast<std::string>());
   const bool dict = PyDict_Check(value.ptr());
@@ -46,25 +59,28 @@ json convert(py::handle value, const std::string& path, int depth, int max_depth
       raise_scene_error({"scene", "nests deeper than " + std::to_string(max_depth) + " levels"});
     if (!dict) {
       json list = json::array();
-      std::size_t i = 0;
-      for (py::handle item : value)
-        list.push_back(convert(item, path + "[" + std::to_string(i++) + "]", depth + 1, max_depth));
+      Where item_at{where, nullptr, 0};
+      for (py::handle item : value) {
+        list.push_back(convert(item, &item_at, depth + 1, max_depth));
+        ++item_at.index;
+      }
       return list;
     }
     json object = json::object();
     for (auto [key, item] : py::reinterpret_borrow<py::dict>(value)) {
       if (!PyUnicode_Check(key.ptr()))
-        raise_scene_error({path.empty() ? "scene" : path,
+        raise_scene_error({field_of(where),
                            "has a key that is not a string: " + py::repr(key).cast<std::string>()});
       const std::string name = key.cast<std::string>();
-      object[name] = convert(item, member_path(path, name), depth + 1, max_depth);
+      const Where member{where, &name};
+      object[name] = convert(item, &member, depth + 1, max_depth);
     }
     return object;
   }
   // numpy's scalars and arrays say what they hold as Python values.
   if (py::hasattr(value, "tolist") && py::hasattr(value, "dtype"))
-    return convert(value.attr("tolist")(), path, depth, max_depth);
-  raise_scene_error({path.empty() ? "scene" : path,
+    return convert(value.attr("tolist")(), where, depth, max_depth);
+  raise_scene_error({field_of(where),
                      "is a Python " +
                          py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>() +
                          ", which a JSON scene cannot hold"});
@@ -72,7 +88,9 @@ json convert(py::handle value, const std::string& path, int depth, int max_depth
 
 }  // namespace
 
-json json_from_python(py::handle value, int max_depth) { return convert(value, "", 0, max_depth); }
+json json_from_python(py::handle value, int max_depth) {
+  return convert(value, nullptr, 0, max_depth);
+}
 
 py::object python_from_json(const json& j) {
   switch (j.type()) {

@@ -16,10 +16,25 @@
 namespace vibro::python {
 namespace {
 
+// The parts of a run's JSON other than its events and trajectories (summary, stats, warnings,
+// lyapunov), as result_to_json writes them: most of its cost is the events, which Python reads as
+// arrays, and the whole JSON is written only when asked for (to_json).
+nlohmann::json json_parts(const RunResult& run, const Model& model) {
+  RunResult parts;
+  parts.summary = run.summary;
+  parts.stats = run.stats;
+  parts.warnings = run.warnings;
+  parts.lyapunov = run.lyapunov;
+  nlohmann::json j = result_to_json(parts, model);
+  j["stats"]["events"] = run.events.size();
+  return j;
+}
+
 // A finished run and what Python reads of it, each part made when first asked for.
 class Run {
  public:
-  Run(RunResult run, nlohmann::json json) : run_(std::move(run)), json_(std::move(json)) {}
+  Run(Model model, RunResult run, nlohmann::json parts)
+      : model_(std::move(model)), run_(std::move(run)), json_(std::move(parts)) {}
 
   // One array per column of the events' CSV (t,kind,pellets,limiter,phi,dphi_before,dphi_after);
   // the lists of an event's pellets and speeds as tuples, limiter −1 where none.
@@ -27,14 +42,17 @@ class Run {
     if (events_) return events_.cast<py::dict>();
     const std::vector<Event>& e = run_.events;
     const std::size_t n = e.size();
+    const Numpy np;
     py::dict d;
     d["t"] = column<double>(n, [&](std::size_t k) { return e[k].t; });
-    d["kind"] = string_column(n, [&](std::size_t k) { return event_kind_name(e[k].kind); });
-    d["pellets"] = object_column(n, [&](std::size_t k) { return tuple_of(e[k].pellets); });
+    d["kind"] = string_column(np, n, [&](std::size_t k) { return event_kind_name(e[k].kind); });
+    d["pellets"] = object_column(np, n, [&](std::size_t k) { return tuple_of(e[k].pellets); });
     d["limiter"] = column<std::int64_t>(n, [&](std::size_t k) { return e[k].limiter; });
     d["phi"] = column<double>(n, [&](std::size_t k) { return e[k].phi; });
-    d["dphi_before"] = object_column(n, [&](std::size_t k) { return tuple_of(e[k].dphi_before); });
-    d["dphi_after"] = object_column(n, [&](std::size_t k) { return tuple_of(e[k].dphi_after); });
+    d["dphi_before"] =
+        object_column(np, n, [&](std::size_t k) { return tuple_of(e[k].dphi_before); });
+    d["dphi_after"] =
+        object_column(np, n, [&](std::size_t k) { return tuple_of(e[k].dphi_after); });
     events_ = d;
     return d;
   }
@@ -73,13 +91,21 @@ class Run {
   }
 
   // `vibro simulate`'s output for the same scene: the JSON of API.md, indented by 2.
-  std::string to_json() const { return json_.dump(2) + "\n"; }
+  std::string to_json() const {
+    std::string text;
+    {
+      py::gil_scoped_release release;
+      text = result_to_json(run_, model_).dump(2) + "\n";
+    }
+    return text;
+  }
   std::string answer() const { return json_["summary"]["answer"].get<std::string>(); }
 
  private:
+  Model model_;
   RunResult run_;
-  nlohmann::json json_;
-  py::object events_;  // null until asked for
+  nlohmann::json json_;  // json_parts
+  py::object events_;    // null until asked for
   py::object trajectories_;
   std::map<std::string, py::object> parts_;
 };
@@ -96,13 +122,13 @@ Run simulate_scene(py::handle scene_value, std::optional<bool> trajectories,
   SimOptions options = scene.sim;
   options.record.assign(scene.model.size(), scene.trajectories);
   RunResult run;
-  nlohmann::json json;
+  nlohmann::json parts;
   {
     py::gil_scoped_release release;
     run = simulate(scene.model, options);
-    json = result_to_json(run, scene.model);
+    parts = json_parts(run, scene.model);
   }
-  return Run(std::move(run), std::move(json));
+  return Run(std::move(scene.model), std::move(run), std::move(parts));
 }
 
 }  // namespace

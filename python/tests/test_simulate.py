@@ -3,6 +3,7 @@
 import concurrent.futures
 import csv
 import io
+import json
 import math
 
 import numpy as np
@@ -19,6 +20,10 @@ def test_to_json_is_the_command_lines_output(name):
     run = vibro.simulate(vibro.preset(name))
     _, out, _ = run_cli("simulate", "--preset", name)
     assert without_wall_clock(run.to_json()) == without_wall_clock(out)
+    # The parts read as Python values are those of the JSON.
+    whole = json.loads(run.to_json())
+    assert run.summary == whole["summary"] and run.stats == whole["stats"]
+    assert run.warnings == whole["warnings"] and run.lyapunov == whole.get("lyapunov")
 
 
 def test_a_scene_of_awkward_doubles_reads_as_the_command_line_reads_its_file(scene_file):
