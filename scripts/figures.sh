@@ -24,6 +24,9 @@ $vibro sweep docs/scenes/impact-oscillator-lyapunov.json --plot lyapunov \
   -o docs/images/lyapunov-impact-oscillator.png
 $vibro sweep docs/scenes/impact-oscillator-lyapunov-map.json --plot lyapunov_map \
   -o docs/images/lyapunov-map-impact-oscillator.png
+# docs/PYTHON.md's figures: its Python blocks run in order in docs/images (the module of build/).
+PYTHONPATH="$PWD/build/python" MPLBACKEND=Agg /usr/bin/python3 python/tests/doc_snippets.py docs/PYTHON.md \
+  docs/images > /dev/null
 echo "figures: docs/images/ regenerated"
 
 # The web page with the paper scene, from a real server, in headless Chromium.

@@ -1,0 +1,170 @@
+// vibro.simulate(scene, trajectories=None, deadline_ms=None) -> vibro.Run: the run `vibro simulate`
+// makes of the scene (app/simulate_command.cpp), its JSON the same text.
+#include <map>
+#include <nlohmann/json.hpp>
+#include <optional>
+#include <string>
+
+#include "core/analysis/checked_run.h"
+#include "io/result_json.h"
+#include "python/bindings.h"
+#include "python/columns.h"
+#include "python/json_values.h"
+#include "python/scene_error.h"
+#include "python/scene_input.h"
+
+namespace vibro::python {
+namespace {
+
+// The parts of a run's JSON other than its events and trajectories (summary, stats, warnings,
+// lyapunov), as result_to_json writes them: most of its cost is the events, which Python reads as
+// arrays, and the whole JSON is written only when asked for (to_json).
+nlohmann::json json_parts(const RunResult& run, const Model& model) {
+  RunResult parts;
+  parts.summary = run.summary;
+  parts.stats = run.stats;
+  parts.warnings = run.warnings;
+  parts.lyapunov = run.lyapunov;
+  nlohmann::json j = result_to_json(parts, model);
+  j["stats"]["events"] = run.events.size();
+  return j;
+}
+
+// A finished run and what Python reads of it, each part made when first asked for.
+class Run {
+ public:
+  Run(Model model, RunResult run, nlohmann::json parts)
+      : model_(std::move(model)), run_(std::move(run)), json_(std::move(parts)) {}
+
+  // One array per column of the events' CSV (t,kind,pellets,limiter,phi,dphi_before,dphi_after);
+  // the lists of an event's pellets and speeds as tuples, limiter −1 where none.
+  py::dict events() {
+    if (events_) return events_.cast<py::dict>();
+    const std::vector<Event>& e = run_.events;
+    const std::size_t n = e.size();
+    const Numpy np;
+    py::dict d;
+    d["t"] = column<double>(n, [&](std::size_t k) { return e[k].t; });
+    d["kind"] = string_column(np, n, [&](std::size_t k) { return event_kind_name(e[k].kind); });
+    d["pellets"] = object_column(np, n, [&](std::size_t k) { return tuple_of(e[k].pellets); });
+    d["limiter"] = column<std::int64_t>(n, [&](std::size_t k) { return e[k].limiter; });
+    d["phi"] = column<double>(n, [&](std::size_t k) { return e[k].phi; });
+    d["dphi_before"] =
+        object_column(np, n, [&](std::size_t k) { return tuple_of(e[k].dphi_before); });
+    d["dphi_after"] =
+        object_column(np, n, [&](std::size_t k) { return tuple_of(e[k].dphi_after); });
+    events_ = d;
+    return d;
+  }
+
+  // A part of the run's JSON ("summary", "stats", ...) as Python values; None where it has none.
+  py::object part(const char* key) {
+    py::object& cached = parts_[key];
+    if (!cached) cached = json_.contains(key) ? python_from_json(json_.at(key)) : py::none();
+    return cached;
+  }
+
+  // Per recorded pellet {"pellet", "branches": [{"index", "t", "phi", "dphi"}]}, the samples as
+  // arrays; None when the run recorded none.
+  py::object trajectories() {
+    if (trajectories_) return trajectories_;
+    if (run_.tracks.empty()) return py::none();
+    py::list tracks;
+    for (const PelletTrack& track : run_.tracks) {
+      py::list branches;
+      for (const Branch& b : track.branches) {
+        const std::vector<Sample>& s = b.samples;
+        py::dict branch;
+        branch["index"] = b.index;
+        branch["t"] = column<double>(s.size(), [&](std::size_t k) { return s[k].t; });
+        branch["phi"] = column<double>(s.size(), [&](std::size_t k) { return s[k].phi; });
+        branch["dphi"] = column<double>(s.size(), [&](std::size_t k) { return s[k].dphi; });
+        branches.append(branch);
+      }
+      py::dict t;
+      t["pellet"] = track.pellet;
+      t["branches"] = branches;
+      tracks.append(t);
+    }
+    trajectories_ = tracks;
+    return tracks;
+  }
+
+  // `vibro simulate`'s output for the same scene: the JSON of API.md, indented by 2.
+  std::string to_json() const {
+    std::string text;
+    {
+      py::gil_scoped_release release;
+      text = result_to_json(run_, model_).dump(2) + "\n";
+    }
+    return text;
+  }
+  std::string answer() const { return json_["summary"]["answer"].get<std::string>(); }
+
+ private:
+  Model model_;
+  RunResult run_;
+  nlohmann::json json_;  // json_parts
+  py::object events_;    // null until asked for
+  py::object trajectories_;
+  std::map<std::string, py::object> parts_;
+};
+
+Run simulate_scene(py::handle scene_value, std::optional<bool> trajectories,
+                   std::optional<double> deadline_ms) {
+  Scene scene = scene_from_python(scene_value);
+  if (trajectories) scene.trajectories = *trajectories;
+  if (deadline_ms) {
+    if (!(*deadline_ms > 0.0))  // as `vibro simulate --deadline-ms`
+      raise_scene_error({"deadline_ms", "must be a positive number of milliseconds"});
+    scene.sim.deadline_ms = *deadline_ms;
+  }
+  SimOptions options = scene.sim;
+  options.record.assign(scene.model.size(), scene.trajectories);
+  RunResult run;
+  nlohmann::json parts;
+  {
+    py::gil_scoped_release release;
+    run = simulate(scene.model, options);
+    parts = json_parts(run, scene.model);
+  }
+  return Run(std::move(scene.model), std::move(run), std::move(parts));
+}
+
+}  // namespace
+
+void add_simulate(py::module_& m) {
+  py::class_<Run>(m, "Run", "A finished run of a scene (vibro.simulate).")
+      .def_property_readonly("events", &Run::events,
+                             "The events, a dict of equal-length numpy arrays, one per column of "
+                             "the events' CSV: t, kind, pellets, limiter, phi, dphi_before, "
+                             "dphi_after (pellets and speeds as tuples; limiter -1 where none).")
+      .def_property_readonly(
+          "summary", [](Run& r) { return r.part("summary"); },
+          "The summary as in the JSON: impacts, the last impact, final states, the answer.")
+      .def_property_readonly(
+          "stats", [](Run& r) { return r.part("stats"); },
+          "The run's statistics and trust fields as in the JSON (wall_ms is this run's).")
+      .def_property_readonly(
+          "warnings", [](Run& r) { return r.part("warnings"); }, "The warnings, a list of dicts.")
+      .def_property_readonly(
+          "lyapunov", [](Run& r) { return r.part("lyapunov"); },
+          "The Lyapunov exponents as in the JSON when the scene asks for them, else None.")
+      .def_property_readonly("trajectories", &Run::trajectories,
+                             "Per recorded pellet, its branches with the numpy arrays t, phi, "
+                             "dphi; None unless trajectories were asked for.")
+      .def_property_readonly("answer", &Run::answer, "summary['answer']: the run in one sentence.")
+      .def("to_json", &Run::to_json,
+           "The run as `vibro simulate` prints it for the same scene (API.md's JSON).")
+      .def("__repr__", [](const Run& r) { return "<vibro.Run: " + r.answer() + ">"; });
+
+  m.def("simulate", &simulate_scene, py::arg("scene"), py::arg("trajectories") = py::none(),
+        py::arg("deadline_ms") = py::none(),
+        "Simulates a scene (a dict shaped as the JSON scene) as `vibro simulate` does.\n\n"
+        "trajectories: True or False overrides the scene's \"trajectories\" (record every "
+        "pellet's branches).\ndeadline_ms: wall clock allowed for the run, as --deadline-ms.\n"
+        "Raises vibro.SceneError naming the field of a bad scene. The GIL is released while the "
+        "run goes on.");
+}
+
+}  // namespace vibro::python

@@ -1,0 +1,59 @@
+"""vibro.periodic_orbit: `vibro orbit`'s answer, multipliers as complex numpy arrays."""
+
+import json
+
+import numpy as np
+import pytest
+
+import vibro
+from conftest import run_cli, without_wall_clock
+
+
+@pytest.fixture(scope="module")
+def orbit():
+    return vibro.periodic_orbit(vibro.preset("impact-oscillator"))
+
+
+def test_to_json_is_the_command_lines_output(orbit):
+    _, out, _ = run_cli("orbit", "--preset", "impact-oscillator")
+    assert without_wall_clock(orbit.to_json()) == without_wall_clock(out)
+
+
+def test_multipliers_are_complex_arrays(orbit):
+    j = json.loads(orbit.to_json())
+    m = orbit.orbit["multipliers"]
+    assert m.dtype == np.complex128 and len(m) == 2
+    assert list(m) == [complex(x["re"], x["im"]) for x in j["orbit"]["multipliers"]]
+    assert len(orbit.branch) == len(j["branch"]) > 10
+    for ours, theirs in zip(orbit.branch, j["branch"]):
+        assert list(ours["multipliers"]) == [complex(x["re"], x["im"]) for x in theirs["multipliers"]]
+        assert ours["value"] == theirs["value"]
+
+
+def test_the_parts_of_the_json(orbit):
+    assert orbit.orbit["converged"] and orbit["orbit"]["converged"]
+    kinds = {b["kind"] for b in orbit.bifurcations}
+    assert {"period_doubling", "fold"} <= kinds
+    assert isinstance(orbit.reached, bool)
+    assert set(orbit.keys()) == set(json.loads(orbit.to_json()))
+    with pytest.raises(AttributeError):
+        orbit.no_such_part
+    assert "converged=True" in repr(orbit)
+
+
+def test_the_branch_drawn(orbit):
+    assert orbit.render().startswith(b"\x89PNG")
+    assert orbit._repr_png_().startswith(b"\x89PNG")
+
+
+def test_progress_and_an_orbit_alone():
+    shares = []
+    scene = vibro.preset("impact-oscillator")
+    scene["periodic_orbit"]["continuation"]["to"] = 6.0
+    found = vibro.periodic_orbit(scene, progress=shares.append)
+    assert shares and shares == sorted(shares) and 0 < shares[-1] <= 1
+    assert found.reached
+    del scene["periodic_orbit"]["continuation"]
+    alone = vibro.periodic_orbit(scene)
+    assert alone.branch == [] and alone.render() is None and alone._repr_png_() is None
+    assert alone.orbit["converged"]

@@ -1,0 +1,131 @@
+"""vibro.simulate: the run of `vibro simulate`, bit for bit, as Python values and numpy arrays."""
+
+import concurrent.futures
+import csv
+import io
+import json
+import math
+
+import numpy as np
+import pytest
+
+import vibro
+from conftest import run_cli, without_wall_clock
+
+PRESETS = [p["name"] for p in vibro.presets()]
+
+
+@pytest.mark.parametrize("name", PRESETS)
+def test_to_json_is_the_command_lines_output(name):
+    run = vibro.simulate(vibro.preset(name))
+    _, out, _ = run_cli("simulate", "--preset", name)
+    assert without_wall_clock(run.to_json()) == without_wall_clock(out)
+    # The parts read as Python values are those of the JSON.
+    whole = json.loads(run.to_json())
+    assert run.summary == whole["summary"] and run.stats == whole["stats"]
+    assert run.warnings == whole["warnings"] and run.lyapunov == whole.get("lyapunov")
+
+
+def test_a_scene_of_awkward_doubles_reads_as_the_command_line_reads_its_file(scene_file):
+    # Doubles whose shortest text has 17 digits, and ones that are not, read back bit for bit.
+    scene = vibro.preset("paper")
+    scene["t_end"] = 3.0000000000000004
+    scene["model"]["pellets"][0]["dphi0"] = 0.1 + 0.2
+    scene["model"]["pellets"][1]["phi0"] = 1 / 3
+    scene["model"]["mu_s"] = 0.30000000000000004
+    run = vibro.simulate(scene, trajectories=True)
+    _, out, _ = run_cli("simulate", scene_file(scene), "--trajectories")
+    assert without_wall_clock(run.to_json()) == without_wall_clock(out)
+
+
+def test_events_are_the_columns_of_the_csv(tmp_path):
+    run = vibro.simulate(vibro.preset("paper"))
+    run_cli("simulate", "--preset", "paper", "-o", tmp_path / "run.csv")
+    rows = list(csv.DictReader(io.StringIO((tmp_path / "run.csv").read_text())))
+    events = run.events
+    assert list(events) == ["t", "kind", "pellets", "limiter", "phi", "dphi_before", "dphi_after"]
+    assert {len(a) for a in events.values()} == {len(rows)} and len(rows) > 20
+    assert events["t"].dtype == np.float64 and events["limiter"].dtype == np.int64
+
+    def numbers(text, kind):
+        return tuple(kind(x) for x in text.split(";")) if text else ()
+
+    for k, row in enumerate(rows):
+        assert events["t"][k] == float(row["t"])  # 17 digits: the same double
+        assert events["kind"][k] == row["kind"]
+        assert events["pellets"][k] == numbers(row["pellets"], int)
+        assert events["limiter"][k] == int(row["limiter"])
+        assert events["phi"][k] == float(row["phi"])
+        assert events["dphi_before"][k] == numbers(row["dphi_before"], float)
+        assert events["dphi_after"][k] == numbers(row["dphi_after"], float)
+
+
+def test_trajectories_are_the_samples_of_the_csv(tmp_path):
+    run = vibro.simulate(vibro.preset("paper"), trajectories=True)
+    run_cli("simulate", "--preset", "paper", "-o", tmp_path / "t.csv", "--what", "trajectory")
+    rows = list(csv.reader(io.StringIO((tmp_path / "t.csv").read_text())))[1:]
+    flat = []
+    for track in run.trajectories:
+        for branch in track["branches"]:
+            assert len(branch["t"]) == len(branch["phi"]) == len(branch["dphi"])
+            for t, phi, dphi in zip(branch["t"], branch["phi"], branch["dphi"]):
+                flat.append([t, track["pellet"], branch["index"], phi, dphi])
+    assert len(flat) == len(rows) > 1000
+    for ours, row in zip(flat, rows):
+        assert ours == [float(row[0]), int(row[1]), int(row[2]), float(row[3]), float(row[4])]
+
+
+def test_no_trajectories_unless_asked():
+    scene = vibro.preset("paper")
+    assert vibro.simulate(scene).trajectories is None
+    scene["trajectories"] = True
+    assert vibro.simulate(scene).trajectories is not None
+    assert vibro.simulate(scene, trajectories=False).trajectories is None
+
+
+def test_summary_stats_warnings_are_plain_python_values():
+    run = vibro.simulate(vibro.preset("paper"))
+    assert isinstance(run.summary, dict) and isinstance(run.stats, dict)
+    assert isinstance(run.warnings, list)
+    assert run.summary["limiter_impacts"] == 17 and run.summary["collisions"] == 9
+    assert run.answer == run.summary["answer"]
+    assert run.answer.startswith("The system stops being vibro-impact after impact 27")
+    assert isinstance(run.stats["steps"], int) and isinstance(run.stats["rtol"], float)
+    assert run.lyapunov is None
+    assert "Run" in repr(run) and "impact 27" in repr(run)
+
+
+def test_lyapunov_exponents_when_the_scene_asks():
+    scene = vibro.preset("impact-oscillator")
+    scene["lyapunov"] = True
+    run = vibro.simulate(scene)
+    assert len(run.lyapunov["exponents"]) == 2
+
+
+def test_the_deadline_stops_a_long_run():
+    scene = vibro.preset("impact-oscillator")
+    scene["t_end"] = 1e5
+    run = vibro.simulate(scene, deadline_ms=50)
+    assert run.stats["termination"] == "deadline"
+    assert run.stats["t_reached"] < 1e5
+
+
+def test_threads_share_nothing():
+    names = PRESETS[:8]
+    alone = [without_wall_clock(vibro.simulate(vibro.preset(n)).to_json()) for n in names]
+    with concurrent.futures.ThreadPoolExecutor(4) as pool:
+        together = list(pool.map(lambda n: vibro.simulate(vibro.preset(n)).to_json(), names * 2))
+    assert [without_wall_clock(t) for t in together] == alone * 2
+
+
+def test_numpy_values_in_a_scene_read_as_python_ones():
+    scene = vibro.preset("paper")
+    ours = vibro.preset("paper")
+    ours["t_end"] = np.float64(scene["t_end"])
+    ours["width"] = np.int64(scene["width"])
+    ours["model"]["pellets"][0]["phi0"] = np.array(scene["model"]["pellets"][0]["phi0"])
+    ours["solver"]["check"] = np.bool_(True)
+    assert without_wall_clock(vibro.simulate(ours).to_json()) == without_wall_clock(
+        vibro.simulate(scene).to_json()
+    )
+    assert math.isfinite(vibro.simulate(ours).stats["error_estimate"])
