@@ -2,7 +2,8 @@
 // order set by the tolerance, computed by the system's jets (OdeSystem::taylor_coefficients).
 // Order and step size follow Jorba & Zou (Exp. Math. 14(1), 2005), as heyoka does: no error
 // estimate and no rejected steps. The step is its polynomials (StepView::polynomials), so the
-// dense output is the polynomial itself, as accurate as the step's end.
+// dense output is the polynomial itself, as accurate as the step's end. Its stats count the
+// jets as one right-hand-side evaluation per step.
 #pragma once
 
 #include <string_view>

@@ -9,6 +9,7 @@
 #include <vector>
 
 #include "core/analysis/checked_run.h"
+#include "core/analysis/periodic_orbit.h"
 #include "core/integrators/stepper.h"
 #include "core/model/dynamics.h"
 #include "impact_oscillator.h"
@@ -155,6 +156,41 @@ TEST(Taylor, FindsAStrikeWhoseTwoCrossingsFallInsideOneStep) {
   // Striking speed from the energy: φ'² = 2(g/R)(cos stop − cos turn), about 1.8e-3 rad/s.
   const double speed = std::sqrt(2.0 * g / R * (std::cos(stop) - std::cos(turn)));
   EXPECT_NEAR(run.events[0].dphi_before[0], speed, 1e-3 * speed);
+}
+
+// The analyses run on any method's runs: the impact oscillator's periodic orbit and its Floquet
+// multipliers, and the Lyapunov exponents of a run, under Taylor as under DOP853.
+TEST(Taylor, PeriodicOrbitsAndLyapunovExponentsAgreeWithDop853s) {
+  const Model model = testing::impact_oscillator(6.0);
+  SimOptions o;
+  o.rtol = 1e-12;
+  o.atol = 1e-15;
+  o.check = false;
+  OrbitSpec spec;
+  spec.guess = {{0.15, 0.1}};
+  o.method = Method::dop853;
+  const PeriodicOrbit dop853 = find_periodic_orbit(model, o, spec);
+  o.method = Method::taylor;
+  const PeriodicOrbit taylor = find_periodic_orbit(model, o, spec);
+  ASSERT_TRUE(dop853.converged) << dop853.message;
+  ASSERT_TRUE(taylor.converged) << taylor.message;
+  EXPECT_NEAR(taylor.state[0].phi, dop853.state[0].phi, 1e-9);
+  EXPECT_NEAR(taylor.state[0].dphi, dop853.state[0].dphi, 1e-9);
+  ASSERT_EQ(taylor.multipliers.size(), dop853.multipliers.size());
+  for (std::size_t k = 0; k < taylor.multipliers.size(); ++k)
+    EXPECT_NEAR(std::abs(taylor.multipliers[k] - dop853.multipliers[k]), 0.0, 1e-7);
+
+  o.t_end = 60.0;
+  o.lyapunov = true;
+  o.method = Method::dop853;
+  const RunResult a = simulate(model, o);
+  o.method = Method::taylor;
+  const RunResult b = simulate(model, o);
+  ASSERT_TRUE(a.lyapunov && b.lyapunov);
+  ASSERT_EQ(a.lyapunov->exponents.size(), b.lyapunov->exponents.size());
+  for (std::size_t k = 0; k < a.lyapunov->exponents.size(); ++k)
+    EXPECT_NEAR(b.lyapunov->exponents[k], a.lyapunov->exponents[k],
+                1e-6 * (1.0 + std::abs(a.lyapunov->exponents[k])));
 }
 
 }  // namespace
