@@ -34,14 +34,15 @@ void Taylor::start(const OdeSystem& sys, double t0, const Vec& y0) {
 }
 
 double Taylor::step_size() const {
+  // min_i (w_i/|c_i|)^(1/k) = (min_i w_i/|c_i|)^(1/k): one power per order.
   double rho = std::numeric_limits<double>::infinity();
   for (int k : {order_ - 1, order_}) {
+    double least = std::numeric_limits<double>::infinity();
     for (int i = 0; i < n_; ++i) {
       const double c = std::abs(coefficients_[static_cast<std::size_t>(i) * (order_ + 1) + k]);
-      if (c == 0.0) continue;
-      const double w = tol_.scale(i, y_[i]) / options_.rtol;
-      rho = std::min(rho, std::pow(w / c, 1.0 / k));
+      if (c > 0.0) least = std::min(least, tol_.scale(i, y_[i]) / (options_.rtol * c));
     }
+    if (std::isfinite(least)) rho = std::min(rho, std::pow(least, 1.0 / k));
   }
   return safety_ * rho;
 }
