@@ -1,12 +1,48 @@
 #include "io/orbit_request.h"
 
+#include <string>
+
+#include "core/model/parameter.h"
+
 namespace vibro {
+
+namespace {
+
+// A branch point costs a few corrector iterations, each one map: about this many at most.
+constexpr double kMapsPerPoint = 16.0;
+
+// The branch's simulated time: its maps over every point held to limits.sweep_periods, and one
+// map at its end (the model at `to`) to limits.t_end, as a scene's run is.
+std::optional<FieldError> check_branch_time(const Model& model, const OrbitRequest& request,
+                                            const Limits& limits) {
+  const std::string field = "periodic_orbit.continuation.";
+  const ContinuationSpec& spec = *request.continuation;
+  const int periods = request.orbit.periods;
+  const double total = kMapsPerPoint * spec.max_points * periods;
+  if (total > limits.sweep_periods)
+    return FieldError{field + "max_points",
+                      "the branch may take some " + std::to_string(static_cast<long>(total)) +
+                          " forcing periods (16 maps × max_points × periods), over the limit of " +
+                          std::to_string(static_cast<long>(limits.sweep_periods))};
+  Model end = model;
+  set_parameter(end, spec.parameter, spec.to);
+  const double last = periods * forcing_period(end);
+  if (last > limits.t_end)
+    return FieldError{field + "to",
+                      "a map at the branch's end (periods forcing periods) would last " +
+                          shortest_text(last) + " s of simulated time, over the limit of " +
+                          shortest_text(limits.t_end) + " s"};
+  return std::nullopt;
+}
+
+}  // namespace
 
 std::optional<FieldError> validate_orbit_request(const Model& model, const OrbitRequest& request,
                                                  const Limits& limits) {
   if (auto e = validate_orbit(model, request.orbit, limits)) return e;
-  if (request.continuation) return validate_continuation(model, *request.continuation, limits);
-  return std::nullopt;
+  if (!request.continuation) return std::nullopt;
+  if (auto e = validate_continuation(model, *request.continuation, limits)) return e;
+  return check_branch_time(model, request, limits);
 }
 
 OrbitResult run_orbit_request(const Model& model, const SimOptions& options,

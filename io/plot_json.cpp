@@ -1,6 +1,7 @@
 #include "io/plot_json.h"
 
 #include <cmath>
+#include <limits>
 #include <type_traits>
 #include <variant>
 
@@ -11,64 +12,48 @@ namespace {
 
 using nlohmann::json;
 
-// What a plot's reader knows of the scene around it.
-struct PlotContext {
-  int pellets = 0;     // the model's
-  double t_end = 0.0;  // s, the run's
-};
-
-// An axis's [lo, hi], two finite numbers with lo < hi; nothing when the field is absent.
+// An axis's [lo, hi]; nothing when the field is absent (lo < hi: validate_plot).
 std::optional<AxisLimits> axis_limits(Fields& f, const char* name) {
   const json* list = f.array(name, 2);
   if (!list) return std::nullopt;
   if (list->size() != 2) throw FieldException(f.path(name), "must be [lo, hi]");
-  const double lo = as_number((*list)[0], item(f.path(name), 0));
-  const double hi = as_number((*list)[1], item(f.path(name), 1));
-  if (!(lo < hi)) throw FieldException(f.path(name), "must be [lo, hi] with lo < hi");
-  return AxisLimits{lo, hi};
+  return AxisLimits{as_number((*list)[0], item(f.path(name), 0)),
+                    as_number((*list)[1], item(f.path(name), 1))};
 }
 
-// The instant a mechanism panel shows, in [0, t_end] s.
-double read_instant(Fields& f, double t_end) {
-  const double t = f.number("t", 0.0);
-  if (!(t >= 0.0 && t <= t_end))
-    throw FieldException(f.path("t"),
-                         "must be a time in [0, t_end] = [0, " + json(t_end).dump() + "] s");
-  return t;
+// An index, a count or a branch number: an integer that fits an int (its range: validate_plot).
+int read_int(const json& v, const std::string& field) {
+  const long i = as_integer(v, field);
+  if (i < std::numeric_limits<int>::min() || i > std::numeric_limits<int>::max())
+    throw FieldException(field, "is out of range, got " + std::to_string(i));
+  return static_cast<int>(i);
 }
 
-int read_pellet(Fields& f, int pellets) {
+std::vector<int> read_ints(const json& list, const std::string& field) {
+  std::vector<int> values;
+  for (std::size_t i = 0; i < list.size(); ++i) values.push_back(read_int(list[i], item(field, i)));
+  return values;
+}
+
+int read_pellet(Fields& f) {
   const json* v = f.value("pellet");
-  return v ? index_in(*v, f.path("pellet"), pellets, "pellet") : 0;
+  return v ? read_int(*v, f.path("pellet")) : 0;
 }
 
 void read_window(Fields& f, TimeWindow& w) {
   w.t_from = f.number("t_from", 0.0);
   if (auto to = f.number("t_to")) w.t_to = *to;
-  if (w.t_from < 0.0) throw FieldException(f.path("t_from"), "must be ≥ 0");
-  if (!(w.t_to > w.t_from)) throw FieldException(f.path("t_to"), "must be greater than t_from");
 }
 
 std::string read_title(Fields& f) { return f.string("title", 200).value_or(""); }
 
-std::vector<int> read_branches(Fields& f) {
-  std::vector<int> branches;
-  if (const json* list = f.array("branches", 10000)) {
-    for (std::size_t i = 0; i < list->size(); ++i) {
-      const long b = as_integer((*list)[i], item(f.path("branches"), i));
-      if (b < 1) throw FieldException(item(f.path("branches"), i), "branches are numbered from 1");
-      branches.push_back(static_cast<int>(b));
-    }
-  }
-  return branches;
-}
-
 // Each kind from the fields it reads, in the order its errors are reported.
-PhasePlot create_phase(Fields& f, const PlotContext& c) {
+PhasePlot create_phase(Fields& f, const Limits& limits) {
   PhasePlot p;
-  p.pellet = read_pellet(f, c.pellets);
+  p.pellet = read_pellet(f);
   read_window(f, p);
-  p.branches = read_branches(f);
+  if (const json* list = f.array("branches", limits.plot_branches))
+    p.branches = read_ints(*list, f.path("branches"));
   if (const json* fi = f.value("first_integral")) {
     Fields g(*fi, f.path("first_integral"));
     p.first_integral_through = PhasePoint{g.required_number("phi"), g.required_number("dphi")};
@@ -83,14 +68,12 @@ PhasePlot create_phase(Fields& f, const PlotContext& c) {
   return p;
 }
 
-TimePlot create_time(Fields& f, const PlotContext& c) {
+// An empty list would read as "every pellet", which leaving it out says.
+TimePlot create_time(Fields& f, const Limits& limits) {
   TimePlot p;
-  if (const json* list = f.array("pellets", 64)) {
+  if (const json* list = f.array("pellets", limits.pellets)) {
     if (list->empty()) throw FieldException(f.path("pellets"), "must name at least one pellet");
-    for (std::size_t i = 0; i < list->size(); ++i)
-      p.pellets.push_back(index_in((*list)[i], item(f.path("pellets"), i), c.pellets, "pellet"));
-  } else {
-    for (int i = 0; i < c.pellets; ++i) p.pellets.push_back(i);
+    p.pellets = read_ints(*list, f.path("pellets"));
   }
   p.show_dphi = f.boolean("dphi", false);
   read_window(f, p);
@@ -107,16 +90,12 @@ Camera read_camera(const json& j, const std::string& path) {
   camera.elevation_deg = c.number("elevation", camera.elevation_deg);
   camera.distance = c.number("distance", camera.distance);
   c.done();
-  if (std::abs(camera.elevation_deg) > 89.0)
-    throw FieldException(c.path("elevation"), "must be in [-89, 89] degrees");
-  if (!(camera.distance >= 1.5 && camera.distance <= 50.0))
-    throw FieldException(c.path("distance"), "must be in [1.5, 50]");
   return camera;
 }
 
-CylinderPlot create_cylinder(Fields& f, const PlotContext& c) {
+CylinderPlot create_cylinder(Fields& f, const Limits&) {
   CylinderPlot p;
-  p.pellet = read_pellet(f, c.pellets);
+  p.pellet = read_pellet(f);
   read_window(f, p);
   p.title = read_title(f);
   if (const json* cam = f.value("camera")) p.camera = read_camera(*cam, f.path("camera"));
@@ -124,14 +103,14 @@ CylinderPlot create_cylinder(Fields& f, const PlotContext& c) {
 }
 
 // Every pellet, at one instant: no pellet to pick and no window.
-MechanismPlot create_mechanism(Fields& f, const PlotContext& c) {
+MechanismPlot create_mechanism(Fields& f, const Limits&) {
   MechanismPlot p;
-  p.t = read_instant(f, c.t_end);
+  p.t = f.number("t", 0.0);
   p.title = read_title(f);
   return p;
 }
 
-WorkPrecisionPlot create_work_precision(Fields& f, const PlotContext&) {
+WorkPrecisionPlot create_work_precision(Fields& f, const Limits&) {
   WorkPrecisionPlot p;
   read_window(f, p);
   p.title = read_title(f);
@@ -141,11 +120,11 @@ WorkPrecisionPlot create_work_precision(Fields& f, const PlotContext&) {
 // The kinds a scene may list, by name.
 struct KindReader {
   const char* name;
-  PlotSpec (*create)(Fields&, const PlotContext&);
+  PlotSpec (*create)(Fields&, const Limits&);
 };
 
-template <class Plot, Plot (*Create)(Fields&, const PlotContext&)>
-PlotSpec as_spec(Fields& f, const PlotContext& c) {
+template <class Plot, Plot (*Create)(Fields&, const Limits&)>
+PlotSpec as_spec(Fields& f, const Limits& c) {
   return Create(f, c);
 }
 
@@ -190,7 +169,7 @@ struct PlotWriter {
   }
   void operator()(const TimePlot& p) const {
     j["kind"] = "time";
-    j["pellets"] = p.pellets;
+    if (!p.pellets.empty()) j["pellets"] = p.pellets;
     if (p.show_dphi) j["dphi"] = true;
     write_window(p, j);
     write_ranges(p.phi_range, p.dphi_range, j);
@@ -226,13 +205,13 @@ struct PlotWriter {
 
 }  // namespace
 
-PlotSpec plot_from_json(const json& j, const std::string& path, int pellets, double t_end) {
+PlotSpec plot_from_json(const json& j, const std::string& path, const Limits& limits) {
   Fields f(j, path);
   const auto kind = f.string("kind", 32);
   if (!kind) throw FieldException(f.path("kind"), std::string("is required: ") + kKinds);
   for (const KindReader& reader : kReaders) {
     if (*kind != reader.name) continue;
-    PlotSpec plot = reader.create(f, {pellets, t_end});
+    PlotSpec plot = reader.create(f, limits);
     f.done();
     return plot;
   }

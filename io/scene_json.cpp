@@ -19,6 +19,7 @@ Pellet read_pellet(const json& j, const std::string& path) {
   p.m = f.required_number("m");
   p.phi0 = f.required_number("phi0");
   p.dphi0 = f.number("dphi0", 0.0);
+  p.c = f.number("c", 0.0);
   p.force.F0 = f.number("F0", 0.0);
   p.force.Omega = f.number("Omega", 0.0);
   p.force.psi = f.number("psi", 0.0);
@@ -146,8 +147,7 @@ SceneOrError scene_from_json(const json& j, const Limits& limits) {
     s.sim.lyapunov = f.boolean("lyapunov", false);
     if (const json* plots = f.array("plots", limits.plots)) {
       for (std::size_t i = 0; i < plots->size(); ++i)
-        s.figure.plots.push_back(
-            plot_from_json((*plots)[i], item("plots", i), s.model.size(), s.sim.t_end));
+        s.figure.plots.push_back(plot_from_json((*plots)[i], item("plots", i), limits));
     }
     if (auto w = f.integer("width")) s.figure.width = static_cast<int>(*w);
     if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
@@ -285,6 +285,7 @@ json scene_to_json(const Scene& s) {
                        {"F0", p.force.F0},
                        {"Omega", p.force.Omega},
                        {"psi", p.force.psi}});
+    if (p.c != 0.0) pellets.back()["c"] = p.c;  // undamped scenes read back as before
   }
   model["pellets"] = pellets;
   json limiters = json::array();

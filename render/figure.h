@@ -60,8 +60,8 @@ struct RenderResult {
 };
 
 // Checks a figure against the model before any simulation: its size and panel count against
-// `limits` (check_figure_size, Limits::plots), pellet indices, time windows and instants (≥ 0;
-// the scene reader holds them to t_end), overlay points, and 3-D panels (PNG only, and only in
+// `limits` (check_figure_size, Limits::plots), each plot (validate_plot, render/plot_validate.h;
+// instants only ≥ 0: the scene reader holds them to t_end), and 3-D panels (PNG only, and only in
 // builds with 3-D).
 std::optional<FieldError> validate_figure(const FigureSpec& figure, const Model& model,
                                           ImageFormat format, const Limits& limits = {});

@@ -16,6 +16,7 @@ std::string parameter_label(const std::string& path) {
                                {"m", "m", "kg"},
                                {"phi0", "\u03c6\u2080", "rad"},
                                {"dphi0", "\u03c6\u0307\u2080", "rad/s"},
+                               {"c", "c", "1/s"},
                                {"angle", "angle", "rad"},
                                {"k", "k", ""},
                                {"R", "R", "m"},

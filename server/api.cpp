@@ -251,7 +251,6 @@ void Api::sweep_post(const httplib::Request& req, httplib::Response& res) {
   Scene scene = std::move(std::get<Scene>(parsed));
   if (!scene.sweep)
     return send_error(res, {400, "sweep", "is required: the sweep to run (API.md, \"Sweeps\")"});
-  if (auto e = check_sweep(scene, config_.limits)) return send_error(res, *e);
   if (auto e = check_sweep_cost(scene, config_.limits, config_.sweep_threads))
     return send_error(res, *e);
   scene.sim = bounded_options(scene.sim, config_.limits);
@@ -275,10 +274,9 @@ void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
   // A scene's own request was checked as it was read; the defaults are checked here.
   if (!scene.periodic_orbit) {
     scene.periodic_orbit.emplace();
-    if (auto e = validate_orbit_request(scene.model, *scene.periodic_orbit))
+    if (auto e = validate_orbit_request(scene.model, *scene.periodic_orbit, config_.limits))
       return send_error(res, ApiError::from(*e));
   }
-  if (auto e = check_orbit(scene, config_.limits)) return send_error(res, *e);
   scene.sim = bounded_options(scene.sim, config_.limits);
   if (scene.periodic_orbit->continuation) return submit(JobKind::orbit, std::move(scene), res);
   auto produced =

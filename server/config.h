@@ -14,8 +14,8 @@ namespace vibro::server {
 // The server's limits: the core's (core/run/limits.h, where each is described), tightened. A
 // scene over a limit that can be known up front (sizes, counts, t_end) is refused before any
 // work; the rest (events, steps, samples, wall clock) stop the run. The sweep budgets are checked
-// up front where they can be (server/run_scene.h, check_sweep; server/sweep_limits.h); finished
-// sweeps hold at most 4 × sweep_points section points in all, the oldest dropped first.
+// up front where they can be (validate_sweep, validate_orbit_request; server/sweep_limits.h);
+// finished sweeps hold at most 4 × sweep_points section points in all, the oldest dropped first.
 struct Limits : vibro::Limits {
   Limits() {
     body_bytes = 64 * 1024;

@@ -95,69 +95,6 @@ std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, con
   return std::nullopt;
 }
 
-std::optional<ApiError> check_sweep(const Scene& scene, const Limits& limits) {
-  const SweepSpec& spec = *scene.sweep;
-  const double periods = static_cast<double>(sweep_runs(spec)) * (spec.transient + spec.record);
-  if (periods > limits.sweep_periods)
-    return ApiError{400, "sweep.count",
-                    "the sweep asks for " + std::to_string(static_cast<long>(periods)) +
-                        " periods (runs × (transient + record)), over the server's limit of " +
-                        std::to_string(static_cast<long>(limits.sweep_periods))};
-  // The longest run: the period is longest where the swept values make it so, at a corner.
-  const SweepAxis one{"", 0.0, 0.0, 1};
-  const SweepAxis& a2 = spec.axis2 ? *spec.axis2 : one;
-  for (double v : {spec.axis.from, spec.axis.to})
-    for (double v2 : {a2.from, a2.to}) {
-      Model m = scene.model;
-      set_parameter(m, spec.axis.parameter, v);
-      if (spec.axis2) set_parameter(m, spec.axis2->parameter, v2);
-      const double span = (spec.transient + spec.record) * sweep_period(m);
-      if (span > limits.t_end)
-        return ApiError{400, "sweep.record",
-                        "a run would last " + std::to_string(span) +
-                            " s (transient + record "
-                            "periods), over the server's limit of " +
-                            std::to_string(limits.t_end) + " s"};
-    }
-  return std::nullopt;
-}
-
-std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits) {
-  const OrbitRequest& request = *scene.periodic_orbit;
-  const OrbitSpec& spec = request.orbit;
-  const double T = forcing_period(scene.model);
-  const auto over = [&](const char* field, const std::string& what, double s) {
-    return ApiError{400, std::string("periodic_orbit.") + field,
-                    what + " would last " + std::to_string(s) +
-                        " s of simulated time, over the server's limit of " +
-                        std::to_string(limits.t_end) + " s"};
-  };
-  if (spec.guess.empty() && spec.transient * T > limits.t_end)
-    return over("transient", "the run to the starting guess (transient periods)",
-                spec.transient * T);
-  // Each Newton iteration maps the state over `periods` periods at least once.
-  const double search = (spec.max_iterations + 1.0) * spec.periods * T;
-  if (search > limits.t_end)
-    return over("max_iterations", "the search ((max_iterations + 1) × periods forcing periods)",
-                search);
-  if (!request.continuation) return std::nullopt;
-  // A branch point costs a few corrector iterations, each one map: about this many at most.
-  constexpr double kMapsPerPoint = 16.0;
-  const double periods = kMapsPerPoint * request.continuation->max_points * spec.periods;
-  if (periods > limits.sweep_periods)
-    return ApiError{400, "periodic_orbit.continuation.max_points",
-                    "the branch may take some " + std::to_string(static_cast<long>(periods)) +
-                        " forcing periods (16 maps × max_points × periods), over the server's "
-                        "limit of " +
-                        std::to_string(static_cast<long>(limits.sweep_periods))};
-  Model end = scene.model;
-  set_parameter(end, request.continuation->parameter, request.continuation->to);
-  const double last = spec.periods * forcing_period(end);
-  if (last > limits.t_end)
-    return over("continuation.to", "a map at the branch's end (periods forcing periods)", last);
-  return std::nullopt;
-}
-
 RenderResult draw_orbit_return(const Scene& scene, const PeriodicOrbit& orbit, ImageFormat format) {
   const auto once = orbit_return(scene.model, scene.sim, orbit);
   if (const auto* e = std::get_if<FieldError>(&once)) return {{}, {}, *e, {}};

@@ -35,15 +35,6 @@ std::optional<ApiError> check_figure(const Scene& scene, ImageFormat format, con
 JobResult simulate_scene(const Scene& scene, const Limits& limits,
                          std::optional<RunTable> table = std::nullopt);
 
-// What a sweep may cost, known up front: its runs × periods, and each run's span, within the
-// server's limits. The error names the sweep's field.
-std::optional<ApiError> check_sweep(const Scene& scene, const Limits& limits);
-
-// What seeking the scene's periodic orbit (it must have one) may cost, known up front: the
-// simulated time of its starting run and of its Newton iterations, and for a continuation its
-// points × periods, within the server's limits. The error names the periodic_orbit's field.
-std::optional<ApiError> check_orbit(const Scene& scene, const Limits& limits);
-
 // The scene's periodic orbit as API.md's JSON, without continuation (that is a job's); or, when
 // `image` names a format, one return of the motion drawn in the scene's plots.
 JobResult orbit_scene(const Scene& scene, std::optional<ImageFormat> image = std::nullopt);

@@ -1,6 +1,7 @@
-// What a sweep job may cost on this server beyond its simulated time (server/run_scene.h,
-// check_sweep): the section points it keeps and its wall clock, refused up front where they can
-// be known, and the share of the wall clock each of its runs gets.
+// What a sweep job may cost on this server beyond its simulated time (which the sweep's spec
+// checks itself, core/analysis/sweep.h, validate_sweep): the section points it keeps and its wall
+// clock, refused up front where they can be known, and the share of the wall clock each of its runs
+// gets.
 #pragma once
 
 #include <optional>

@@ -93,6 +93,30 @@ double forcing_period(const Model& model) {
   return 0.0;
 }
 
+namespace {
+
+// The simulated time of the run to the guess and of the search, each held to limits.t_end as a
+// scene's run is: each Newton iteration maps the state over `periods` forcing periods of T s.
+std::optional<FieldError> check_simulated_time(const OrbitSpec& spec, double T,
+                                               const Limits& limits) {
+  const auto over = [&](const char* field, const std::string& what, double s) {
+    return FieldError{std::string("periodic_orbit.") + field,
+                      what + " would last " + shortest_text(s) +
+                          " s of simulated time, over the limit of " + shortest_text(limits.t_end) +
+                          " s"};
+  };
+  if (spec.guess.empty() && spec.transient * T > limits.t_end)
+    return over("transient", "the run to the starting guess (transient periods)",
+                spec.transient * T);
+  const double search = (spec.max_iterations + 1.0) * spec.periods * T;
+  if (search > limits.t_end)
+    return over("max_iterations", "the search ((max_iterations + 1) × periods forcing periods)",
+                search);
+  return std::nullopt;
+}
+
+}  // namespace
+
 std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& spec,
                                          const Limits& limits) {
   const double T = forcing_period(model);
@@ -134,7 +158,7 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
   if (spec.max_iterations < 1 || spec.max_iterations > limits.orbit_iterations)
     return FieldError{"periodic_orbit.max_iterations", "expected a whole number from 1 to " +
                                                            std::to_string(limits.orbit_iterations)};
-  return std::nullopt;
+  return check_simulated_time(spec, T, limits);
 }
 
 MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int periods,

@@ -68,6 +68,17 @@ std::optional<FieldError> check_value(const Model& m, const SweepSpec& spec, dou
   return e;
 }
 
+// A run's simulated time, transient + record periods of the model's, held to limits.t_end as a
+// scene's run is.
+std::optional<FieldError> check_run_time(const Model& m, const SweepSpec& spec,
+                                         const Limits& limits) {
+  const double span = (spec.transient + spec.record) * sweep_period(m);
+  if (span <= limits.t_end) return std::nullopt;
+  return FieldError{"sweep.record", "a run would last " + shortest_text(span) +
+                                        " s (transient + record periods), over the limit of " +
+                                        shortest_text(limits.t_end) + " s"};
+}
+
 // Every value (pair) of the sweep, each model checked as a scene of its own would be: the checks
 // are not all ranges (pellets and limiters must not coincide mod 2π, a stroboscopic section
 // needs forcing), so the ends alone do not vouch for the values between them.
@@ -88,6 +99,7 @@ std::optional<FieldError> check_every_value(const Model& model, const SweepSpec&
       const double v = spec.axis.value(i);
       *x = v;
       if (auto e = check_value(m, spec, v, v2, limits)) return e;
+      if (auto e = check_run_time(m, spec, limits)) return e;
     }
   }
   return std::nullopt;
@@ -291,6 +303,12 @@ std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& sp
   if (sweep_runs(spec) > limits.sweep_runs)
     return FieldError{"sweep.count", "the sweep would make more than " +
                                          std::to_string(limits.sweep_runs) + " runs"};
+  const double total = static_cast<double>(sweep_runs(spec)) * (spec.transient + spec.record);
+  if (total > limits.sweep_periods)
+    return FieldError{"sweep.count",
+                      "the sweep asks for " + shortest_text(total) +
+                          " periods (runs × (transient + record)), over the limit of " +
+                          shortest_text(limits.sweep_periods)};
   return check_every_value(model, spec, limits);
 }
 

@@ -61,7 +61,8 @@ std::string_view error_reference_name(ErrorReference r) {
 ErrorReference error_reference_for(const Model& model) {
   if (!unforced(model)) return ErrorReference::reference_run;
   if (model.alpha0 == 0.0) return ErrorReference::energy;
-  if (model.friction == FrictionLaw::paper) return ErrorReference::first_integral;
+  if (model.friction == FrictionLaw::paper && !model.damped())
+    return ErrorReference::first_integral;
   return ErrorReference::reference_run;
 }
 

@@ -87,6 +87,8 @@ namespace {
 // an armed limiter one of its pellets touches (0: none).
 struct Chain {
   double F = 0.0, M = 0.0, P = 0.0;
+  double D = 0.0;  // Σ m_i c_i, kg/s: its dampers' force per unit speed over R
+  double damping() const { return D / M; }  // 1/s
   int limiter_side = 0;
 };
 
@@ -106,6 +108,7 @@ Chain chain_from(const JoinScene& s, const PelletLinks& links, int from, int way
   for (int i = from, guard = 0; i >= 0 && guard < n; i = links.next(i, way), ++guard) {
     c.F += s.model.pellets[i].force.at(s.t);
     c.M += s.model.pellets[i].m;
+    c.D += s.model.pellets[i].m * s.model.pellets[i].c;
     c.P += s.model.pellets[i].m * s.y[dphi_index(i)];
     for (const LimiterContact& l : s.limiter_contacts)
       if (l.pellet == i && s.armed[l.limiter]) c.limiter_side = l.side;
@@ -123,17 +126,19 @@ double held_acceleration(const Model& model, const Chain& c, double phi) {
 }
 
 // How fast the chain behind closes on the chain ahead, rad/s². Moving at one speed, friction
-// and gravity per mass are the same for both: the forces per mass decide. At rest (speed within
-// v_merge), what holds each decides; one at rest and one moving (parting from a pellet that a
-// limiter stopped): each one's own acceleration.
+// and gravity per mass are the same for both: the forces and dampers per mass decide. At rest
+// (speed within v_merge), what holds each decides; one at rest and one moving (parting from a
+// pellet that a limiter stopped): each one's own acceleration.
 double relative_acceleration(const Model& model, const SlidingLaw& law, const Chain& b,
                              const Chain& a, double phi, double v_merge) {
   const double vb = b.P / b.M, va = a.P / a.M;
   const bool rest_b = std::abs(vb) <= v_merge, rest_a = std::abs(va) <= v_merge;
-  if (!rest_b && !rest_a) return (b.F / b.M - a.F / a.M) / model.R;
+  if (!rest_b && !rest_a)
+    return (b.F / b.M - a.F / a.M) / model.R - (b.damping() * vb - a.damping() * va);
   auto own = [&](const Chain& c, double v, bool rest) {
     return rest ? held_acceleration(model, c, phi)
-                : law.acceleration(c.F, c.M, std::cos(phi), std::sin(phi), v, v > 0.0 ? 1 : -1);
+                : law.acceleration({c.F, c.M, c.damping()}, std::cos(phi), std::sin(phi), v,
+                                   v > 0.0 ? 1 : -1);
   };
   return own(b, vb, rest_b) - own(a, va, rest_a);
 }

@@ -76,7 +76,8 @@ std::optional<Bracket> CrossingFinder::crossed(const WatchTrack& track, const Wa
                                                const StepView& step, double t_a, double t_b,
                                                const Vec& y_b, double g_b) {
   if (!track.armed) return std::nullopt;
-  if (depends_on_time_alone(fn.watch)) return scan_between(fn, y_b, t_a, track.last, t_b, g_b);
+  if (depends_on_time_alone(fn.watch, fn.model, fn.bodies))
+    return scan_between(fn, y_b, t_a, track.last, t_b, g_b);
   if (g_b <= 0.0) return Bracket{t_a, t_b, track.last, g_b};
   // Closing fast enough to meet before this sample, yet apart at it: the two may have met and
   // parted between (a pellet knocked onto another 7e-9 rad ahead at 0.8 rad/s, pressed back at
@@ -359,7 +360,8 @@ bool CrossingFinder::calm(const std::vector<Watch>& watches, const Model& model,
       const double moves =
           std::max({std::abs(b.value - a.value), h * std::abs(a.rate), h * std::abs(b.rate)});
       quiet = quiet && std::min(a.value, b.value) > kCalm * moves;
-    } else if (!depends_on_time_alone(watch)) {  // scan_between bounds those over any span
+    } else if (!depends_on_time_alone(watch, model, bodies)) {
+      // A watch of time alone is bounded over any span by scan_between.
       const double g = track.end_value;
       quiet = quiet && std::min(track.last, g) > kCalm * std::abs(g - track.last);
     }

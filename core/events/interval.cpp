@@ -40,7 +40,8 @@ void MotionInterval::add_body_watches(int b, const std::vector<bool>& armed, con
     double target;
     if (next_limiter(model_, armed, body, y[phi_index(L)], body.s, radii.on_limiter, lim, target))
       watches_.push_back({WatchKind::limiter, b, L, -1, lim, target});
-    if (model_.friction == FrictionLaw::paper && !forced && body.members.size() == 1)
+    if (model_.friction == FrictionLaw::paper && !forced && body.members.size() == 1 &&
+        model_.pellets[L].c == 0.0)
       fi.emplace(model_, body.s, y[phi_index(L)], y[dphi_index(L)]);
   } else if (forced) {
     forced_rest_ = true;

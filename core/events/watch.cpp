@@ -13,6 +13,7 @@ namespace {
 // The forces on some members of a body: their sum, its rate, and a bound of its second derivative.
 struct PartForces {
   double F = 0.0, rate = 0.0, curvature = 0.0, m = 0.0;
+  double mc = 0.0;  // Σ m_i c_i, kg/s
 };
 
 PartForces part_forces(const Model& model, const Body& b, int from, int to, double t) {
@@ -23,6 +24,7 @@ PartForces part_forces(const Model& model, const Body& b, int from, int to, doub
     p.rate += pellet.force.rate(t);
     p.curvature += std::abs(pellet.force.F0) * pellet.force.Omega * pellet.force.Omega;
     p.m += pellet.m;
+    p.mc += pellet.m * pellet.c;
   }
   return p;
 }
@@ -84,8 +86,10 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
         return std::min(m.ahead, m.behind);
       }
       // Sliding, friction and gravity per unit mass are the same for every part: the part
-      // behind pushes the part ahead while its force per mass is larger.
-      return p.behind.F / p.behind.m - p.ahead.F / p.ahead.m;
+      // behind pushes the part ahead while its force per mass, less its dampers', is larger.
+      return p.behind.F / p.behind.m - p.ahead.F / p.ahead.m -
+             model.R * y[dphi_index(w.pellet)] *
+                 (p.behind.mc / p.behind.m - p.ahead.mc / p.ahead.m);
     }
   }
   return 1.0;
@@ -112,8 +116,8 @@ double acceleration_of(const Model& model, const SlidingLaw& law, const Body& b,
                        const Vec& y) {
   if (b.mode != Mode::sliding) return 0.0;
   const double phi = y[phi_index(b.leader())];
-  return law.acceleration(body_force(model, b, t), body_mass(model, b), std::cos(phi),
-                          std::sin(phi), y[dphi_index(b.leader())], b.s);
+  return law.acceleration({body_force(model, b, t), body_mass(model, b), body_damping(model, b)},
+                          std::cos(phi), std::sin(phi), y[dphi_index(b.leader())], b.s);
 }
 
 const Body& body_of(const std::vector<Body>& bodies, int i) {
@@ -149,8 +153,13 @@ Closing closing(const Watch& w, const Model& model, const SlidingLaw& law,
   return c;
 }
 
-bool depends_on_time_alone(const Watch& w) {
-  return w.kind == WatchKind::release || w.kind == WatchKind::separation;
+bool depends_on_time_alone(const Watch& w, const Model& model, const std::vector<Body>& bodies) {
+  if (w.kind == WatchKind::release) return true;
+  if (w.kind != WatchKind::separation) return false;
+  const Body& b = bodies[w.body];
+  if (b.mode != Mode::sliding) return true;
+  const Parts p = parts(model, b, w.split, 0.0);
+  return p.behind.mc / p.behind.m == p.ahead.mc / p.ahead.m;
 }
 
 TimeBounds time_bounds(const Watch& w, const Model& model, const std::vector<Body>& bodies,

@@ -78,7 +78,9 @@ struct TimeBounds {
   double rate = 0.0;
   double curvature = 0.0;
 };
-bool depends_on_time_alone(const Watch& w);
+// Not a sliding body's separation whose parts are damped differently per unit mass: the dampers'
+// difference follows the body's speed.
+bool depends_on_time_alone(const Watch& w, const Model& model, const std::vector<Body>& bodies);
 // For the separation watch of a held body, at its crossing: the part pulled off, +1 the part
 // ahead of the cut, −1 the part behind; 0 for a sliding body (its parts slide on apart).
 int pulled_off(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,

@@ -4,6 +4,14 @@
 #include <cmath>
 
 namespace vibro {
+namespace {
+
+// The power a pellet's damper takes at speed dphi, m R² c dphi², W.
+double damper_power(const Pellet& p, double R, double dphi) {
+  return p.m * R * R * p.c * dphi * dphi;
+}
+
+}  // namespace
 
 double normal_per_mass(const Model& model, double phi, double dphi) {
   return model.g * std::cos(phi) + model.R * dphi * dphi;
@@ -19,6 +27,13 @@ double body_mass(const Model& model, const Body& body) {
   double M = 0.0;
   for (int i : body.members) M += model.pellets[i].m;
   return M;
+}
+
+double body_damping(const Model& model, const Body& body) {
+  if (body.members.size() == 1) return model.pellets[body.leader()].c;
+  double mc = 0.0;
+  for (int i : body.members) mc += model.pellets[i].m * model.pellets[i].c;
+  return mc / body_mass(model, body);
 }
 
 double body_free_acceleration(const Model& model, const Body& body, double t, double phi) {
@@ -40,9 +55,11 @@ double longest_step(const Model& model) {
 SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bodies, const Vec& y)
     : model_(model), bodies_(bodies), law_(model) {
   mass_.reserve(bodies.size());
+  damping_.reserve(bodies.size());
   normal_side_.reserve(bodies.size());
   for (const Body& b : bodies) {
     mass_.push_back(body_mass(model, b));
+    damping_.push_back(body_damping(model, b));
     const int L = b.leader();
     normal_side_.push_back(normal_per_mass(model, y[phi_index(L)], y[dphi_index(L)]) >= 0.0 ? 1
                                                                                             : -1);
@@ -78,17 +95,18 @@ void SegmentDynamics::evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const 
       for (int i : body.members) F += force(i);
     const double q = dphi * dphi + law_.gR * c;  // normal force per unit mass, over R
     const int side = normal_side_[b];
-    const double acc = law_.acceleration(F, mass_[b], c, sn, dphi, s, side);
+    const double acc = law_.acceleration({F, mass_[b], damping_[b]}, c, sn, dphi, s, side);
     const double n = R * (paper ? q : side * q);  // g cos phi + R dphi², or its magnitude
     for (int i : body.members) {
-      const double m = model_.pellets[i].m;
+      const Pellet& p = model_.pellets[i];
       const double Fi = alone ? F : force(i);
       dydt[phi_index(i)] = y[dphi_index(i)];
       dydt[dphi_index(i)] = acc;
-      dydt[work_index(i)] = R * dphi * (Fi - m * s * law_.mu * n);
+      // The force's and friction's work, less what the damper takes, m R² c dphi².
+      dydt[work_index(i)] = R * dphi * (Fi - p.m * s * law_.mu * n) - damper_power(p, R, dphi);
     }
     if (!J) continue;
-    const SlidingLaw::Slopes dacc = law_.slopes(c, sn, dphi, s, side);
+    const SlidingLaw::Slopes dacc = law_.slopes(damping_[b], c, sn, dphi, s, side);
     for (int i : body.members) {
       (*J)(2 * i, 2 * i + 1) = 1.0;
       (*J)(2 * i + 1, 2 * L) = dacc.phi;
@@ -119,7 +137,7 @@ void SegmentDynamics::jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) con
       dF += model_.pellets[i].force.rate(t);
     }
     // acc and the normal force per mass n, with their partial derivatives.
-    const SlidingLaw::Slopes dacc = law_.slopes(c, sn, dphi, s, normal_side_[b]);
+    const SlidingLaw::Slopes dacc = law_.slopes(damping_[b], c, sn, dphi, s, normal_side_[b]);
     const double sq = model_.friction == FrictionLaw::paper ? 1.0 : normal_side_[b];
     const double n = sq * (g * c + R * dphi * dphi);
     const double dn_dphi = -sq * g * sn, dn_ddphi = sq * 2.0 * R * dphi;
@@ -133,7 +151,8 @@ void SegmentDynamics::jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) con
       dfdt[dphi_index(i)] = dacc_dt;
       const int w = work_index(i);
       dfdy(w, phi_index(L)) += R * dphi * (-m * s * mu * dn_dphi);
-      dfdy(w, dphi_index(L)) += R * (Fi - m * s * mu * n) + R * dphi * (-m * s * mu * dn_ddphi);
+      dfdy(w, dphi_index(L)) += R * (Fi - m * s * mu * n) + R * dphi * (-m * s * mu * dn_ddphi) -
+                                2.0 * m * R * R * model_.pellets[i].c * dphi;
       dfdt[w] = R * dphi * model_.pellets[i].force.rate(t);
     }
   }

@@ -28,6 +28,16 @@ double body_free_acceleration(const Model& model, const Body& body, double t, do
 // of a forcing (sqrt(R/g), 1/Ω).
 double longest_step(const Model& model);
 
+// The viscous damping of a body, 1/s: its pellet's c alone, or the mass-weighted mean
+// Σ m_i c_i / M of its members (the dampers' forces −m_i R c_i dphi over the body's mass).
+double body_damping(const Model& model, const Body& body);
+
+// What drives a sliding body besides gravity and friction: its total force F (N), its mass M
+// (kg) and its damping C (1/s, body_damping).
+struct BodyLoad {
+  double F, M, C;
+};
+
 // The acceleration of a sliding body under the model's friction law, with the model's constants
 // computed once: the right-hand side calls it for every body at every evaluation.
 struct SlidingLaw {
@@ -36,30 +46,35 @@ struct SlidingLaw {
         R(model.R),
         gR(model.g / model.R),
         mu(model.mu()) {}
-  // A body of total force F (N) and mass M (kg) at phi (its cosine and sine given), moving at
-  // dphi in direction s: forcing, gravity and kinetic friction.
-  double acceleration(double F, double M, double cos_phi, double sin_phi, double dphi,
+  // A body under `load` at phi (its cosine and sine given), moving at dphi in direction s:
+  // forcing, gravity, kinetic friction and damping.
+  double acceleration(const BodyLoad& load, double cos_phi, double sin_phi, double dphi,
                       int s) const {
-    return acceleration(F, M, cos_phi, sin_phi, dphi, s,
+    return acceleration(load, cos_phi, sin_phi, dphi, s,
                         dphi * dphi + gR * cos_phi >= 0.0 ? 1 : -1);
   }
   // The same with the bilateral law's normal force taken on one side of its zero (side ±1), not
   // by its magnitude: a motion interval keeps one side, so its equations stay smooth where the
   // force changes sign (the normal watch ends the interval there). An integrator stepping over
   // the kink of |N| errs by the kink, whatever its error estimate says.
-  double acceleration(double F, double M, double cos_phi, double sin_phi, double dphi, int s,
+  // The damping is subtracted last, so an undamped body's acceleration is that of the law alone
+  // to the bit.
+  double acceleration(const BodyLoad& load, double cos_phi, double sin_phi, double dphi, int s,
                       int side) const {
-    return paper ? F / (M * R) - s * mu * dphi * dphi - gR * (sin_phi + s * mu * cos_phi)
-                 : F / (M * R) - gR * sin_phi - s * mu * side * (dphi * dphi + gR * cos_phi);
+    const double F = load.F, M = load.M;
+    return (paper ? F / (M * R) - s * mu * dphi * dphi - gR * (sin_phi + s * mu * cos_phi)
+                  : F / (M * R) - gR * sin_phi - s * mu * side * (dphi * dphi + gR * cos_phi)) -
+           load.C * dphi;
   }
-  // Its partial derivatives in phi and dphi, which depend on the place and speed alone.
+  // Its partial derivatives in phi and dphi, which depend on the place and speed alone (and on
+  // the body's damping C, 1/s).
   struct Slopes {
     double phi, dphi;
   };
-  Slopes slopes(double cos_phi, double sin_phi, double dphi, int s, int side) const {
-    return paper
-               ? Slopes{-gR * (cos_phi - s * mu * sin_phi), -2.0 * s * mu * dphi}
-               : Slopes{-gR * cos_phi + s * mu * side * gR * sin_phi, -2.0 * s * mu * side * dphi};
+  Slopes slopes(double C, double cos_phi, double sin_phi, double dphi, int s, int side) const {
+    return paper ? Slopes{-gR * (cos_phi - s * mu * sin_phi), -2.0 * s * mu * dphi - C}
+                 : Slopes{-gR * cos_phi + s * mu * side * gR * sin_phi,
+                          -2.0 * s * mu * side * dphi - C};
   }
   bool paper;
   double R;   // m
@@ -97,6 +112,7 @@ class SegmentDynamics final : public OdeSystem {
   const Model& model_;
   const std::vector<Body>& bodies_;
   std::vector<double> mass_;      // per body
+  std::vector<double> damping_;   // per body, 1/s
   std::vector<int> normal_side_;  // per body: the sign of the bilateral law's normal force
   SlidingLaw law_;
   mutable std::vector<double> jet_scratch_;  // the series of a body's jets, reused

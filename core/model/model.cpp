@@ -9,6 +9,10 @@ bool Limiter::acts_on(int pellet) const {
   return pellets.empty() || std::find(pellets.begin(), pellets.end(), pellet) != pellets.end();
 }
 
+bool Model::damped() const {
+  return std::any_of(pellets.begin(), pellets.end(), [](const Pellet& p) { return p.c != 0.0; });
+}
+
 double free_acceleration(const Model& model, int i, double t, double phi) {
   const Pellet& p = model.pellets[i];
   return p.force.at(t) / (p.m * model.R) - model.g / model.R * std::sin(phi);

@@ -32,6 +32,7 @@ struct Pellet {
   double phi0 = 0.0;   // rad
   double dphi0 = 0.0;  // rad/s
   Forcing force;
+  double c = 0.0;  // viscous damping, 1/s, ≥ 0: adds −c·dphi to the pellet's acceleration
 };
 
 struct Limiter {
@@ -56,6 +57,8 @@ struct Model {
   double mu() const { return std::tan(alpha0); }
   double mu_static() const { return mu_s.value_or(mu()); }
   int size() const { return static_cast<int>(pellets.size()); }
+  // Whether any pellet is damped (then the unforced motion has no first integral).
+  bool damped() const;
 };
 
 // Free tangential acceleration of pellet i at rest: forcing and gravity, no friction (rad/s²).

@@ -56,6 +56,7 @@ double* field_of(Model& model, const std::string& path, std::string& why) {
     if (field == "F0") return &p.force.F0;
     if (field == "Omega") return &p.force.Omega;
     if (field == "psi") return &p.force.psi;
+    if (field == "c") return &p.c;
   } else if (split_indexed(rest, "limiters", i, field)) {
     if (i >= model.limiters.size()) {
       why = "names limiter index " + std::to_string(i) + ", but the model has " +
@@ -68,7 +69,7 @@ double* field_of(Model& model, const std::string& path, std::string& why) {
   }
   why =
       "names no numeric field of the model (g, R, alpha0, k_c, mu_s, "
-      "pellets[i].m/phi0/dphi0/F0/Omega/psi, limiters[j].angle/k)";
+      "pellets[i].m/phi0/dphi0/F0/Omega/psi/c, limiters[j].angle/k)";
   return nullptr;
 }
 

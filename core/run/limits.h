@@ -50,6 +50,8 @@ struct Limits {
   long pixels = 4096L * 4096L;
   // Panels per figure: each draws at least an axis box and its labels in a grid cell.
   int plots = 8;
+  // Branches a phase panel may pick by number: each is looked up among the run's branches.
+  int plot_branches = 10'000;
 
   // --- Sweeps (core/analysis/sweep.h) ---
   // Runs of one sweep (values × values2 × directions × initial states): every value's model is

@@ -4,6 +4,9 @@
 #include <cmath>
 #include <sstream>
 
+#include "core/model/dynamics.h"
+#include "core/run/simulate.h"
+
 namespace vibro {
 namespace {
 
@@ -130,6 +133,13 @@ RunResult RunState::finish(const EndView& end, const std::optional<Graze>& graze
   for (RunObserver* o : observers_) o->on_end(end, result);
   st.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - started_).count();
   return result;
+}
+
+std::unique_ptr<Stepper> make_stepper(const Model& model, const SolverOptions& options,
+                                      AutoExplicit auto_explicit, double longest_step_scale) {
+  return make_stepper(options.method,
+                      StepperOptions{options.rtol, options.atol,
+                                     longest_step_scale * longest_step(model), auto_explicit});
 }
 
 }  // namespace vibro

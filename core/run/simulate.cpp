@@ -2,6 +2,7 @@
 
 #include <algorithm>
 #include <cmath>
+#include <limits>
 #include <optional>
 #include <utility>
 
@@ -87,14 +88,8 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     int first = 0;
     found = search_step(a, b, first);
     const bool event = !found.empty();
-    const StepSamples step{a,
-                           b,
-                           y_,
-                           times_,
-                           states_,
-                           first,
-                           event ? found.front().t : std::numeric_limits<double>::infinity(),
-                           stepper_};
+    const double first_event = event ? found.front().t : std::numeric_limits<double>::infinity();
+    const StepSamples step{a, b, y_, times_, states_, first, first_event, stepper_};
     for (RunObserver* o : observers_) o->on_step(step);
     t = event ? found.front().t : b;
     if (event) {
@@ -141,24 +136,13 @@ RunResult Simulation::run() {
   else if (!std::isfinite(y_.sum()))
     y_ = stepper_.y();  // the last finite state
   const bool at_rest = bodies.empty() && interval_->at_rest_for_good();
-  const EndView end{t,
-                    std::min(t, opt_.t_end),
-                    y_,
-                    bodies.empty() ? interval_->bodies() : bodies,
-                    interval_ ? &*interval_ : nullptr,
-                    stopped_,
-                    at_rest};
+  const std::vector<Body>& last = bodies.empty() ? interval_->bodies() : bodies;
+  const MotionInterval* open = interval_ ? &*interval_ : nullptr;
+  const EndView end{t, std::min(t, opt_.t_end), y_, last, open, stopped_, at_rest};
   return finish(end, finder_.first_graze());
 }
 
 }  // namespace
-
-std::unique_ptr<Stepper> make_stepper(const Model& model, const SolverOptions& options,
-                                      AutoExplicit auto_explicit, double longest_step_scale) {
-  return make_stepper(options.method,
-                      StepperOptions{options.rtol, options.atol,
-                                     longest_step_scale * longest_step(model), auto_explicit});
-}
 
 RunResult simulate(const Model& model, const SolverOptions& options, Stepper& stepper,
                    std::span<RunObserver* const> observers) {

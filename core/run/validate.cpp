@@ -89,6 +89,7 @@ std::optional<FieldError> check_pellets(const Model& m, const Limits& limits) {
     if (auto e = check_range(pellet_field(i, "F0"), p.force.F0, -1e12, 1e12)) return e;
     if (auto e = check_range(pellet_field(i, "Omega"), p.force.Omega, -1e9, 1e9)) return e;
     if (auto e = check_range(pellet_field(i, "psi"), p.force.psi, -1e4, 1e4)) return e;
+    if (auto e = check_range(pellet_field(i, "c"), p.c, 0.0, kMaxDamping)) return e;
     for (int j = 0; j < i; ++j) {
       if (std::abs(wrap_angle(p.phi0 - m.pellets[j].phi0)) < 1e-9) {
         return FieldError{pellet_field(i, "phi0"),

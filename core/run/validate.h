@@ -25,6 +25,8 @@ std::string shortest_text(double x);
 // turn for its motion to mean anything (2π at 1e4 rad is resolved to 1e-12 rad).
 constexpr double kMaxStartAngle = 1e4;
 constexpr double kMaxStartSpeed = 1e7;
+// Viscous damping, 1/s: a pellet stops within 1 µs at most.
+constexpr double kMaxDamping = 1e6;
 
 // A pellet's state {phi, dphi} checked against those bounds; the error names `field`.phi or .dphi.
 std::optional<FieldError> validate_state(const std::string& field, double phi, double dphi);

@@ -58,6 +58,7 @@ def same_but_wall_times(made, quoted):
             print(f"  skipped (its run reached the deadline here): {a[0]}")
             continue
         if a[:wall] + a[wall + 1:] != b[:wall] + b[wall + 1:]:
+            print(f"  made:   {a}\n  quoted: {b}")
             return False
     return True
 

@@ -450,5 +450,19 @@ TEST(OrbitContinuation, StaysWhereTheModelIsValid) {
   for (const BranchPoint& p : b.points) EXPECT_GE(p.value, -1e4);
 }
 
+// The search holds its simulated time to the run's limit, as a scene's run is: the run to the
+// guess (transient periods) and the Newton iterations ((max_iterations + 1) × periods).
+TEST(PeriodicOrbit, ItsSimulatedTimeIsHeldToTheLimits) {
+  const Model m = impact_oscillator(5.0);  // T = 1.26 s
+  Limits limits;
+  limits.t_end = 100.0;
+  OrbitSpec spec;  // a transient of 100 periods: 126 s
+  EXPECT_EQ(validate_orbit(m, spec, limits)->field, "periodic_orbit.transient");
+  spec.guess = {{0.1, 0.0}};  // no transient; 41 maps of one period: 52 s
+  EXPECT_FALSE(validate_orbit(m, spec, limits));
+  spec.max_iterations = 100;  // 101 maps: 127 s
+  EXPECT_EQ(validate_orbit(m, spec, limits)->field, "periodic_orbit.max_iterations");
+}
+
 }  // namespace
 }  // namespace vibro

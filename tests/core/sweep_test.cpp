@@ -318,3 +318,23 @@ TEST(Parameter, PathsNameTheModelsNumericFields) {
 
 }  // namespace
 }  // namespace vibro
+
+namespace vibro {
+namespace {
+
+// A sweep holds each run to the run's limit of simulated time and the whole to its budget of
+// periods, as a scene's run is held: the spec checks itself, whoever reads it.
+TEST(Sweep, ItsSimulatedTimeIsHeldToTheLimits) {
+  const Model m = impact_oscillator(5.0);
+  const SweepSpec s = over_omega(3.0, 8.0, 10);  // 132 periods of at most 2π/3 s a run
+  Limits limits;
+  EXPECT_FALSE(validate_sweep(m, s, limits));
+  limits.t_end = 200.0;  // the run at Ω = 3 lasts 276 s
+  EXPECT_EQ(validate_sweep(m, s, limits)->field, "sweep.record");
+  limits = {};
+  limits.sweep_periods = 1000.0;  // 10 runs × 132 periods
+  EXPECT_EQ(validate_sweep(m, s, limits)->field, "sweep.count");
+}
+
+}  // namespace
+}  // namespace vibro

@@ -55,6 +55,8 @@ TEST(SceneJson, EveryBadFieldIsNamed) {
        "model.pellets[1].m"},
       {"phi0 a bool", json::json_pointer("/model/pellets/0/phi0"), true, "model.pellets[0].phi0"},
       {"dphi0 huge", json::json_pointer("/model/pellets/0/dphi0"), 1e300, "model.pellets[0].dphi0"},
+      {"damping negative", json::json_pointer("/model/pellets/1/c"), -0.5, "model.pellets[1].c"},
+      {"damping a string", json::json_pointer("/model/pellets/0/c"), "none", "model.pellets[0].c"},
       {"pellets coincide", json::json_pointer("/model/pellets/1/phi0"), 0.1 + 6.283185307179586,
        "model.pellets[1].phi0"},
       {"no pellets", json::json_pointer("/model/pellets"), json::array(), "model.pellets"},
@@ -236,6 +238,7 @@ TEST(SceneJson, DefaultsAreThoseOfTheApi) {
   EXPECT_EQ(s.model.k_c, 1.0);
   EXPECT_FALSE(s.model.mu_s.has_value());
   EXPECT_EQ(s.model.pellets[0].force.F0, 0.0);
+  EXPECT_EQ(s.model.pellets[0].c, 0.0);
   EXPECT_EQ(s.sim.method, Method::automatic);
   EXPECT_EQ(s.sim.rtol, 1e-9);
   EXPECT_EQ(s.sim.atol, 1e-12);
@@ -251,6 +254,19 @@ TEST(SceneJson, EveryMethodNameIsRead) {
     ASSERT_TRUE(std::holds_alternative<Scene>(r)) << method_name(m);
     EXPECT_EQ(std::get<Scene>(r).sim.method, m);
   }
+}
+
+// Damping is read, and echoed only where it is set: undamped scenes echo as before.
+TEST(SceneJson, DampingIsReadAndEchoedWhereSet) {
+  json scene = base_scene();
+  scene["model"]["pellets"][0]["c"] = 0.25;
+  const Scene s = std::get<Scene>(scene_from_json(scene));
+  EXPECT_EQ(s.model.pellets[0].c, 0.25);
+  EXPECT_EQ(s.model.pellets[1].c, 0.0);
+  const json echoed = scene_to_json(s);
+  EXPECT_EQ(echoed["model"]["pellets"][0]["c"], 0.25);
+  EXPECT_FALSE(echoed["model"]["pellets"][1].contains("c"));
+  EXPECT_EQ(std::get<Scene>(scene_from_json(echoed)).model.pellets[0].c, 0.25);
 }
 
 }  // namespace

@@ -111,7 +111,7 @@ TEST_F(FigureErrors, WindowsBranchesAndOverlays) {
   f = figure();
   std::get<PhasePlot>(f.plots[0]).first_integral_through =
       PhasePoint{0.0, std::numeric_limits<double>::quiet_NaN()};
-  EXPECT_EQ(field_of(f), "plots[0].first_integral_through");
+  EXPECT_EQ(field_of(f), "plots[0].first_integral");  // the JSON field
 }
 
 TEST_F(FigureErrors, NoPlots) {
@@ -129,6 +129,21 @@ TEST_F(FigureErrors, ValidateBeforeSimulating) {
   ASSERT_TRUE(error);
   EXPECT_EQ(error->field, "plots[0].pellet");
   EXPECT_FALSE(validate_figure(figure(), model, ImageFormat::svg));
+}
+
+// A spec built in code is held to what a scene's reader holds it to: the same checks
+// (render/plot_validate.h) for its axis ranges and its camera.
+TEST_F(FigureErrors, RangesAndCamerasBuiltInCode) {
+  FigureSpec f = figure();
+  std::get<PhasePlot>(f.plots[0]).dphi_range = AxisLimits{1.0, 1.0};
+  EXPECT_EQ(field_of(f), "plots[0].dphi_range");
+  CylinderPlot cylinder;
+  cylinder.camera.elevation_deg = 95.0;
+  f.plots = {cylinder};
+  EXPECT_EQ(field_of(f), "plots[0].camera.elevation");
+  std::get<CylinderPlot>(f.plots[0]).camera = Camera{};
+  std::get<CylinderPlot>(f.plots[0]).camera.distance = 0.5;
+  EXPECT_EQ(field_of(f), "plots[0].camera.distance");
 }
 
 }  // namespace

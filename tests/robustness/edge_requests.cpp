@@ -187,10 +187,9 @@ std::optional<Scene> accepted_orbit(const std::string& body, const server::Limit
   if (!scene) return std::nullopt;
   if (!scene->periodic_orbit) {
     scene->periodic_orbit.emplace();
-    if (auto e = validate_orbit_request(scene->model, *scene->periodic_orbit))
+    if (auto e = validate_orbit_request(scene->model, *scene->periodic_orbit, limits))
       return refused(*e, out);
   }
-  if (auto e = server::check_orbit(*scene, limits)) return refused(*e, out);
   scene->sim = server::bounded_options(scene->sim, limits);
   return scene;
 }
@@ -201,7 +200,6 @@ std::optional<Scene> accepted_sweep(const std::string& body, const server::Limit
   std::optional<Scene> scene = read(body, limits, out);
   if (!scene) return std::nullopt;
   if (!scene->sweep) return refused(FieldError{"sweep", "is required"}, out);
-  if (auto e = server::check_sweep(*scene, limits)) return refused(*e, out);
   scene->sim = server::bounded_options(scene->sim, limits);
   return scene;
 }

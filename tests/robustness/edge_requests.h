@@ -1,6 +1,6 @@
 // One orbit or sweep request carried out as `vibro serve` carries it out (server/api.cpp,
-// server/jobs.cpp): read with the server's scene limits, checked up front (check_orbit,
-// check_sweep), run with the options bounded by the server's limits, and written with the
+// server/jobs.cpp): read with the server's scene limits (which check the specs' budgets too),
+// run with the options bounded by the server's limits, and written with the
 // io/ writers the server answers with. What the answer must keep is checked on the way:
 // a refusal names a field of the request; an accepted request ends within 5 × its deadline
 // + 1 s; its JSON (and a sweep's CSV) holds no NaN or infinity; a sweep runs only values

@@ -54,6 +54,8 @@ std::vector<HostileCase> out_of_range_cases() {
       set("/model/pellets/0/F0", "1e13", "model.pellets[0].F0"),
       set("/model/pellets/0/Omega", "2e9", "model.pellets[0].Omega"),
       set("/model/pellets/0/psi", "-1e5", "model.pellets[0].psi"),
+      set("/model/pellets/0/c", "-0.1", "model.pellets[0].c"),
+      set("/model/pellets/0/c", "2e6", "model.pellets[0].c"),
       set("/model/pellets/1/phi0", "6.383185307179586", "model.pellets[1].phi0"),  // = pellet 0
       set("/model/pellets", "[" + repeat(R"({"m": 1, "phi0": 0.1},)", 8) + "{}]", "model.pellets"),
       set("/model/limiters/0/k", "-0.1", "model.limiters[0].k"),

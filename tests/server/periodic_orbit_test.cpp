@@ -206,8 +206,8 @@ TEST(PeriodicOrbitJobs, AJobsImageIsDrawnOnAWorker) {
     feeders.emplace_back([&] {
       auto feeder = server.client();
       while (!stop)
-        feeder.Get(("/api/simulate?preset=high-frequency&t_end=" + std::to_string(next_t_end++))
-                       .c_str());
+        feeder.Get(
+            ("/api/simulate?preset=high-frequency&t_end=" + std::to_string(next_t_end++)).c_str());
     });
   bool busy = false;
   const auto give_up = std::chrono::steady_clock::now() + std::chrono::seconds(30);

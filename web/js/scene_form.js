@@ -140,6 +140,7 @@ export class SceneForm {
           numberField({ path: `${path}.F0`, label: "F₀ — force", unit: "N", value: p.F0, placeholder: "0", aria: `${who} force amplitude F₀ (N)` }),
           numberField({ path: `${path}.Omega`, label: "Ω — frequency", unit: "rad/s", value: p.Omega, placeholder: "0", aria: `${who} force frequency Ω (rad/s)` }),
           numberField({ path: `${path}.psi`, label: "ψ — phase", unit: "rad", value: p.psi, angle: true, placeholder: "0", aria: `${who} force phase ψ (rad)` }),
+          numberField({ path: `${path}.c`, label: "c — damping", unit: "1/s", value: p.c, placeholder: "0", hint: "viscous, ≥ 0", aria: `${who} viscous damping c (1/s)` }),
         ),
       );
     });
@@ -147,7 +148,7 @@ export class SceneForm {
       this.restructure((s) => addPellet(s), `[data-field="model.pellets[${n}].m"]`),
     );
     return section(`Pellets (${n} of 1–${MAX_PELLETS})`, [
-      h("p", { class: "note" }, "Force F(t) = F₀ cos(Ωt + ψ). Angles from the lowest point, positive toward limiter 1; they accept π, e.g. π/12."),
+      h("p", { class: "note" }, "Force F(t) = F₀ cos(Ωt + ψ); damping adds −c·φ̇ to the acceleration. Angles from the lowest point, positive toward limiter 1; they accept π, e.g. π/12."),
       cards,
       h("div", { class: "adders" }, add),
     ], { field: "model.pellets" });

@@ -9,7 +9,7 @@ export function sweepablePaths(scene) {
   const m = scene.model ?? {};
   const paths = [];
   (m.pellets ?? []).forEach((p, i) => {
-    for (const f of ["F0", "Omega", "psi", "m", "phi0", "dphi0"]) paths.push(`model.pellets[${i}].${f}`);
+    for (const f of ["F0", "Omega", "psi", "c", "m", "phi0", "dphi0"]) paths.push(`model.pellets[${i}].${f}`);
   });
   (m.limiters ?? []).forEach((_, j) => {
     for (const f of ["k", "angle"]) paths.push(`model.limiters[${j}].${f}`);
