@@ -26,7 +26,8 @@ bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
 }
 
 // A sliding body: its leader's angle u and speed v give every member's acceleration (as
-// SlidingLaw::acceleration) and, with each member's force, its work R·v·(F_i − m_i·s·μ·n).
+// SlidingLaw::acceleration, its damping C·v last) and, with each member's force, its work rate
+// R·v·(F_i − m_i·s·μ·n) − m_i·R²·c_i·v².
 // Coefficient k + 1 of each state component is coefficient k of its rate over k + 1.
 void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<double> out) const {
   const Body& body = bodies_[b];
@@ -47,7 +48,7 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
     if (f.active()) add_cosine_series(f.F0, f.Omega, f.Omega * t0 + f.psi, order, into);
   };
   for (int i : body.members) add_force(i, F);
-  const double R = law_.R, gR = law_.gR, mu = law_.mu, M = mass_[b];
+  const double R = law_.R, gR = law_.gR, mu = law_.mu, M = mass_[b], damping = damping_[b];
   const int s = body.s, side = normal_side_[b];
   const double sigma = law_.paper ? 1.0 : side;  // n = R·σ·(v² + gR·cos u)
   S[0] = std::sin(u[0]);
@@ -55,8 +56,9 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
   for (int k = 0; k < order; ++k) {
     if (k > 0) sin_cos_coefficient(u, S, C, k);
     Q[k] = product_coefficient(v, v, k);
-    const double acc = law_.paper ? F[k] / (M * R) - s * mu * Q[k] - gR * (S[k] + s * mu * C[k])
+    double acc = law_.paper ? F[k] / (M * R) - s * mu * Q[k] - gR * (S[k] + s * mu * C[k])
                                   : F[k] / (M * R) - gR * S[k] - s * mu * side * (Q[k] + gR * C[k]);
+    acc -= damping * v[k];
     N[k] = R * sigma * (Q[k] + gR * C[k]);
     for (int i : body.members) {
       component(phi_index(i))[k + 1] = component(dphi_index(i))[k] / (k + 1);
@@ -66,10 +68,12 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
   for (int i : body.members) {
     std::fill(Fi.begin(), Fi.end(), 0.0);
     add_force(i, Fi);
-    const double ms_mu = model_.pellets[i].m * s * mu;
+    const Pellet& p = model_.pellets[i];
+    const double ms_mu = p.m * s * mu, damper = p.m * R * R * p.c;  // damper·v² is its power
     for (int k = 0; k < order; ++k) G[k] = Fi[k] - ms_mu * N[k];
     const std::span<double> w = component(work_index(i));
-    for (int k = 0; k < order; ++k) w[k + 1] = R * product_coefficient(v, G, k) / (k + 1);
+    for (int k = 0; k < order; ++k)
+      w[k + 1] = (R * product_coefficient(v, G, k) - damper * Q[k]) / (k + 1);
   }
 }
 

@@ -1,7 +1,7 @@
 // The jets of the equations of motion (SegmentDynamics::taylor_coefficients,
-// core/model/dynamics_jets.cpp) against what they must equal: the forcing's closed form, the
-// right-hand side and its exact time derivative (the Jacobian), a tight DOP853 solution, the free
-// pendulum's energy, and the truncation error's order.
+// core/model/dynamics_jets.cpp), with forcing, both friction laws and damping, against what they
+// must equal: the forcing's closed form, the right-hand side and its exact time derivative (the
+// Jacobian), a tight DOP853 solution, the free pendulum's energy, and the truncation error's order.
 #include <gtest/gtest.h>
 
 #include <cmath>
@@ -17,15 +17,16 @@
 namespace vibro {
 namespace {
 
-// Three pellets under forcing: pellets 0 and 1 slide together as one body, pellet 2 is stuck.
+// Three pellets under forcing and viscous damping: pellets 0 and 1 slide together as one body
+// (damped at Σ m_i c_i / M), pellet 2 is stuck.
 Model forced_model(FrictionLaw law) {
   Model m;
   m.R = 0.5;
   m.alpha0 = 0.2;
   m.friction = law;
-  m.pellets = {{0.1, 0.3, 1.2, {0.4, 6.0, 0.3}},
-               {0.3, 0.35, 1.2, {0.2, 3.5, -1.0}},
-               {0.2, -1.0, 0.0, {0.1, 2.0, 0.0}}};
+  m.pellets = {{0.1, 0.3, 1.2, {0.4, 6.0, 0.3}, 0.7},
+               {0.3, 0.35, 1.2, {0.2, 3.5, -1.0}, 0.2},
+               {0.2, -1.0, 0.0, {0.1, 2.0, 0.0}, 0.5}};
   return m;
 }
 
