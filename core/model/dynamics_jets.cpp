@@ -57,7 +57,7 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
     if (k > 0) sin_cos_coefficient(u, S, C, k);
     Q[k] = product_coefficient(v, v, k);
     double acc = law_.paper ? F[k] / (M * R) - s * mu * Q[k] - gR * (S[k] + s * mu * C[k])
-                                  : F[k] / (M * R) - gR * S[k] - s * mu * side * (Q[k] + gR * C[k]);
+                            : F[k] / (M * R) - gR * S[k] - s * mu * side * (Q[k] + gR * C[k]);
     acc -= damping * v[k];
     N[k] = R * sigma * (Q[k] + gR * C[k]);
     for (int i : body.members) {
