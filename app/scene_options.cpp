@@ -46,7 +46,7 @@ void add_scene_options(CLI::App& command, SceneSource& source) {
   command
       .add_option_function<std::string>(
           "--method", [&source](const std::string& m) { source.overrides["solver"]["method"] = m; },
-          "integrator: auto, dopri5, dop853 or radau5")
+          "integrator: auto, dopri5, dop853, radau5 or taylor")
       ->type_name("M");
   add_number_override(command, "--rtol", "relative tolerance", source,
                       json::json_pointer("/solver/rtol"));

@@ -82,9 +82,11 @@ Method read_method(const std::string& name) {
   if (name == "dop853") return Method::dop853;
   if (name == "radau5") return Method::radau5;
   if (name == "auto") return Method::automatic;
+  if (name == "taylor") return Method::taylor;
   throw FieldException(
       "solver.method",
-      "must be one of \"auto\", \"dopri5\", \"dop853\", \"radau5\", got \"" + name + "\"");
+      "must be one of \"auto\", \"dopri5\", \"dop853\", \"radau5\", \"taylor\", got \"" + name +
+          "\"");
 }
 
 void read_solver(const json& j, SimOptions& o) {

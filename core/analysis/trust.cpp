@@ -327,6 +327,10 @@ ShadowOptions check_options(const SimOptions& run) {
   // 1e-6 and its shadow at 1e-8 took the same steps of 1/Ω and shared an error a chaotic
   // chain amplified (Trust.AShadowDoesNotShareTheRunsCappedSteps).
   //
+  // Taylor checks itself as DOP853 does: at a hundredth of the tolerance its series is two or
+  // three orders longer (Taylor::order_for) and its steps, set by the series' radius, fall
+  // elsewhere; its longest step is halved alike.
+  //
   // The shadow's error must be well below the run's, whatever the methods' error constants
   // and whatever luck a run has: it runs at a hundredth of both tolerances (at a thirtieth
   // DOP853 missed a lucky run's error: seed 7, scene 809, the run at rtol 1e-8 erred 3.6e-10 s,

@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <limits>
+#include <numbers>
 
 #include "core/events/brent_root.h"
 #include "core/events/polynomial_roots.h"
@@ -274,9 +275,15 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
            watch_polynomial(fn.watch, *form, *p, q, degree);
   if (!served) return std::nullopt;
   const double t0 = step.t_prev(), h = step.t() - t0;
+  const std::span<const double> poly(q.data(), degree + 1);
+  // Above every near miss's error over the whole step: no root, no near miss to isolate.
+  const double near = 10.0 * (rtol_ * std::max(track.largest, 1.0 + std::numbers::pi) + atol_);
   PolynomialMinima minima;
-  const auto root =
-      first_polynomial_crossing(std::span<const double>(q.data(), degree + 1), h, &minima);
+  std::optional<PolynomialBracket> root;
+  if (stays_above(poly, h, near))
+    minima.count = 0;
+  else
+    root = first_polynomial_crossing(poly, h, &minima);
   Vec& y = scratch_left_;
   for (int i = 0; i < minima.count; ++i) {
     const PolynomialMinimum& m = minima.at[i];

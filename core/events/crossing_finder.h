@@ -17,7 +17,8 @@
 // A step is presented through StepView (core/integrators/step_view.h). Where the stepper gives
 // the step as polynomials, a watch linear in the state (linear_form) is not scanned: its
 // polynomial's first root is isolated between its turning points (core/events/polynomial_roots.h)
-// and its minima are the near misses; refine and recheck then run on the same dense output.
+// and its minima are the near misses, unless a bound of the polynomial over the step keeps it
+// above any near miss; refine and recheck then run on the same dense output.
 // A new watch kind adds its value (raw_value), its rate if it is a watch of the motion (closing)
 // and, if linear in the state, its linear_form, all in core/events/watch.cpp; the finder does not
 // change.

@@ -15,6 +15,12 @@ inline constexpr int kMaxPolynomialDegree = 31;
 // p(τ) = Σ_k c[k]·τ^k by Horner's rule.
 double polynomial_value(std::span<const double> c, double tau);
 
+// Whether p stays above `level` over [0, h], proven by a bound: c[0] − Σ_{k≥1} |c[k]|·h^k
+// first, then the least of p's Bernstein coefficients on [0, h] (p lies in their convex hull).
+// A step far from the watch's root costs a pass or two over its coefficients, not the
+// isolation of its roots; false says nothing.
+bool stays_above(std::span<const double> c, double h, double level);
+
 // Where p first falls to zero or below on (0, h], given p(0) > 0: a bracket [lo, hi] with
 // p(lo) > 0 >= p(hi), hi − lo within round-off of the root's time (or hi the turning point where
 // p touches zero). `minimum` receives the turning points before it where p has a local minimum

@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <span>
 
 namespace vibro {
 
@@ -23,6 +24,14 @@ class OdeSystem {
   // 1.9e-8 rad at rtol 1e-10, and its turns came 9e-9 s late where the same swing before any
   // turn came 7e-11 s late.
   virtual double period(int /*component*/) const { return 0.0; }
+  // The solution through (t0, y0) as normalized Taylor coefficients, y_i^(k)(t0)/k! for
+  // k = 0..order, written component by component (order + 1 each) into out, which holds
+  // dimension()·(order + 1): a Taylor method's step (core/integrators/taylor.h). False for a
+  // system that does not compute them.
+  virtual bool taylor_coefficients(double /*t0*/, const Vec& /*y0*/, int /*order*/,
+                                   std::span<double> /*out*/) const {
+    return false;
+  }
 };
 
 }  // namespace vibro

@@ -5,6 +5,7 @@
 #include "core/integrators/dop853.h"
 #include "core/integrators/dopri5.h"
 #include "core/integrators/radau5.h"
+#include "core/integrators/taylor.h"
 
 namespace vibro {
 
@@ -18,6 +19,8 @@ std::string_view method_name(Method m) {
       return "radau5";
     case Method::automatic:
       return "auto";
+    case Method::taylor:
+      return "taylor";
   }
   return "unknown";
 }
@@ -41,6 +44,8 @@ std::unique_ptr<Stepper> make_stepper(Method method, const StepperOptions& optio
       return std::make_unique<integrators::Radau5>(options);
     case Method::automatic:
       return std::make_unique<integrators::AutoSwitch>(options);
+    case Method::taylor:
+      return std::make_unique<integrators::Taylor>(options);
   }
   return nullptr;
 }

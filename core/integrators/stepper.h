@@ -12,9 +12,10 @@
 
 namespace vibro {
 
-enum class Method { dopri5, dop853, radau5, automatic };
+enum class Method { dopri5, dop853, radau5, automatic, taylor };
 
-std::string_view method_name(Method m);  // "dopri5", "dop853", "radau5", "auto"
+// "dopri5", "dop853", "radau5", "auto", "taylor"
+std::string_view method_name(Method m);
 
 // The explicit method `auto` runs while the problem is not stiff: by default the cheaper one for
 // the tolerance (auto_explicit_for); the trust check asks for the other one, so that a run and

@@ -4,6 +4,7 @@
 
 #include <cmath>
 #include <numbers>
+#include <span>
 #include <vector>
 
 #include "core/integrators/ode.h"
@@ -99,15 +100,22 @@ class SegmentDynamics final : public OdeSystem {
   double period(int component) const override {
     return component == phi_index(component / 3) ? 2.0 * std::numbers::pi : 0.0;
   }
+  // The jets of these equations (core/model/dynamics_jets.cpp): a sliding body's sine, cosine
+  // and square of its speed by their recursions, its forcing in closed form; a held body's
+  // state constant.
+  bool taylor_coefficients(double t0, const Vec& y0, int order,
+                           std::span<double> out) const override;
 
  private:
   void evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const;
+  void body_jets(std::size_t b, double t0, int order, std::span<double> out) const;
   const Model& model_;
   const std::vector<Body>& bodies_;
   std::vector<double> mass_;      // per body
   std::vector<double> damping_;   // per body, 1/s
   std::vector<int> normal_side_;  // per body: the sign of the bilateral law's normal force
   SlidingLaw law_;
+  mutable std::vector<double> jet_scratch_;  // the series of a body's jets, reused
 };
 
 }  // namespace vibro

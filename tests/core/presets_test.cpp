@@ -57,7 +57,7 @@ TEST_P(EveryPreset, CalmStepsFindTheSameEvents) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, EveryPreset,
                          ::testing::Values(Method::dopri5, Method::dop853, Method::radau5,
-                                           Method::automatic),
+                                           Method::automatic, Method::taylor),
                          [](const auto& info) { return std::string(method_name(info.param)); });
 
 TEST(PaperScene, AnswersThePapersQuestion) {

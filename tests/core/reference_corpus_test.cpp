@@ -95,7 +95,7 @@ TEST_P(ReferenceCorpus, EveryScenesEventsAndEndAgreeWithTheReference) {
 
 INSTANTIATE_TEST_SUITE_P(Methods, ReferenceCorpus,
                          ::testing::Values(Method::dopri5, Method::dop853, Method::radau5,
-                                           Method::automatic),
+                                           Method::automatic, Method::taylor),
                          [](const auto& info) { return std::string(method_name(info.param)); });
 
 }  // namespace

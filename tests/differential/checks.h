@@ -19,7 +19,7 @@
 namespace vibro::differential {
 
 inline constexpr std::array kMethods = {Method::dopri5, Method::dop853, Method::radau5,
-                                        Method::automatic};
+                                        Method::automatic, Method::taylor};
 
 class SceneRuns {
  public:

@@ -16,7 +16,13 @@
 // --dump, the scene JSON of every scene with a missed run or an estimate ten times short of a
 // truth above 1 % of what the tolerance asks, to study alone with `vibro simulate`.
 //
+// With --taylor 1 the Taylor method joins the mix (its runs checked by their own shadow, Taylor at
+// a hundredth of the tolerance and another order); with --strict 1 the scan exits 1 if any run
+// vouched for a wrong event or fell ten times short of a true error that matters (CI's bounded
+// run, tests/differential/CMakeLists.txt).
+//
 //   trust_scan --count 2000 [--seed S] [--first I] [--jobs J] [--out runs.csv] [--dump DIR]
+//              [--taylor 1] [--strict 1]
 #include <algorithm>
 #include <atomic>
 #include <cmath>
@@ -43,8 +49,8 @@ using namespace vibro;
 using namespace vibro::differential;
 
 constexpr double kRtols[] = {1e-6, 1e-7, 1e-8, 1e-9, 1e-10};
-constexpr Method kMethodsChecked[] = {Method::dopri5, Method::dop853, Method::radau5,
-                                      Method::automatic};
+std::vector<Method> methods_checked = {Method::dopri5, Method::dop853, Method::radau5,
+                                       Method::automatic};
 
 struct Row {
   long scene = 0;
@@ -138,7 +144,7 @@ std::vector<Row> check_scene(const RandomScene& scene, long index) {
     near.push_back(by_instant(a.events));
   }
   const std::vector<Event> truth = by_instant(ref.events);
-  for (Method m : kMethodsChecked) {
+  for (Method m : methods_checked) {
     for (double rtol : kRtols) {
       const RunResult run = simulate(scene.model, checked_run(scene, m, rtol));
       if (!complete(run)) continue;
@@ -244,6 +250,7 @@ int main(int argc, char** argv) {
   std::uint64_t seed = 1;
   int jobs = 1;
   std::string out, dump, show_run;
+  bool strict = false;
   for (int k = 1; k + 1 < argc; k += 2) {
     const std::string key = argv[k];
     if (key == "--count")
@@ -260,18 +267,23 @@ int main(int argc, char** argv) {
       dump = argv[k + 1];
     else if (key == "--show")
       show_run = argv[k + 1];
+    else if (key == "--taylor" && std::string(argv[k + 1]) == "1")
+      methods_checked.push_back(Method::taylor);
+    else if (key == "--strict" && std::string(argv[k + 1]) == "1")
+      strict = true;
     else {
       std::cerr << "usage: trust_scan --count N [--seed S] [--first I] [--jobs J] [--out runs.csv] "
-                   "[--dump DIR]\n";
+                   "[--dump DIR] [--taylor 1] [--strict 1]\n";
       return 2;
     }
   }
   if (!show_run.empty()) {  // INDEX:METHOD:RTOL
     const auto a = show_run.find(':'), b = show_run.rfind(':');
     const std::string name = a == b ? "" : show_run.substr(a + 1, b - a - 1);
-    const Method* method = std::find_if(std::begin(kMethodsChecked), std::end(kMethodsChecked),
-                                        [&](Method m) { return method_name(m) == name; });
-    if (a == std::string::npos || method == std::end(kMethodsChecked)) {
+    methods_checked.push_back(Method::taylor);
+    const auto method = std::find_if(methods_checked.begin(), methods_checked.end(),
+                                     [&](Method m) { return method_name(m) == name; });
+    if (a == std::string::npos || method == methods_checked.end()) {
       std::cerr << "--show INDEX:METHOD:RTOL, e.g. 680:dop853:1e-8\n";
       return 2;
     }
@@ -341,5 +353,7 @@ int main(int argc, char** argv) {
               << median(c.check) << "× |\n"
               << std::defaultfloat;
   }
-  return 0;
+  long failed = 0;
+  for (const auto& [key, c] : cells) failed += c.missed + c.low_that_matters;
+  return strict && failed > 0 ? 1 : 0;
 }

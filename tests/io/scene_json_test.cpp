@@ -244,6 +244,18 @@ TEST(SceneJson, DefaultsAreThoseOfTheApi) {
   EXPECT_EQ(s.sim.atol, 1e-12);
 }
 
+TEST(SceneJson, EveryMethodNameIsRead) {
+  for (Method m :
+       {Method::dopri5, Method::dop853, Method::radau5, Method::automatic, Method::taylor}) {
+    const json j = {{"model", {{"R", 1}, {"pellets", {{{"m", 1}, {"phi0", 0}}}}}},
+                    {"t_end", 1},
+                    {"solver", {{"method", std::string(method_name(m))}}}};
+    const SceneOrError r = scene_from_json(j);
+    ASSERT_TRUE(std::holds_alternative<Scene>(r)) << method_name(m);
+    EXPECT_EQ(std::get<Scene>(r).sim.method, m);
+  }
+}
+
 // Damping is read, and echoed only where it is set: undamped scenes echo as before.
 TEST(SceneJson, DampingIsReadAndEchoedWhereSet) {
   json scene = base_scene();

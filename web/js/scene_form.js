@@ -21,6 +21,7 @@ const METHODS = [
   { value: "dopri5", label: "dopri5 (explicit, 5)" },
   { value: "dop853", label: "dop853 (explicit, 8)" },
   { value: "radau5", label: "radau5 (implicit, 5)" },
+  { value: "taylor", label: "taylor (series, tight tolerances)" },
 ];
 const PLOT_KINDS = [
   { value: "phase", label: "phase portrait", short: "Phase" },

@@ -1,0 +1,52 @@
+// The normalized Taylor coefficients of compositions, by the standard recursions: a series x is
+// x[0..], x[k] = x^(k)(t0)/k!, and coefficient k of a composition needs the inputs up to k only.
+#pragma once
+
+#include <cmath>
+#include <span>
+
+namespace vibro::integrators {
+
+// p(τ) = Σ_k c[k]·τ^k by Horner's rule.
+inline double horner(std::span<const double> c, double tau) {
+  double p = 0.0;
+  for (std::size_t k = c.size(); k-- > 0;) p = p * tau + c[k];
+  return p;
+}
+
+// Coefficient k of the product a·b (Cauchy).
+inline double product_coefficient(std::span<const double> a, std::span<const double> b, int k) {
+  double sum = 0.0;
+  for (int j = 0; j <= k; ++j) sum += a[j] * b[k - j];
+  return sum;
+}
+
+// Coefficient k >= 1 of S = sin u and C = cos u, from u[1..k] and S, C up to k − 1:
+// S[k] = (1/k) Σ_{j=1..k} j·u[j]·C[k−j], C[k] = −(1/k) Σ_{j=1..k} j·u[j]·S[k−j]
+// (from S' = u'·C, C' = −u'·S). Coefficient 0 is sin u[0], cos u[0].
+inline void sin_cos_coefficient(std::span<const double> u, std::span<double> S, std::span<double> C,
+                                int k) {
+  double s = 0.0, c = 0.0;
+  for (int j = 1; j <= k; ++j) {
+    const double ju = j * u[j];
+    s += ju * C[k - j];
+    c += ju * S[k - j];
+  }
+  S[k] = s / k;
+  C[k] = -c / k;
+}
+
+// The series of A cos(Ω(t0 + τ) + ψ) in τ up to `order`, added into out[0..order]:
+// A·Ωᵏ/k!·cos(Ωt0 + ψ + kπ/2), the cosine's derivatives cycling through cos, −sin, −cos, sin.
+inline void add_cosine_series(double A, double Omega, double phase, int order,
+                              std::span<double> out) {
+  const double c = std::cos(phase), s = std::sin(phase);
+  const double cycle[4] = {c, -s, -c, s};
+  double factor = A;  // A·Ωᵏ/k!
+  for (int k = 0; k <= order; ++k) {
+    out[k] += factor * cycle[k % 4];
+    factor *= Omega / (k + 1);
+  }
+}
+
+}  // namespace vibro::integrators

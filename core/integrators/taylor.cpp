@@ -1,0 +1,85 @@
+#include "core/integrators/taylor.h"
+
+#include <algorithm>
+#include <cmath>
+#include <limits>
+#include <numbers>
+
+#include "core/integrators/series.h"
+#include "core/integrators/step_fit.h"
+
+namespace vibro::integrators {
+
+int Taylor::order_for(double rtol) {
+  const int p = static_cast<int>(std::ceil(-0.5 * std::log(rtol) + 1.0));
+  return std::clamp(p, 2, kMaxOrder);
+}
+
+Taylor::Taylor(const StepperOptions& options)
+    : options_(options),
+      tol_{options.atol, options.rtol, {}},
+      order_(order_for(options.rtol)),
+      safety_(std::exp(-0.7 / (order_ - 1)) / (std::numbers::e * std::numbers::e)) {}
+
+void Taylor::start(const OdeSystem& sys, double t0, const Vec& y0) {
+  sys_ = &sys;
+  n_ = static_cast<int>(y0.size());
+  t_ = t_prev_ = t0;
+  y_ = y0;
+  y_next_.resize(n_);
+  tol_.take_periods(sys);
+  coefficients_.resize(static_cast<std::size_t>(n_) * (order_ + 1));
+  poly_ = {t0, order_, coefficients_};
+  stepped_ = false;
+}
+
+double Taylor::step_size() const {
+  // min_i (w_i/|c_i|)^(1/k) = (min_i w_i/|c_i|)^(1/k): one power per order.
+  double rho = std::numeric_limits<double>::infinity();
+  for (int k : {order_ - 1, order_}) {
+    double least = std::numeric_limits<double>::infinity();
+    for (int i = 0; i < n_; ++i) {
+      const double c = std::abs(coefficients_[static_cast<std::size_t>(i) * (order_ + 1) + k]);
+      if (c > 0.0) least = std::min(least, tol_.scale(i, y_[i]) / (options_.rtol * c));
+    }
+    if (std::isfinite(least)) rho = std::min(rho, std::pow(least, 1.0 / k));
+  }
+  return safety_ * rho;
+}
+
+StepStatus Taylor::step(double t_limit) {
+  stepped_ = false;  // the series is overwritten: until the step is taken, dense() is y()
+  if (!sys_->taylor_coefficients(t_, y_, order_, coefficients_)) return StepStatus::solver_failure;
+  ++stats_.rhs_evals;
+  for (double c : coefficients_)
+    if (!std::isfinite(c)) return StepStatus::non_finite;
+  const StepFit fit = fit_step(step_size(), t_, t_limit, options_.h_max);
+  if (step_underflows(fit.h, t_)) return StepStatus::step_underflow;
+  const double t_new = fit.lands ? t_limit : t_ + fit.h;
+  const double h = t_new - t_;
+  const std::size_t n1 = static_cast<std::size_t>(order_) + 1;
+  for (int i = 0; i < n_; ++i)
+    y_next_[i] = horner(std::span<const double>(coefficients_).subspan(i * n1, n1), h);
+  if (!all_finite(y_next_)) return StepStatus::non_finite;
+  t_prev_ = t_;
+  t_ = t_new;
+  y_.swap(y_next_);
+  poly_ = {t_prev_, order_, coefficients_};
+  stepped_ = true;
+  ++stats_.steps;
+  return StepStatus::ok;
+}
+
+void Taylor::dense(double t, Vec& out) const {
+  if (!stepped_) {
+    out = y_;
+    return;
+  }
+  out.resize(n_);
+  const double tau = t - t_prev_;
+  const std::size_t n1 = static_cast<std::size_t>(order_) + 1;
+  for (int i = 0; i < n_; ++i)
+    out[i] = horner(std::span<const double>(coefficients_).subspan(i * n1, n1), tau);
+}
+
+}  // namespace vibro::integrators

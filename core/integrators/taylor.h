@@ -1,0 +1,66 @@
+// A Taylor-series method: each step is the solution's own series at the step's start, of an
+// order set by the tolerance, computed by the system's jets (OdeSystem::taylor_coefficients).
+// Order and step size follow Jorba & Zou (Exp. Math. 14(1), 2005), as heyoka does: no error
+// estimate and no rejected steps. The step is its polynomials (StepView::polynomials), so the
+// dense output is the polynomial itself, as accurate as the step's end. Its stats count the
+// jets as one right-hand-side evaluation per step.
+#pragma once
+
+#include <string_view>
+#include <vector>
+
+#include "core/integrators/error_norm.h"
+#include "core/integrators/stepper.h"
+
+namespace vibro::integrators {
+
+class Taylor final : public Stepper {
+ public:
+  // Above this order the series is not served to the event search (kMaxPolynomialDegree); the
+  // tolerances allowed (rtol >= 1e-14) ask for 18 at most.
+  static constexpr int kMaxOrder = 30;
+
+  explicit Taylor(const StepperOptions& options);
+
+  // p = ⌈−½ ln ε + 1⌉ for the tolerance ε: the series' terms beyond p fall below ε·e^−2 of the
+  // state over a step of ρ/e², ρ the radius its last coefficients show.
+  static int order_for(double rtol);
+
+  std::string_view name() const override { return "taylor"; }
+  // A system without jets fails its first step (StepStatus::solver_failure).
+  void start(const OdeSystem& sys, double t0, const Vec& y0) override;
+  // No step size is carried from one interval to the next: each step's size is its own series'.
+  void continue_smoothly(const OdeSystem& sys, double t0, const Vec& y0) override {
+    start(sys, t0, y0);
+  }
+  StepStatus step(double t_limit) override;
+  const Vec& y() const override { return y_; }
+  double t_prev() const override { return t_prev_; }
+  double t() const override { return t_; }
+  void dense(double t, Vec& out) const override;
+  const StepPolynomials* polynomials() const override { return stepped_ ? &poly_ : nullptr; }
+  const StepperStats& stats() const override { return stats_; }
+
+  int order() const { return order_; }
+
+ private:
+  // Jorba and Zou's step: ρ_m/e²·min(ρ_{p−1}, ρ_p), ρ_k = min_i (w_i/|c_i[k]|)^(1/k) with w_i the
+  // component's tolerance scale over rtol (relative to its size, atol/rtol at least), and the
+  // safety factor ρ_m = exp(−0.7/(p − 1)). Infinite where the series stops (a body at rest).
+  double step_size() const;
+
+  StepperOptions options_;
+  Tolerance tol_;
+  int order_;
+  double safety_;  // ρ_m/e²
+  const OdeSystem* sys_ = nullptr;
+  int n_ = 0;
+  double t_ = 0.0, t_prev_ = 0.0;
+  bool stepped_ = false;  // a step since start(): the polynomials describe [t_prev_, t_]
+  Vec y_, y_next_;
+  std::vector<double> coefficients_;  // the last step's series, (order_ + 1) per component
+  StepPolynomials poly_;
+  StepperStats stats_;
+};
+
+}  // namespace vibro::integrators

@@ -1,0 +1,197 @@
+// The Taylor-series method (core/integrators/taylor.h) on the equations of motion: its accuracy
+// as the tolerance tightens, its step counts against DOP853, its step as polynomials, and an
+// event whose two crossings fall inside one of its steps.
+#include "core/integrators/taylor.h"
+
+#include <gtest/gtest.h>
+
+#include <cmath>
+#include <vector>
+
+#include "core/analysis/checked_run.h"
+#include "core/analysis/periodic_orbit.h"
+#include "core/integrators/stepper.h"
+#include "core/model/dynamics.h"
+#include "impact_oscillator.h"
+#include "scenes.h"
+
+namespace vibro {
+namespace {
+
+// A forced pendulum with friction, sliding alone.
+struct ForcedPendulum {
+  Model model = [] {
+    Model m = testing::one_pellet(0.1, 0.4, 2.0);
+    m.pellets[0].force = {0.5, 4.0, 0.2};
+    return m;
+  }();
+  std::vector<Body> bodies = {Body{.members = {0}, .mode = Mode::sliding, .s = 1}};
+  Vec y0 = (Vec(3) << 0.4, 2.0, 0.0).finished();
+  SegmentDynamics sys{model, bodies, y0};
+};
+
+Vec solve(Stepper& stepper, const OdeSystem& sys, const Vec& y0, double t_end, long* steps) {
+  stepper.start(sys, 0.0, y0);
+  while (stepper.t() < t_end)
+    if (stepper.step(t_end) != StepStatus::ok) return Vec::Constant(3, NAN);
+  if (steps) *steps = stepper.stats().steps;
+  return stepper.y();
+}
+
+TEST(Taylor, TheOrderFollowsTheTolerance) {
+  EXPECT_EQ(integrators::Taylor::order_for(1e-12), 15);  // ⌈13.8 + 1⌉
+  EXPECT_EQ(integrators::Taylor::order_for(1e-9), 12);
+  EXPECT_EQ(integrators::Taylor::order_for(1e-14), 18);
+  EXPECT_EQ(integrators::Taylor::order_for(0.1), 3);
+}
+
+// The state's error after 0.3 s is within ten times the tolerance at every tolerance, and falls
+// as it tightens. (The friction's direction s is fixed, so the equations stay smooth where the
+// speed changes sign: the test is of the integrator alone.)
+TEST(Taylor, ItsErrorFollowsTheTolerance) {
+  ForcedPendulum p;
+  auto reference = make_stepper(Method::dop853, StepperOptions{1e-14, 1e-16});
+  const Vec exact = solve(*reference, p.sys, p.y0, 0.3, nullptr);
+  double previous = INFINITY;
+  for (double rtol : {1e-6, 1e-8, 1e-10, 1e-12}) {
+    auto taylor = make_stepper(Method::taylor, StepperOptions{rtol, 1e-3 * rtol});
+    const Vec y = solve(*taylor, p.sys, p.y0, 0.3, nullptr);
+    const double error = (y - exact).head<2>().cwiseAbs().maxCoeff();
+    EXPECT_LT(error, 10.0 * rtol) << "rtol " << rtol;
+    EXPECT_LT(error, previous) << "rtol " << rtol;
+    previous = std::max(error, 1e-15);
+  }
+}
+
+TEST(Taylor, ItsStepIsItsPolynomialsAndItsDenseOutputEvaluatesThem) {
+  ForcedPendulum p;
+  integrators::Taylor taylor(StepperOptions{1e-10, 1e-13});
+  taylor.start(p.sys, 0.0, p.y0);
+  EXPECT_EQ(taylor.polynomials(), nullptr);  // no step yet
+  ASSERT_EQ(taylor.step(1.0), StepStatus::ok);
+  const StepPolynomials* poly = taylor.polynomials();
+  ASSERT_NE(poly, nullptr);
+  EXPECT_EQ(poly->t0, 0.0);
+  EXPECT_EQ(poly->degree, taylor.order());
+  Vec y;
+  taylor.dense(taylor.t_prev(), y);
+  EXPECT_EQ(y, p.y0);
+  taylor.dense(taylor.t(), y);
+  EXPECT_EQ(y, taylor.y());
+  for (int i = 0; i < 3; ++i) EXPECT_EQ(poly->component(i)[0], p.y0[i]);
+}
+
+// OdeSystem without jets: the stepper says so rather than stepping.
+class NoJets final : public OdeSystem {
+ public:
+  int dimension() const override { return 1; }
+  void rhs(double, const Vec& y, Vec& dydt) const override { dydt[0] = -y[0]; }
+  void jacobian(double, const Vec&, Mat& dfdy, Vec& dfdt) const override {
+    dfdy(0, 0) = -1.0;
+    dfdt[0] = 0.0;
+  }
+};
+
+TEST(Taylor, ASystemWithoutJetsFailsItsFirstStep) {
+  NoJets sys;
+  integrators::Taylor taylor(StepperOptions{1e-10, 1e-13});
+  taylor.start(sys, 0.0, Vec::Ones(1));
+  EXPECT_EQ(taylor.step(1.0), StepStatus::solver_failure);
+  EXPECT_EQ(taylor.t(), 0.0);
+}
+
+// Issue 33's figure: on the impact oscillator (Ω = 7, 70 periods) at rtol 1e-12, at most half
+// DOP853's steps, with the same events.
+TEST(Taylor, TakesAtMostHalfDop853sStepsOnTheImpactOscillatorAtTightTolerance) {
+  const Model model = testing::impact_oscillator(7.0);
+  SimOptions o;
+  o.t_end = 70.0 * kTwoPi / 7.0;
+  o.rtol = 1e-12;
+  o.atol = 1e-14;
+  o.check = false;
+  o.method = Method::dop853;
+  const RunResult dop853 = simulate(model, o);
+  o.method = Method::taylor;
+  const RunResult taylor = simulate(model, o);
+  EXPECT_LE(2 * taylor.stats.steps, dop853.stats.steps)
+      << taylor.stats.steps << " steps against " << dop853.stats.steps;
+  ASSERT_EQ(taylor.events.size(), dop853.events.size());
+  for (std::size_t k = 0; k < taylor.events.size(); ++k) {
+    EXPECT_EQ(taylor.events[k].kind, dop853.events[k].kind) << "event " << k;
+    EXPECT_NEAR(taylor.events[k].t, dop853.events[k].t, 1e-8) << "event " << k;
+  }
+}
+
+// A pendulum that turns 1e-7 rad past a stop: the way to the stop falls through zero and rises
+// again within 3e-4 s, inside one Taylor step of about 0.05 s. The strike is found, at the time
+// the energy gives.
+TEST(Taylor, FindsAStrikeWhoseTwoCrossingsFallInsideOneStep) {
+  const double g = 9.81, R = 0.5, phi0 = 0.2, stop = 1.0, overshoot = 1e-7;
+  const double turn = stop + overshoot;
+  Model model = testing::one_pellet(0.0, phi0, 0.0);
+  model.pellets[0].dphi0 = std::sqrt(2.0 * g / R * (std::cos(phi0) - std::cos(turn)));
+  model.limiters = {Limiter{.angle = stop, .k = 0.5}};
+  const std::vector<Body> bodies = {Body{.members = {0}, .mode = Mode::sliding, .s = 1}};
+  const Vec y0 = (Vec(3) << phi0, model.pellets[0].dphi0, 0.0).finished();
+  const SegmentDynamics sys(model, bodies, y0);
+
+  // The free motion, not stopped: the step that crosses the stop also comes back across it.
+  integrators::Taylor taylor(StepperOptions{1e-10, 1e-13});
+  taylor.start(sys, 0.0, y0);
+  while (taylor.y()[1] > 0.0) ASSERT_EQ(taylor.step(10.0), StepStatus::ok);
+  Vec start_of_step;
+  taylor.dense(taylor.t_prev(), start_of_step);
+  EXPECT_LT(start_of_step[0], stop) << "the step starts past the stop";
+  EXPECT_LT(taylor.y()[0], stop) << "the step ends before the return across the stop";
+
+  SimOptions o;
+  o.t_end = 1.0;
+  o.method = Method::taylor;
+  o.rtol = 1e-10;
+  o.atol = 1e-13;
+  const RunResult run = simulate(model, o);
+  ASSERT_FALSE(run.events.empty());
+  EXPECT_EQ(run.events[0].kind, EventKind::limiter);
+  EXPECT_NEAR(run.events[0].phi, stop, 1e-12);
+  // Striking speed from the energy: φ'² = 2(g/R)(cos stop − cos turn), about 1.8e-3 rad/s.
+  const double speed = std::sqrt(2.0 * g / R * (std::cos(stop) - std::cos(turn)));
+  EXPECT_NEAR(run.events[0].dphi_before[0], speed, 1e-3 * speed);
+}
+
+// The analyses run on any method's runs: the impact oscillator's periodic orbit and its Floquet
+// multipliers, and the Lyapunov exponents of a run, under Taylor as under DOP853.
+TEST(Taylor, PeriodicOrbitsAndLyapunovExponentsAgreeWithDop853s) {
+  const Model model = testing::impact_oscillator(6.0);
+  SimOptions o;
+  o.rtol = 1e-12;
+  o.atol = 1e-15;
+  o.check = false;
+  OrbitSpec spec;
+  spec.guess = {{0.15, 0.1}};
+  o.method = Method::dop853;
+  const PeriodicOrbit dop853 = find_periodic_orbit(model, o, spec);
+  o.method = Method::taylor;
+  const PeriodicOrbit taylor = find_periodic_orbit(model, o, spec);
+  ASSERT_TRUE(dop853.converged) << dop853.message;
+  ASSERT_TRUE(taylor.converged) << taylor.message;
+  EXPECT_NEAR(taylor.state[0].phi, dop853.state[0].phi, 1e-9);
+  EXPECT_NEAR(taylor.state[0].dphi, dop853.state[0].dphi, 1e-9);
+  ASSERT_EQ(taylor.multipliers.size(), dop853.multipliers.size());
+  for (std::size_t k = 0; k < taylor.multipliers.size(); ++k)
+    EXPECT_NEAR(std::abs(taylor.multipliers[k] - dop853.multipliers[k]), 0.0, 1e-7);
+
+  o.t_end = 60.0;
+  o.lyapunov = true;
+  o.method = Method::dop853;
+  const RunResult a = simulate(model, o);
+  o.method = Method::taylor;
+  const RunResult b = simulate(model, o);
+  ASSERT_TRUE(a.lyapunov && b.lyapunov);
+  ASSERT_EQ(a.lyapunov->exponents.size(), b.lyapunov->exponents.size());
+  for (std::size_t k = 0; k < a.lyapunov->exponents.size(); ++k)
+    EXPECT_NEAR(b.lyapunov->exponents[k], a.lyapunov->exponents[k],
+                1e-6 * (1.0 + std::abs(a.lyapunov->exponents[k])));
+}
+
+}  // namespace
+}  // namespace vibro
