@@ -57,13 +57,14 @@ int Recorder::pieces(const Vec& start, const Vec& inside, double theta, const Ve
 
 void Recorder::sample(double t, const Vec& y) {
   if (t > record_until_) return;
-  // The same state twice (a run that ends where its last step did) is one sample; at an
-  // instant the states before and after differ, and every pellet keeps both, so that the
-  // pellets' samples stay at the same times.
-  if (t == last_t_ && y == last_y_) return;
+  // The same state twice (a run that ends where its last step did, an instant that changes no
+  // speed, as a reversal) is one sample, except that it opens the branches an instant ended: each
+  // branch begins at its event's state. At an instant that changes the state every pellet keeps
+  // both states, so that the pellets' samples stay at the same times.
+  const bool repeat = t == last_t_ && y == last_y_;
   last_t_ = t;
   last_y_ = y;
-  const bool on_stride = ++calls_ % stride_ == 0;
+  const bool on_stride = !repeat && ++calls_ % stride_ == 0;
   for (std::size_t k = 0; k < tracks_.size(); ++k) {
     PelletTrack& track = tracks_[k];
     const int i = track.pellet;
@@ -72,6 +73,8 @@ void Recorder::sample(double t, const Vec& y) {
       track.branches.push_back({static_cast<int>(track.branches.size()) + 1, {}});
       open_[i] = true;
       keep(track, s);
+    } else if (repeat) {
+      continue;
     } else if (on_stride) {
       pending_[k].reset();
       keep(track, s);
