@@ -30,9 +30,7 @@ int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
   }
   const WorkPrecisionReport report = work_precision(scene->model, scene->sim, o.run);
   if (!out.empty()) {
-    FigureSpec figure;
-    figure.width = scene->figure.width;
-    figure.height = scene->figure.height;
+    FigureSpec figure = scene->figure;  // its size, and its print size if it has one
     WorkPrecisionPlot plot;
     if (!scene->name.empty()) plot.title = "Work-precision, " + scene->name + " scene";
     figure.plots = {plot};

@@ -1,9 +1,12 @@
 // The look of a figure: colours (colour-blind safe), line widths and font sizes, scaled with the
-// figure so that a larger image is the same figure drawn bigger.
+// figure so that a larger image is the same figure drawn bigger, or to the text size a print size
+// asks.
 #pragma once
 
 #include <cstddef>
 #include <iterator>
+
+#include "render/plot_spec.h"
 
 namespace vibro::render {
 
@@ -47,5 +50,9 @@ struct Style {
 
 // The style for a figure of width × height pixels.
 Style style_for(int width, int height);
+
+// The style of a figure: with a print size, tick labels of its font_pt at its dpi (the rest in
+// proportion); without, the style for its pixels.
+Style style_for(const FigureSpec& figure);
 
 }  // namespace vibro::render
