@@ -151,7 +151,7 @@ std::pair<render::PanelLayout, render::LegendPlace> with_room_for_legend(
     const render::PanelLayout& layout, const render::Style& style, const render::LegendFit& fit) {
   const render::Rect& plot = layout.plots.front();
   const double column = fit.size.x / style.scale + 2.0 * render::kLegendInset;
-  const double strip = fit.size.y / style.scale + render::kLegendInset;
+  const double strip = fit.strip.y / style.scale + render::kLegendInset;
   const int stacked = static_cast<int>(layout.plots.size());
   const double beside = 1.0 - style.px(column) / plot.w;
   const double above = 1.0 - style.px(strip) / (stacked * plot.h);

@@ -17,7 +17,7 @@ Style style_for(const FigureSpec& figure) {
   // font_pt points are font_pt / 72 inches: that many dots at dpi, for a tick font of 13 px at
   // scale 1.
   const double tick_px = figure.print->font_pt / 72.0 * figure.print->dpi;
-  return Style{tick_px / Style{}.tick_font()};
+  return Style{tick_px / Style{}.tick_font(), true};
 }
 
 }  // namespace vibro::render

@@ -38,6 +38,12 @@ inline constexpr const char* kFontFamily = "DejaVu Sans";
 
 struct Style {
   double scale = 1.0;  // 1 for a figure of about 1200×800
+  // Text sized for print (a figure's print size): axes space their ticks by the size of their
+  // labels. Otherwise by pixels, as the pixel sizes were designed with.
+  bool for_print = false;
+
+  // The length an axis of `px` pixels offers its tick labels, in pixels at scale 1.
+  double axis_room(double px) const { return for_print ? px / scale : px; }
 
   double px(double v) const { return v * scale; }
   double tick_font() const { return px(13.0); }

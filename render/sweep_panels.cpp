@@ -132,8 +132,9 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const
   if (y.empty()) y = {-1.0, 1.0};
   if (y.span() <= 0.0) y = {y.lo - 0.5, y.lo + 0.5};
   const Rect& area = in.layout.plots.front();
-  const Axis ax = make_axis(x, area.w, cloud.x_angle, cloud.x_label);
-  const Axis ay = make_axis(padded(y, 0.05), area.h, cloud.y_angle, cloud.y_label, true);
+  const Axis ax = make_axis(x, style.axis_room(area.w), cloud.x_angle, cloud.x_label);
+  const Axis ay =
+      make_axis(padded(y, 0.05), style.axis_room(area.h), cloud.y_angle, cloud.y_label, true);
   const Transform tr(area, ax.range, ay.range);
 
   draw_grid(cr, tr, ax, ay, style);

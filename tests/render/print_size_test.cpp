@@ -81,9 +81,14 @@ TEST(PrintSize, LinesFollowFontPt) {
   EXPECT_NEAR(render::style_for(figure).tick_font(), 8.0 / 72.0 * 300.0, 1e-9);
   figure.print->font_pt = 10.0;
   EXPECT_NEAR(render::style_for(figure).curve_width(), 1.25 * 1.5 * scale, 1e-9);
-  // The same figure without a print size keeps the style of its pixels.
+  // Axes space their ticks by their labels' size: an axis of 1000 px with labels of 2.5 times the
+  // size of a 1200 × 800 figure's has room for as many labels as one of 400 px there.
+  const render::Style print = render::style_for(figure);
+  EXPECT_NEAR(print.axis_room(1000.0), 1000.0 / print.scale, 1e-9);
+  // The same figure without a print size keeps the style of its pixels, ticks spaced by pixels.
   figure.print.reset();
   EXPECT_EQ(render::style_for(figure).scale, render::style_for(1200, 800).scale);
+  EXPECT_EQ(render::style_for(figure).axis_room(1000.0), 1000.0);
 }
 
 TEST(PrintSize, ABadPrintSizeIsRefusedNamingItsField) {
