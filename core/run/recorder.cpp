@@ -57,14 +57,16 @@ int Recorder::pieces(const Vec& start, const Vec& inside, double theta, const Ve
 
 void Recorder::sample(double t, const Vec& y) {
   if (t > record_until_) return;
-  // The same state twice (a run that ends where its last step did, an instant that changes no
-  // speed, as a reversal) is one sample, except that it opens the branches an instant ended: each
-  // branch begins at its event's state. At an instant that changes the state every pellet keeps
-  // both states, so that the pellets' samples stay at the same times.
-  const bool repeat = t == last_t_ && y == last_y_;
+  // The same state twice (a run that ends where its last step did) is one sample, unless it
+  // opens a branch an instant ended (an instant that changes no speed, as a reversal): each
+  // branch begins at its event's state. At an instant every pellet keeps both states, so that
+  // the pellets' samples stay at the same times.
+  const bool opens = std::any_of(tracks_.begin(), tracks_.end(),
+                                 [&](const PelletTrack& track) { return !open_[track.pellet]; });
+  if (t == last_t_ && y == last_y_ && !opens) return;
   last_t_ = t;
   last_y_ = y;
-  const bool on_stride = !repeat && ++calls_ % stride_ == 0;
+  const bool on_stride = ++calls_ % stride_ == 0;
   for (std::size_t k = 0; k < tracks_.size(); ++k) {
     PelletTrack& track = tracks_[k];
     const int i = track.pellet;
@@ -73,8 +75,6 @@ void Recorder::sample(double t, const Vec& y) {
       track.branches.push_back({static_cast<int>(track.branches.size()) + 1, {}});
       open_[i] = true;
       keep(track, s);
-    } else if (repeat) {
-      continue;
     } else if (on_stride) {
       pending_[k].reset();
       keep(track, s);
