@@ -33,16 +33,7 @@ export function defaultSweep(scene) {
   const v = valueAt(scene, parameter) ?? 1;
   // To 12 significant digits: 1.5 · 3.3 is 4.949999999999999 in binary, and the form shows it.
   const tidy = (x) => Number(x.toPrecision(12));
-  return {
-    parameter,
-    from: tidy(v / 2),
-    to: tidy(v * 1.5),
-    count: 100,
-    transient: 50,
-    record: 20,
-    section: 'stroboscopic',
-    continuation: 'none'
-  };
+  return { parameter, from: tidy(v / 2), to: tidy(v * 1.5), count: 100, transient: 50, record: 20, section: "stroboscopic", continuation: "none" };
 }
 
 async function json(response) {
