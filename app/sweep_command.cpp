@@ -118,9 +118,7 @@ std::optional<SweepJob> prepare(const SweepOptions& o, bool root, int& code) {
 int write_result(const SweepJob& job, const SweepResult& result) {
   std::string text;
   if (job.image) {
-    FigureSpec figure;
-    figure.width = job.scene.figure.width;
-    figure.height = job.scene.figure.height;
+    FigureSpec figure = job.scene.figure;  // its size, and its print size if it has one
     figure.plots = {job.plot};
     const RenderResult drawn = render_figure(figure, job.scene.model, RunResult{}, *job.image,
                                              {nullptr, SweepData{*job.scene.sweep, result}});

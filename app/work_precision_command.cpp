@@ -1,8 +1,9 @@
 // `vibro work-precision SCENE [-o wp.png|wp.svg|wp.pdf] [--repeats N]`: for each method and
-// tolerance from 1e-3 to 1e-12, the median run time and the true error; prints the table as JSON
-// and draws the diagram.
+// tolerance from 1e-3 to 1e-12, the median run time and the true error; prints the table as JSON,
+// or draws the diagram and says where.
 #include <iostream>
 #include <memory>
+#include <nlohmann/json.hpp>
 
 #include "app/commands.h"
 #include "app/scene_options.h"
@@ -30,9 +31,7 @@ int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
   }
   const WorkPrecisionReport report = work_precision(scene->model, scene->sim, o.run);
   if (!out.empty()) {
-    FigureSpec figure;
-    figure.width = scene->figure.width;
-    figure.height = scene->figure.height;
+    FigureSpec figure = scene->figure;  // its size, and its print size if it has one
     WorkPrecisionPlot plot;
     if (!scene->name.empty()) plot.title = "Work-precision, " + scene->name + " scene";
     figure.plots = {plot};
@@ -48,6 +47,9 @@ int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
       print_error("-o", problem->message);
       return 1;
     }
+    // The diagram was asked for: where it went, not the table it draws (some 400 lines).
+    std::cout << nlohmann::json{{"image", out}, {"bytes", bytes.size()}}.dump() << "\n";
+    return 0;
   }
   std::cout << work_precision_to_json(report).dump(2) << "\n";
   return 0;
@@ -57,10 +59,11 @@ int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
 
 Command add_work_precision_command(CLI::App& vibro) {
   auto o = std::make_shared<WorkPrecisionCommandOptions>();
-  CLI::App* command = add_scene_command(
-      vibro, "work-precision",
-      "Error against run time per method, tolerances 1e-3 to 1e-12: the table as JSON, the diagram",
-      "also draw the diagram: OUT.png, OUT.svg or OUT.pdf", o->job);
+  CLI::App* command =
+      add_scene_command(vibro, "work-precision",
+                        "Error against run time per method, tolerances 1e-3 to 1e-12: the table as "
+                        "JSON, or the diagram",
+                        "draw the diagram instead: OUT.png, OUT.svg or OUT.pdf", o->job);
   command
       ->add_option("--repeats", o->run.repeats,
                    "timed runs per point, their median kept (default 3)")

@@ -91,6 +91,15 @@ json event_to_json(const Event& e) {
   return j;
 }
 
+namespace {
+
+// "1 collision", "2 collisions".
+std::string count_of(int n, const std::string& thing) {
+  return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
+}
+
+}  // namespace
+
 std::string answer_sentence(const RunResult& run, const Model& model) {
   std::ostringstream s;
   s.precision(4);
@@ -98,11 +107,10 @@ std::string answer_sentence(const RunResult& run, const Model& model) {
   const LastImpact& last = sm.last_impact;
   std::ostringstream counts;
   counts.precision(4);
-  counts << sm.limiter_impacts << " limiter impacts, " << sm.collisions << " collisions";
-  if (sm.chatter_sequences > 0) {
-    counts << ", " << sm.chatter_sequences << " chatter sequence"
-           << (sm.chatter_sequences > 1 ? "s" : "") << " summed to rest";
-  }
+  counts << count_of(sm.limiter_impacts, "limiter impact") << ", "
+         << count_of(sm.collisions, "collision");
+  if (sm.chatter_sequences > 0)
+    counts << ", " << count_of(sm.chatter_sequences, "chatter sequence") << " summed to rest";
   if (last.index == 0) {
     s << "No impact happens before t = " << run.stats.t_reached << " s.";
   } else if (sm.ends_vibro_impact) {
@@ -110,8 +118,8 @@ std::string answer_sentence(const RunResult& run, const Model& model) {
       << " s (" << counts.str() << ").";
   } else {
     s << "The run ends at t = " << run.stats.t_reached
-      << " s while the system is still vibro-impact: " << last.index << " impacts (" << counts.str()
-      << "), the last at t = " << last.t << " s.";
+      << " s while the system is still vibro-impact: " << count_of(last.index, "impact") << " ("
+      << counts.str() << "), the last at t = " << last.t << " s.";
   }
   for (std::size_t i = 0; i < run.summary.final.size(); ++i) {
     const FinalState& f = run.summary.final[i];

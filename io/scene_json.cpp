@@ -3,10 +3,12 @@
 #include <cmath>
 #include <set>
 
+#include "io/figure_json.h"
 #include "io/json_fields.h"
 #include "io/orbit_json.h"
 #include "io/plot_json.h"
 #include "io/sweep_json.h"
+#include "render/figure_size.h"
 
 namespace vibro {
 namespace {
@@ -151,11 +153,14 @@ SceneOrError scene_from_json(const json& j, const Limits& limits) {
     }
     if (auto w = f.integer("width")) s.figure.width = static_cast<int>(*w);
     if (auto h = f.integer("height")) s.figure.height = static_cast<int>(*h);
+    // A print size sets the pixels, over width and height (checked by validate_scene first).
+    if (const json* print = f.value("figure")) s.figure.print = read_print_size(*print);
     if (const json* sweep = f.value("sweep")) s.sweep = read_sweep(*sweep);
     if (const json* orbit = f.value("periodic_orbit"))
       s.periodic_orbit = read_orbit_request(*orbit, limits.pellets);
     f.done();
     if (auto e = validate_scene(s, limits)) return *e;
+    apply_print_size(s.figure);
     return s;
   } catch (const FieldException& e) {
     return FieldError{e.field, e.what()};
@@ -314,6 +319,7 @@ json scene_to_json(const Scene& s) {
   j["plots"] = plots;
   j["width"] = s.figure.width;
   j["height"] = s.figure.height;
+  if (s.figure.print) j["figure"] = print_size_to_json(*s.figure.print);
   if (s.sweep) j["sweep"] = sweep_to_json(*s.sweep);
   if (s.periodic_orbit) j["periodic_orbit"] = orbit_request_to_json(*s.periodic_orbit);
   return j;

@@ -25,6 +25,9 @@ std::vector<Rect> draw_branch_numbers(cairo_t* cr, const std::vector<NumberedLin
   std::vector<Rect> taken = keep_clear;
   const std::size_t first_number = taken.size();
   const double offset = style.px(9.0);
+  // Numbers keep half a font apart (a third vertically): side by side they read as one number
+  // ("33", "27", "60" as "332760" where many branches pass close together).
+  const double gap_x = 0.5 * style.note_font(), gap_y = 0.35 * style.note_font();
   for (const NumberedLine& b : branches) {
     if (!b.labelled || polyline_length(b.pixels) < style.px(40.0)) continue;
     const std::string label = std::to_string(b.index);
@@ -38,8 +41,11 @@ std::vector<Rect> draw_branch_numbers(cairo_t* cr, const std::vector<NumberedLin
         Rect box = text_box(cr, label, at, {HAlign::center, VAlign::middle});
         const bool inside = box.x >= area.x && box.right() <= area.right() && box.y >= area.y &&
                             box.bottom() <= area.bottom();
-        const bool free = std::none_of(taken.begin(), taken.end(),
-                                       [&](const Rect& r) { return r.overlaps(box); });
+        const Rect spaced{box.x - gap_x, box.y - gap_y, box.w + 2 * gap_x, box.h + 2 * gap_y};
+        const auto number = taken.begin() + static_cast<std::ptrdiff_t>(first_number);
+        const bool free =
+            std::none_of(taken.begin(), number, [&](const Rect& r) { return r.overlaps(box); }) &&
+            std::none_of(number, taken.end(), [&](const Rect& r) { return r.overlaps(spaced); });
         if (inside && free) {
           draw_text_on_backdrop(cr, label, at, {HAlign::center, VAlign::middle},
                                 darker(branch_colour(b.index), 0.8), style.px(1.5));

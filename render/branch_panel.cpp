@@ -122,10 +122,10 @@ void draw_branch_panel(cairo_t* cr, const PanelInput<BranchPlot>& in, const Bran
   if (y.span() <= 0.0) y = {y.lo - 0.5, y.lo + 0.5};
   const bool angle = in.spec.coordinate == SectionCoordinate::phi;
   const Rect& area = in.layout.plots.front();
-  const Axis ax =
-      make_axis(padded(x, 0.02), area.w, false, parameter_label(continued.continuation.parameter));
+  const Axis ax = make_axis(padded(x, 0.02), style.axis_room(area.w), false,
+                            parameter_label(continued.continuation.parameter));
   const Axis ay = make_axis(
-      padded(y, 0.05), area.h, angle,
+      padded(y, 0.05), style.axis_room(area.h), angle,
       std::string(angle ? "\u03c6 at t = kT [rad]" : "\u03c6\u0307 at t = kT [rad/s]"), true);
   const Transform tr(area, ax.range, ay.range);
   draw_grid(cr, tr, ax, ay, style);

@@ -74,7 +74,8 @@ void draw_colour_bar(cairo_t* cr, const DivergingScale& scale, const Rect& bar,
 
   const double tick = style.px(kTickLength), lo = -scale.limit;
   auto y_of = [&](double v) { return bottom - (v - lo) / (2.0 * scale.limit) * (bottom - top); };
-  const std::vector<Tick> ticks = axis_ticks({lo, scale.limit}, bottom - top, false, true);
+  const std::vector<Tick> ticks =
+      axis_ticks({lo, scale.limit}, style.axis_room(bottom - top), false, true);
   for (const Tick& t : ticks) {
     const double y = std::floor(y_of(t.value)) + 0.5;
     cairo_move_to(cr, bar.right(), y);

@@ -151,7 +151,7 @@ std::pair<render::PanelLayout, render::LegendPlace> with_room_for_legend(
     const render::PanelLayout& layout, const render::Style& style, const render::LegendFit& fit) {
   const render::Rect& plot = layout.plots.front();
   const double column = fit.size.x / style.scale + 2.0 * render::kLegendInset;
-  const double strip = fit.size.y / style.scale + render::kLegendInset;
+  const double strip = fit.strip.y / style.scale + render::kLegendInset;
   const int stacked = static_cast<int>(layout.plots.size());
   const double beside = 1.0 - style.px(column) / plot.w;
   const double above = 1.0 - style.px(strip) / (stacked * plot.h);
@@ -166,7 +166,7 @@ std::optional<FieldError> draw_figure(cairo_t* cr, const FigureSpec& figure, con
                                       std::vector<PlotAxes>& axes) {
   cairo_set_source_rgb(cr, 1.0, 1.0, 1.0);
   cairo_paint(cr);
-  const render::Style style = render::style_for(figure.width, figure.height);
+  const render::Style style = render::style_for(figure);
   const auto layouts = render::figure_layout(figure);
   // A legend that would hide data in every corner of its plot goes beside it or above it instead:
   // the panel is drawn again, narrower or lower. An image is drawn once and its cell painted over
@@ -220,9 +220,9 @@ RenderResult render_png(const FigureSpec& figure, const Model& model, const RunR
   std::vector<PlotAxes> axes;
   if (auto e = draw_figure(cr.get(), figure, model, run, data, axes)) return failure(*e);
   cairo_surface_flush(surface.get());
-  auto bytes =
-      render::encode_png_argb32(cairo_image_surface_get_data(surface.get()), figure.width,
-                                figure.height, cairo_image_surface_get_stride(surface.get()), true);
+  auto bytes = render::encode_png_argb32(
+      cairo_image_surface_get_data(surface.get()), figure.width, figure.height,
+      cairo_image_surface_get_stride(surface.get()), true, figure.print ? figure.print->dpi : 0.0);
   if (bytes.empty()) return failure({"", "PNG encoding failed"});
   return {std::move(bytes), std::string(content_type(ImageFormat::png)), std::nullopt,
           std::move(axes)};
@@ -238,8 +238,10 @@ cairo_status_t append_bytes(void* closure, const unsigned char* data, unsigned i
 RenderResult render_vector(const FigureSpec& figure, const Model& model, const RunResult& run,
                            const PanelData& data, ImageFormat format) {
   std::vector<std::uint8_t> bytes;
-  // A PDF is measured in points: 0.75 pt per pixel, the CSS ratio, so that 1200 px print 12.5 in.
-  const double scale = format == ImageFormat::pdf ? 0.75 : 1.0;
+  // A PDF is measured in points: 0.75 pt per pixel, the CSS ratio, so that 1200 px print 12.5 in;
+  // with a print size, 72 / dpi, so that the page is its size (to half a dot).
+  const double pdf_scale = figure.print ? 72.0 / figure.print->dpi : 0.75;
+  const double scale = format == ImageFormat::pdf ? pdf_scale : 1.0;
   SurfacePtr surface(
       format == ImageFormat::pdf
           ? cairo_pdf_surface_create_for_stream(append_bytes, &bytes, scale * figure.width,
@@ -257,12 +259,25 @@ RenderResult render_vector(const FigureSpec& figure, const Model& model, const R
     if (auto e = draw_figure(cr.get(), figure, model, run, data, axes)) return failure(*e);
   }
   cairo_surface_finish(surface.get());
-  if (format == ImageFormat::svg) render::append_to_svg(bytes, render::svg_text_elements(texts));
+  if (format == ImageFormat::svg) {
+    render::append_to_svg(bytes, render::svg_text_elements(texts));
+    // At its print size: the page in mm, over the same view box of pixels.
+    if (figure.print)
+      render::set_svg_size_mm(bytes, figure.print->width_mm, figure.print->height_mm);
+  }
   if (cairo_surface_status(surface.get()) != CAIRO_STATUS_SUCCESS)
     return failure(
         {"", std::string(format == ImageFormat::pdf ? "PDF" : "SVG") +
                  " output failed: " + cairo_status_to_string(cairo_surface_status(surface.get()))});
   return {std::move(bytes), std::string(content_type(format)), std::nullopt, std::move(axes)};
+}
+
+RenderResult render_sized(const FigureSpec& figure, const Model& model, const RunResult& run,
+                          ImageFormat format, const PanelData& data) {
+  if (auto e = validate_figure(figure, model, format)) return failure(*e);
+  if (auto e = check_tracks(figure, model, run)) return failure(*e);
+  return format == ImageFormat::png ? render_png(figure, model, run, data)
+                                    : render_vector(figure, model, run, data, format);
 }
 
 }  // namespace
@@ -296,10 +311,14 @@ std::optional<ImageFormat> image_format_of_file(std::string_view path) {
 RenderResult render_figure(const FigureSpec& figure, const Model& model, const RunResult& run,
                            ImageFormat format, const PanelData& data) {
   try {
-    if (auto e = validate_figure(figure, model, format)) return failure(*e);
-    if (auto e = check_tracks(figure, model, run)) return failure(*e);
-    return format == ImageFormat::png ? render_png(figure, model, run, data)
-                                      : render_vector(figure, model, run, data, format);
+    if (figure.print) {
+      // Its pixels from its print size, whatever the caller left in width and height.
+      FigureSpec sized = figure;
+      apply_print_size(sized);
+      if (auto e = check_print_size(*figure.print, {})) return failure(*e);
+      return render_sized(sized, model, run, format, data);
+    }
+    return render_sized(figure, model, run, format, data);
   } catch (const std::exception& e) {
     // Out of memory, mostly: an error value, never an exception across the module boundary.
     return failure({"", std::string("rendering failed: ") + e.what()});

@@ -67,7 +67,7 @@ PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double lege
 }
 
 std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
-  const Style style = style_for(figure.width, figure.height);
+  const Style style = style_for(figure);
   const auto cells = grid_cells(static_cast<int>(figure.plots.size()), figure.width, figure.height);
   std::vector<PanelLayout> layouts;
   for (std::size_t i = 0; i < cells.size(); ++i) {

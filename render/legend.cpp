@@ -103,14 +103,38 @@ Rect legend_box(Point size, const Rect& area, const Obstacles& avoid, double ins
   return best;
 }
 
-Point legend_size(cairo_t* cr, const std::vector<LegendEntry>& entries, const Style& style) {
+LegendGrid legend_grid(cairo_t* cr, const std::vector<LegendEntry>& entries, const Style& style,
+                       double width) {
   if (entries.empty()) return {};
   set_font(cr, style.note_font());
-  double widest = 0.0;
-  for (const LegendEntry& e : entries) widest = std::max(widest, text_box(cr, e.label, {}, {}).w);
   const double pad = style.px(kPadding), row = kRowHeight * style.note_font();
-  return {2.0 * pad + style.px(kSwatchWidth + kSwatchGap) + widest,
-          2.0 * pad + row * entries.size() - (row - style.note_font())};
+  const double swatch = style.px(kSwatchWidth + kSwatchGap), gap = 2.0 * pad;
+  std::vector<double> widths;
+  double widest = 0.0;
+  for (const LegendEntry& e : entries) {
+    widths.push_back(swatch + text_box(cr, e.label, {}, {}).w);
+    widest = std::max(widest, widths.back());
+  }
+  // One column, or rows filled left to right as far as the width allows (at least one entry a
+  // row).
+  LegendGrid grid;
+  double x = 0.0, right = 0.0;
+  int line = 0;
+  for (double w : widths) {
+    if (width <= 0.0 || (x > 0.0 && pad + x + w + pad > width)) {
+      if (!grid.at.empty()) ++line;
+      x = 0.0;
+    }
+    grid.at.push_back({pad + x, pad + 0.5 * style.note_font() + line * row});
+    right = std::max(right, x + (width > 0.0 ? w : widest));
+    x += w + gap;
+  }
+  grid.size = {2.0 * pad + right, 2.0 * pad + row * (line + 1) - (row - style.note_font())};
+  return grid;
+}
+
+Point legend_size(cairo_t* cr, const std::vector<LegendEntry>& entries, const Style& style) {
+  return legend_grid(cr, entries, style, 0.0).size;
 }
 
 void watch_legends(cairo_t* cr, LegendFit* fit) { cairo_set_user_data(cr, &kFitKey, fit, nullptr); }
@@ -123,9 +147,13 @@ void place_legends(cairo_t* cr, LegendPlace place) {
 void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rect& area,
                  const Obstacles& avoid, const Style& style) {
   if (entries.empty()) return;
-  const Point size = legend_size(cr, entries, style);
   const auto* set = static_cast<const LegendPlace*>(cairo_get_user_data(cr, &kPlaceKey));
   const LegendPlace place = set ? *set : LegendPlace::inside;
+  // Above the plot, the entries in as many columns as its width holds: a strip, not a tower.
+  const LegendGrid strip = legend_grid(cr, entries, style, area.w);
+  const LegendGrid grid =
+      place == LegendPlace::above ? strip : legend_grid(cr, entries, style, 0.0);
+  const Point size = grid.size;
   const double inset = style.px(kLegendInset);
   const Rect box = place == LegendPlace::beside ? Rect{area.right() + inset, area.y, size.x, size.y}
                    : place == LegendPlace::above
@@ -135,8 +163,9 @@ void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rec
     fit->hid_data =
         fit->hid_data || (place == LegendPlace::inside && placement_cost(box, avoid) > 0.0);
     fit->size = {std::max(fit->size.x, size.x), std::max(fit->size.y, size.y)};
+    fit->strip = {std::max(fit->strip.x, strip.size.x), std::max(fit->strip.y, strip.size.y)};
   }
-  const double pad = style.px(kPadding), row = kRowHeight * style.note_font();
+  const double pad = style.px(kPadding);
 
   cairo_rectangle(cr, box.x, box.y, box.w, box.h);
   set_colour(cr, rgb(0xFFFFFF, 0.88));
@@ -145,12 +174,12 @@ void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rec
   cairo_set_line_width(cr, style.thin_width());
   cairo_stroke(cr);
 
-  double y = box.y + pad + 0.5 * style.note_font();
-  for (const LegendEntry& e : entries) {
-    draw_swatch(cr, e, {box.x + pad, y}, style);
-    draw_text(cr, e.label, {box.x + pad + style.px(kSwatchWidth + kSwatchGap), y},
+  for (std::size_t k = 0; k < entries.size(); ++k) {
+    const LegendEntry& e = entries[k];
+    const double x = box.x + grid.at[k].x, y = box.y + grid.at[k].y;
+    draw_swatch(cr, e, {x, y}, style);
+    draw_text(cr, e.label, {x + style.px(kSwatchWidth + kSwatchGap), y},
               {HAlign::left, VAlign::middle}, kInk);
-    y += row;
   }
 }
 

@@ -40,7 +40,16 @@ Rect legend_box(Point size, const Rect& area, const Obstacles& avoid, double ins
 // The legend box's distance from the edges of the area it is drawn in, at scale 1.
 inline constexpr double kLegendInset = 8.0;
 
-// The size of the legend box of the entries (nothing when there are none), in the note font.
+// The legend box of the entries in the note font: one entry a row for a width of 0, else rows
+// filled left to right as far as `width` px allow; nothing when there are none.
+struct LegendGrid {
+  std::vector<Point> at;  // per entry: its swatch's left middle, from the box's top left
+  Point size;
+};
+LegendGrid legend_grid(cairo_t* cr, const std::vector<LegendEntry>& entries, const Style& style,
+                       double width);
+
+// The size of the legend box of the entries in one column (nothing when there are none).
 Point legend_size(cairo_t* cr, const std::vector<LegendEntry>& entries, const Style& style);
 
 // Draws the entries in the best corner of `area`; nothing when there are none. Beside or above
@@ -53,12 +62,13 @@ void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rec
 struct LegendFit {
   bool hid_data = false;
   Point size;
+  Point strip;  // the largest legend's size above its plot, in rows across its width
 };
 // Watches the legends drawn on cr from now on (null: stops).
 void watch_legends(cairo_t* cr, LegendFit* fit);
 // Where legends go: in the best corner of their plot area, or where the figure has made room
 // for a panel whose legend would hide data in every corner: right of the plot, top aligned, or
-// above it, right aligned.
+// above it, right aligned, its entries in rows across the plot's width.
 enum class LegendPlace { inside, beside, above };
 void place_legends(cairo_t* cr, LegendPlace place);
 

@@ -106,9 +106,9 @@ void draw_lyapunov_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const Swe
   for (const SweepRun& run : runs)
     if (finite(run)) y.include(*run.lyapunov);
   const Rect& area = in.layout.plots.front();
-  const Axis ax =
-      make_axis(bifurcation_range(spec.axis), area.w, false, parameter_label(spec.axis.parameter));
-  const Axis ay = make_axis(padded(y, 0.08), area.h, false, kLyapunovLabel, true);
+  const Axis ax = make_axis(bifurcation_range(spec.axis), style.axis_room(area.w), false,
+                            parameter_label(spec.axis.parameter));
+  const Axis ay = make_axis(padded(y, 0.08), style.axis_room(area.h), false, kLyapunovLabel, true);
   const Transform tr(area, ax.range, ay.range);
 
   draw_grid(cr, tr, ax, ay, style);

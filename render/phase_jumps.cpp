@@ -39,8 +39,9 @@ std::vector<Jump> velocity_jumps(const PelletTrack& track, std::span<const Event
     if (!same_phi || !jumped) continue;
     const Event* event = find_impact(events, track.pellet, e.t);
     if (event && event->kind == EventKind::chatter) continue;  // below, from the event itself
-    const EventMark* mark = event_mark(event ? event->kind : EventKind::limiter);
-    jumps.push_back({{e.phi, e.dphi}, {s.phi, s.dphi}, mark});
+    // A jump no listed impact explains (one before the events kept) is drawn, but not called an
+    // impact of a kind it may not be.
+    jumps.push_back({{e.phi, e.dphi}, {s.phi, s.dphi}, event ? event_mark(event->kind) : nullptr});
   }
   // A chatter sequence: from the speed its summation started from to rest against the limiter.
   for (const Event& e : events) {

@@ -18,7 +18,7 @@ namespace vibro::render {
 // An impact seen in the portrait: φ̇ jumps from `before` to `after` at one φ.
 struct Jump {
   Point before, after;
-  const EventMark* mark;
+  const EventMark* mark;  // null: no impact listed at its time (the run kept no events there)
 };
 
 // The jumps of one pellet's track inside the plot's window and branch selection.

@@ -140,8 +140,8 @@ void draw_phase_panel(cairo_t* cr, const PanelInput<PhasePlot>& in) {
                                         : padded(phi, 0.03);
   const Range dphi_axis =
       spec.dphi_range ? Range{spec.dphi_range->lo, spec.dphi_range->hi} : padded(dphi, 0.05);
-  const Axis x = make_axis(phi_axis, area.w, true, kPhiLabel);
-  const Axis y = make_axis(dphi_axis, area.h, false, kDphiLabel, true);
+  const Axis x = make_axis(phi_axis, style.axis_room(area.w), true, kPhiLabel);
+  const Axis y = make_axis(dphi_axis, style.axis_room(area.h), false, kDphiLabel, true);
   const Transform tr(area, x.range, y.range);
   if (in.plot_axes)
     in.plot_axes->push_back({PlotAxesKind::phase, spec.pellet, area.x, area.y, area.w, area.h,

@@ -107,10 +107,24 @@ struct BranchPlot {
 using PlotSpec = std::variant<PhasePlot, TimePlot, CylinderPlot, MechanismPlot, WorkPrecisionPlot,
                               SweepPlot, BranchPlot>;
 
+// A figure's size for print (a scene's "figure"): PDF and SVG pages of width_mm × height_mm, PNG
+// images of width_mm / 25.4 · dpi pixels (and so on for the height), tick labels of font_pt
+// points, the rest of the text and the lines in proportion (axis labels and titles a little
+// larger, legends and branch numbers a little smaller).
+struct PrintSize {
+  double width_mm = 85.0;               // a journal's single column
+  double height_mm = 85.0 * 2.0 / 3.0;  // read as two thirds of the width when not given
+  double font_pt = 8.0;
+  double dpi = 300.0;
+};
+
 struct FigureSpec {
   std::vector<PlotSpec> plots;
+  // px: the image's pixels, and the units every panel is laid out in. With a print size they are
+  // its pixels (render/figure_size.h, apply_print_size).
   int width = 1200;
   int height = 800;
+  std::optional<PrintSize> print = std::nullopt;
 };
 
 }  // namespace vibro

@@ -2,6 +2,7 @@
 
 #include <libdeflate.h>
 
+#include <cmath>
 #include <string_view>
 
 #if defined(__x86_64__)
@@ -93,7 +94,7 @@ void put_chunk(std::vector<std::uint8_t>& out, std::string_view type,
 }  // namespace
 
 std::vector<std::uint8_t> encode_png_argb32(const std::uint8_t* data, int width, int height,
-                                            int stride, bool opaque) {
+                                            int stride, bool opaque, double dpi) {
   if (!data || width <= 0 || height <= 0 || stride < 4 * width || stride % 4 != 0) return {};
   // cairo writes its pixels as 32-bit words, 4-byte aligned (its strides are multiples of 4).
   const SurfacePixels pixels{reinterpret_cast<const std::uint32_t*>(data),
@@ -116,6 +117,15 @@ std::vector<std::uint8_t> encode_png_argb32(const std::uint8_t* data, int width,
 
   std::vector<std::uint8_t> out = {0x89, 'P', 'N', 'G', '\r', '\n', 0x1A, '\n'};
   put_chunk(out, "IHDR", header);
+  if (dpi > 0.0) {
+    // Pixels per metre along x and y, then the unit (1: the metre).
+    const auto per_metre = static_cast<std::uint32_t>(std::lround(dpi / 0.0254));
+    std::vector<std::uint8_t> physical;
+    put_u32(physical, per_metre);
+    put_u32(physical, per_metre);
+    physical.push_back(1);
+    put_chunk(out, "pHYs", physical);
+  }
   put_chunk(out, "IDAT", zlib_image_rows(rows));
   put_chunk(out, "IEND", {});
   return out;

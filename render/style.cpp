@@ -12,4 +12,12 @@ Style style_for(int width, int height) {
   return Style{std::clamp(std::sqrt(relative), 0.75, 2.5)};
 }
 
+Style style_for(const FigureSpec& figure) {
+  if (!figure.print) return style_for(figure.width, figure.height);
+  // font_pt points are font_pt / 72 inches: that many dots at dpi, for a tick font of 13 px at
+  // scale 1.
+  const double tick_px = figure.print->font_pt / 72.0 * figure.print->dpi;
+  return Style{tick_px / Style{}.tick_font(), true};
+}
+
 }  // namespace vibro::render

@@ -1,9 +1,12 @@
 // The look of a figure: colours (colour-blind safe), line widths and font sizes, scaled with the
-// figure so that a larger image is the same figure drawn bigger.
+// figure so that a larger image is the same figure drawn bigger, or to the text size a print size
+// asks.
 #pragma once
 
 #include <cstddef>
 #include <iterator>
+
+#include "render/plot_spec.h"
 
 namespace vibro::render {
 
@@ -35,6 +38,12 @@ inline constexpr const char* kFontFamily = "DejaVu Sans";
 
 struct Style {
   double scale = 1.0;  // 1 for a figure of about 1200×800
+  // Text sized for print (a figure's print size): axes space their ticks by the size of their
+  // labels. Otherwise by pixels, as the pixel sizes were designed with.
+  bool for_print = false;
+
+  // The length an axis of `px` pixels offers its tick labels, in pixels at scale 1.
+  double axis_room(double px) const { return for_print ? px / scale : px; }
 
   double px(double v) const { return v * scale; }
   double tick_font() const { return px(13.0); }
@@ -47,5 +56,9 @@ struct Style {
 
 // The style for a figure of width × height pixels.
 Style style_for(int width, int height);
+
+// The style of a figure: with a print size, tick labels of its font_pt at its dpi (the rest in
+// proportion); without, the style for its pixels.
+Style style_for(const FigureSpec& figure);
 
 }  // namespace vibro::render

@@ -52,4 +52,36 @@ void append_to_svg(std::vector<std::uint8_t>& svg, const std::string& elements) 
   svg.insert(position, elements.begin(), elements.end());
 }
 
+namespace {
+
+// Replaces the value of the first attribute `name` in the root element (within its tag).
+void set_root_attribute(std::vector<std::uint8_t>& svg, const std::string& name,
+                        const std::string& value) {
+  const std::string text(svg.begin(), svg.end());
+  const std::size_t root = text.find("<svg");
+  if (root == std::string::npos) return;
+  const std::size_t tag_end = text.find('>', root);
+  const std::size_t at = text.find(" " + name + "=\"", root);
+  if (at == std::string::npos || at > tag_end) return;
+  const std::size_t begin = at + name.size() + 3;
+  const std::size_t end = text.find('"', begin);
+  if (end == std::string::npos || end > tag_end) return;
+  svg.erase(svg.begin() + static_cast<std::ptrdiff_t>(begin),
+            svg.begin() + static_cast<std::ptrdiff_t>(end));
+  svg.insert(svg.begin() + static_cast<std::ptrdiff_t>(begin), value.begin(), value.end());
+}
+
+std::string millimetres(double mm) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.2fmm", mm);
+  return text;
+}
+
+}  // namespace
+
+void set_svg_size_mm(std::vector<std::uint8_t>& svg, double width_mm, double height_mm) {
+  set_root_attribute(svg, "width", millimetres(width_mm));
+  set_root_attribute(svg, "height", millimetres(height_mm));
+}
+
 }  // namespace vibro::render

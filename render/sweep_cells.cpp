@@ -24,8 +24,9 @@ CellMap draw_cells(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData
   const SweepAxis& b = spec.axis2 ? *spec.axis2 : one;
   const Range x = cell_range(a), y = cell_range(b);
   const Rect& area = in.layout.plots.front();
-  CellMap map{make_axis(x, area.w, false, parameter_label(a.parameter)),
-              make_axis(y, area.h, false, spec.axis2 ? parameter_label(b.parameter) : "", true),
+  CellMap map{make_axis(x, in.style.axis_room(area.w), false, parameter_label(a.parameter)),
+              make_axis(y, in.style.axis_room(area.h), false,
+                        spec.axis2 ? parameter_label(b.parameter) : "", true),
               Transform(area, x, y)};
   const double w = x.span() / std::max(a.count, 1), h = y.span() / std::max(b.count, 1);
   for (const SweepRun& run : sweep.result.runs) {

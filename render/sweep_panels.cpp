@@ -74,13 +74,25 @@ Cloud cloud_of(const SweepPlot& spec, const SweepSpec& sweep) {
   return c;
 }
 
-// Distinct colours for periods 1 … 8 (Okabe and Ito's, told apart with any colour vision), grey
-// for longer periods and none.
+// The periods a regime map tells apart: 1 … 8 each, every longer one as one class (9), and 0
+// (not periodic).
+constexpr int kLongestPeriodShown = 8;
+int period_class(int period) { return std::min(period, kLongestPeriodShown + 1); }
+
+// Distinct colours for periods 1 … 8 (Okabe and Ito's, told apart with any colour vision), a
+// dark wine for the longer periods, light grey for none.
 Colour period_colour(int period) {
-  static constexpr Colour colours[] = {rgb(0x0072b2), rgb(0xe69f00), rgb(0x009e73), rgb(0xcc79a7),
-                                       rgb(0xd55e00), rgb(0x56b4e9), rgb(0xf0e442), rgb(0x444444)};
-  if (period >= 1 && period <= 8) return colours[period - 1];
-  return rgb(0xbbbbbb);
+  static constexpr Colour colours[] = {rgb(0x0072b2), rgb(0xe69f00), rgb(0x009e73),
+                                       rgb(0xcc79a7), rgb(0xd55e00), rgb(0x56b4e9),
+                                       rgb(0xf0e442), rgb(0x444444), rgb(0x882255)};
+  const int c = period_class(period);
+  return c >= 1 ? colours[c - 1] : rgb(0xbbbbbb);
+}
+
+std::string period_label(int period_class) {
+  if (period_class == 0) return "not periodic";
+  if (period_class > kLongestPeriodShown) return "period > " + std::to_string(kLongestPeriodShown);
+  return "period " + std::to_string(period_class);
 }
 
 }  // namespace
@@ -120,8 +132,9 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const
   if (y.empty()) y = {-1.0, 1.0};
   if (y.span() <= 0.0) y = {y.lo - 0.5, y.lo + 0.5};
   const Rect& area = in.layout.plots.front();
-  const Axis ax = make_axis(x, area.w, cloud.x_angle, cloud.x_label);
-  const Axis ay = make_axis(padded(y, 0.05), area.h, cloud.y_angle, cloud.y_label, true);
+  const Axis ax = make_axis(x, style.axis_room(area.w), cloud.x_angle, cloud.x_label);
+  const Axis ay =
+      make_axis(padded(y, 0.05), style.axis_room(area.h), cloud.y_angle, cloud.y_label, true);
   const Transform tr(area, ax.range, ay.range);
 
   draw_grid(cr, tr, ax, ay, style);
@@ -177,17 +190,14 @@ void draw_regime_map_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const S
   for (const SweepRun& run : sweep.result.runs) {
     if (!shown_in_cell(run)) continue;
     rest = rest || run.at_rest;
-    if (!run.at_rest && std::find(periods.begin(), periods.end(), run.period) == periods.end())
-      periods.push_back(run.period);
+    const int c = period_class(run.period);
+    if (!run.at_rest && std::find(periods.begin(), periods.end(), c) == periods.end())
+      periods.push_back(c);
   }
   std::sort(periods.begin(), periods.end(),
             [](int p, int q) { return (p == 0 ? 1000 : p) < (q == 0 ? 1000 : q); });
   std::vector<LegendEntry> legend;
-  for (int p : periods)
-    legend.push_back({p == 0  ? "not periodic"
-                      : p > 8 ? "period > 8"
-                              : "period " + std::to_string(p),
-                      period_colour(p), Swatch::area});
+  for (int p : periods) legend.push_back({period_label(p), period_colour(p), Swatch::area});
   if (rest)
     legend.push_back({"at rest", {1.0, 1.0, 1.0, 1.0}, Swatch::area, MarkerShape::circle, kGuide});
   if (map.untrusted) legend.push_back({"not trusted", kInk, Swatch::line});

@@ -93,15 +93,15 @@ void draw_time_panel(cairo_t* cr, const PanelInput<TimePlot>& in) {
   const std::vector<Rect>& plots = in.layout.plots;
   const bool stacked = plots.size() > 1;
   // An instant (a window holding one sample) widened to an interval around it.
-  const Axis x =
-      make_axis(t.empty() ? Range{0.0, 1.0} : padded(t, 0.0), plots.front().w, false, kTimeLabel);
+  const Axis x = make_axis(t.empty() ? Range{0.0, 1.0} : padded(t, 0.0),
+                           style.axis_room(plots.front().w), false, kTimeLabel);
 
   // Upper (or only) plot: φ(t). A bottom strip is left free for the event marks.
   const Rect& top = plots.front();
   Range phi_range =
       spec.phi_range ? Range{spec.phi_range->lo, spec.phi_range->hi} : padded(phi, 0.05);
   phi_range.lo -= style.px(14.0) / top.h * phi_range.span();  // below the data, not over it
-  const Axis y_phi = make_axis(phi_range, top.h, true, kPhiLabel, true);
+  const Axis y_phi = make_axis(phi_range, style.axis_room(top.h), true, kPhiLabel, true);
   const Transform tr_phi(top, x.range, y_phi.range);
   if (in.plot_axes)
     in.plot_axes->push_back({PlotAxesKind::time, -1, top.x, top.y, top.w, top.h, x.range.lo,
@@ -133,7 +133,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput<TimePlot>& in) {
     const Rect& bottom = plots[1];
     const Axis y_dphi = make_axis(
         spec.dphi_range ? Range{spec.dphi_range->lo, spec.dphi_range->hi} : padded(dphi, 0.05),
-        bottom.h, false, kDphiLabel, true);
+        style.axis_room(bottom.h), false, kDphiLabel, true);
     const Transform tr_dphi(bottom, x.range, y_dphi.range);
     draw_grid(cr, tr_dphi, x, y_dphi, style);
     cairo_save(cr);

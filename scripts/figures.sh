@@ -12,6 +12,20 @@ echo '{"plots":[{"kind":"cylinder","pellet":0}],"width":900,"height":700}' > /tm
 $vibro preset paper | python3 -c '
 import json,sys; s=json.load(sys.stdin); s.update(json.load(open("/tmp/vibro_cyl_patch.json"))); print(json.dumps(s))' \
   | $vibro render - -o docs/images/paper-cylinder.png > /dev/null
+# The paper scene for print (README, "Figures for print"): a journal's single column (85 mm: the
+# portrait of pellet 1 over phi(t)) and double column (170 mm: all three panels), tick labels of
+# 8 pt, as PDF and as 300 dpi PNG.
+print_size() {  # NAME PLOTS-JSON FIGURE-JSON
+  $vibro preset paper | python3 -c '
+import json,sys; s=json.load(sys.stdin); plots=json.loads(sys.argv[1])
+s["plots"]=[s["plots"][i] for i in plots]; s["figure"]=json.loads(sys.argv[2]); print(json.dumps(s))' \
+    "$2" "$3" > /tmp/vibro_print_scene.json
+  for ext in png pdf; do
+    $vibro render /tmp/vibro_print_scene.json -o "docs/images/$1.$ext" > /dev/null
+  done
+}
+print_size paper-85mm '[0, 2]' '{"width_mm": 85, "height_mm": 120, "font_pt": 8, "dpi": 300}'
+print_size paper-170mm '[0, 1, 2]' '{"width_mm": 170, "height_mm": 130, "font_pt": 8, "dpi": 300}'
 $vibro orbit --preset impact-oscillator -o docs/images/orbit-branch-impact-oscillator.png
 # Bifurcation diagrams, regime and impact maps (docs/SWEEPS.md).
 $vibro sweep --preset impact-oscillator -o docs/images/bifurcation-impact-oscillator.png

@@ -44,7 +44,7 @@ std::string canonical(const Scene& scene, bool with_figure) {
   json j = scene_to_json(scene);
   for (const char* key : {"name", "description", "assumptions"}) j.erase(key);
   if (!with_figure) {
-    for (const char* key : {"plots", "width", "height"}) j.erase(key);
+    for (const char* key : {"plots", "width", "height", "figure"}) j.erase(key);
   }
   return j.dump();
 }
@@ -171,7 +171,8 @@ void Api::render_post(const httplib::Request& req, httplib::Response& res) {
 void Api::render_get(const httplib::Request& req, httplib::Response& res) {
   SceneOrApiError scene =
       scene_from_query(req, config_.limits,
-                       {"format", "t_end", "width", "height", "pellet", "method", "rtol", "atol"});
+                       {"format", "t_end", "width", "height", "width_mm", "height_mm", "font_pt",
+                        "dpi", "pellet", "method", "rtol", "atol"});
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   render(std::get<Scene>(scene), req, res);
 }
@@ -387,9 +388,7 @@ void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Res
                                 " section points are more than the server draws as a vector "
                                 "image (" +
                                 std::to_string(most) + "): ask format=png"});
-  FigureSpec figure;
-  figure.width = job.scene.figure.width;
-  figure.height = job.scene.figure.height;
+  FigureSpec figure = job.scene.figure;  // its size, and its print size if it has one
   figure.plots = {plot};
   // Drawn on a worker, not the connection's thread: as many drawings at once as workers.
   auto draw = [figure, model = job.scene.model, spec, sweep = job.sweep,

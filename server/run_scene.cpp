@@ -159,9 +159,7 @@ JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> im
   sweep.deadline_ms = limits.deadline_ms;
   const WorkPrecisionReport report = work_precision(scene.model, options, sweep);
   if (!image) return Produced{work_precision_to_json(report).dump(), "application/json", {}};
-  FigureSpec figure;
-  figure.width = scene.figure.width;
-  figure.height = scene.figure.height;
+  FigureSpec figure = scene.figure;  // its size, and its print size if it has one
   figure.plots = {WorkPrecisionPlot{}};
   RenderResult drawn = render_figure(figure, scene.model, RunResult{}, *image, {&report});
   if (!drawn.ok()) return ApiError::from(*drawn.error);

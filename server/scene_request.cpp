@@ -56,6 +56,11 @@ std::optional<ApiError> apply_override(json& scene, const std::string& name,
     const auto x = parse_integer(value);
     if (!x) return bad("an integer (px)");
     scene[name] = *x;
+  } else if (name == "width_mm" || name == "height_mm" || name == "font_pt" || name == "dpi") {
+    // The print size (API.md): the scene's "figure" object, made when the query names one.
+    const auto x = parse_number(value);
+    if (!x) return bad("a number");
+    scene["figure"][name] = *x;
   } else if (name == "pellet") {
     const auto x = parse_integer(value);
     if (!x) return bad("a pellet index (from 0)");

@@ -52,6 +52,15 @@ struct Limits {
   int plots = 8;
   // Branches a phase panel may pick by number: each is looked up among the run's branches.
   int plot_branches = 10'000;
+  // A figure's print size (a scene's "figure", render/plot_spec.h PrintSize): each side in mm,
+  // its text in pt, its resolution in dots per inch. The pixels they make (side / 25.4 · dpi)
+  // are held to width, height and pixels above.
+  double print_mm_min = 10.0;  // less leaves no room for the axes' labels
+  double print_mm_max = 1000.0;
+  double font_pt_min = 4.0;  // below what a journal prints legibly
+  double font_pt_max = 48.0;
+  double dpi_min = 50.0;
+  double dpi_max = 2400.0;
 
   // --- Sweeps (core/analysis/sweep.h) ---
   // Runs of one sweep (values × values2 × directions × initial states): every value's model is

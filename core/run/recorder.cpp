@@ -57,10 +57,13 @@ int Recorder::pieces(const Vec& start, const Vec& inside, double theta, const Ve
 
 void Recorder::sample(double t, const Vec& y) {
   if (t > record_until_) return;
-  // The same state twice (a run that ends where its last step did) is one sample; at an
-  // instant the states before and after differ, and every pellet keeps both, so that the
-  // pellets' samples stay at the same times.
-  if (t == last_t_ && y == last_y_) return;
+  // The same state twice (a run that ends where its last step did) is one sample, unless it
+  // opens a branch an instant ended (an instant that changes no speed, as a reversal): each
+  // branch begins at its event's state. At an instant every pellet keeps both states, so that
+  // the pellets' samples stay at the same times.
+  const bool opens = std::any_of(tracks_.begin(), tracks_.end(),
+                                 [&](const PelletTrack& track) { return !open_[track.pellet]; });
+  if (t == last_t_ && y == last_y_ && !opens) return;
   last_t_ = t;
   last_y_ = y;
   const bool on_stride = ++calls_ % stride_ == 0;

@@ -53,8 +53,9 @@ struct LastImpact {
 };
 
 struct Summary {
-  int limiter_impacts = 0;  // listed limiter impacts
-  int collisions = 0;
+  // Each listed impact counts once, by its kind: the three add up to the impacts.
+  int limiter_impacts = 0;    // listed limiter impacts
+  int collisions = 0;         // with a group's plastic stop against a limiter (a cascade's limit)
   int chatter_sequences = 0;  // chatter events, each summing infinitely many impacts
   std::vector<std::vector<int>> impacts_by_limiter;  // [limiter][pellet], listed impacts
   LastImpact last_impact;

@@ -23,8 +23,9 @@ Summary summarize(const Model& model, const std::vector<Event>& sorted_events) {
       ++s.limiter_impacts;
       ++s.impacts_by_limiter[e.limiter][e.pellets[0]];
     } else if (e.kind == EventKind::collision) {
+      // Also a group's plastic stop against the limiter it names (a cascade's limit): one
+      // impact, counted once.
       ++s.collisions;
-      if (e.limiter >= 0) ++s.limiter_impacts;  // a group's plastic impact into a limiter
     } else {
       ++s.chatter_sequences;
     }

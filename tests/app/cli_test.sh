@@ -128,6 +128,13 @@ if "$vibro" preset paper | "$vibro" simulate - --t-end 0.5 --t-end 0.2 --method 
 import json; r = json.load(open("run.json")); assert r["stats"]["t_reached"] <= 0.2 + 1e-12, r["stats"]'
 then pass "simulate - with overrides"; else fail "simulate - with overrides"; fi
 
+# work-precision -o draws the diagram and prints where it went, not the table (some 400 lines).
+if "$vibro" work-precision --preset paper --t-end 1 --repeats 1 -o wp.png > out.txt && python3 -c '
+import json; lines = open("out.txt").read().splitlines(); assert len(lines) == 1, len(lines)
+r = json.loads(lines[0]); assert r["image"] == "wp.png" and r["bytes"] > 1000, r'
+then pass "work-precision -o prints where the diagram went"
+else fail "work-precision -o prints where the diagram went"; head -5 out.txt; fi
+
 # A scene that cannot be read is named with the reason, by every command that reads one.
 mkdir -p adir
 for command in simulate render work-precision sweep orbit; do

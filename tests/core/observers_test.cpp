@@ -6,10 +6,12 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 #include <vector>
 
 #include "core/analysis/checked_run.h"
 #include "core/run/simulate.h"
+#include "io/presets.h"
 #include "tests/core/scenes.h"
 
 namespace vibro {
@@ -127,6 +129,28 @@ TEST(Observers, TheEventLogKeepsEventsFromItsStartAndTheBudgetCountsThoseAlone) 
   // A budget of the kept events alone lets the run reach its end.
   scene.sim.max_events = static_cast<long>(late.events.size()) + 1;
   EXPECT_EQ(simulate(scene.model, scene.sim).stats.termination, Termination::completed);
+}
+
+TEST(Observers, TheSummarysCountsAddUp) {
+  // Each impact counts once, in its kind's total: the limiter impacts, collisions and chatter
+  // sequences add up to the index of the last impact, and the limiter impacts per limiter and
+  // pellet to the limiter impacts. mass-ratio's last impact, a cascade of two pellets taken to
+  // its plastic limit against a limiter (a collision event naming the limiter), was counted as
+  // a collision and a limiter impact: "impact 376 (188 limiter impacts, 189 collisions)", with
+  // impacts_by_limiter summing to 187.
+  for (const PresetText& p : presets()) {
+    const Scene scene = testing::preset(std::string(p.name));
+    SimOptions o = scene.sim;
+    o.check = false;
+    const RunResult r = simulate(scene.model, o);
+    const Summary& s = r.summary;
+    EXPECT_EQ(s.limiter_impacts + s.collisions + s.chatter_sequences, s.last_impact.index)
+        << p.name;
+    int by_limiter = 0;
+    for (const auto& row : s.impacts_by_limiter)
+      for (int n : row) by_limiter += n;
+    EXPECT_EQ(by_limiter, s.limiter_impacts) << p.name;
+  }
 }
 
 TEST(Observers, ThePathHoldsEveryInstantUpToItsLimit) {

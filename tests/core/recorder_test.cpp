@@ -9,10 +9,12 @@
 #include <cmath>
 #include <limits>
 #include <set>
+#include <string>
 #include <tuple>
 
 #include "core/analysis/checked_run.h"
 #include "core/model/first_integral.h"
+#include "io/presets.h"
 #include "tests/core/scenes.h"
 
 namespace vibro {
@@ -75,6 +77,62 @@ TEST(Recorder, EachBranchAdvancesInTime) {
                 << ": two samples at t = " << t << ", not an instant";
           }
         }
+  }
+}
+
+bool touches(const Event& e, int pellet) {
+  return std::find(e.pellets.begin(), e.pellets.end(), pellet) != e.pellets.end();
+}
+
+// The event whose outcome leaves the instant at t for `pellet`: the last at t that touches it,
+// or the chatter it starts (listed at its accumulation time, the pellet at rest from t on).
+const Event* leaving_event(const RunResult& run, double t, int pellet) {
+  const Event* found = nullptr;
+  for (const Event& e : run.events) {
+    if (!touches(e, pellet)) continue;
+    if (e.t == t) {
+      found = &e;
+    } else if (found && e.t > t) {
+      const bool chatter = e.kind == EventKind::chatter &&
+                           std::abs(e.dphi_before.front() - found->dphi_after.back()) <= 1e-12;
+      return chatter ? &e : found;
+    }
+  }
+  return found;
+}
+
+TEST(Recorder, EveryBranchBeginsAtItsEventsState) {
+  // A branch after the first opens at the instant that ended the one before, with the state that
+  // leaves it: a reversal (whose state does not change) once opened the next branch a step later,
+  // so that portraits never reached dphi = 0 at a turning point (loop: branch 2 began 0.017 s
+  // after its reversal, at dphi = -0.21).
+  for (const PresetText& p : presets()) {
+    const Scene scene = testing::preset(std::string(p.name));
+    SimOptions o = scene.sim;
+    o.check = false;
+    o.record.assign(scene.model.size(), true);
+    const RunResult r = simulate(scene.model, o);
+    for (const PelletTrack& track : r.tracks)
+      for (std::size_t j = 1; j < track.branches.size(); ++j) {
+        const std::string where = std::string(p.name) + ", pellet " +
+                                  std::to_string(track.pellet + 1) + ", branch " +
+                                  std::to_string(track.branches[j].index);
+        const Sample& first = track.branches[j].samples.front();
+        const Sample& end = track.branches[j - 1].samples.back();
+        EXPECT_EQ(first.t, end.t) << where << " begins after the one before ends";
+        const Event* e = leaving_event(r, end.t, track.pellet);
+        ASSERT_NE(e, nullptr) << where << ": no event at t = " << end.t;
+        const std::size_t k =
+            std::find(e->pellets.begin(), e->pellets.end(), track.pellet) - e->pellets.begin();
+        // The event lists its speeds as its impact law gave them; the state then snaps onto the
+        // contacts it leaves (a rest, a stick): equal to within rounding.
+        const double dphi = e->dphi_after.at(k);
+        EXPECT_NEAR(first.dphi, dphi, 1e-9 * (1.0 + std::abs(dphi)))
+            << where << " at t = " << end.t;
+        if (k == 0)
+          EXPECT_NEAR(first.phi, e->phi, 1e-9 * (1.0 + std::abs(e->phi)))
+              << where << " at t = " << end.t;
+      }
   }
 }
 

@@ -5,6 +5,7 @@
 
 #include <cmath>
 #include <limits>
+#include <string>
 
 namespace vibro {
 namespace {
@@ -42,6 +43,25 @@ TEST(ResultJson, HasTheApiShapeAndNoNonFiniteNumbers) {
     EXPECT_TRUE(j["stats"].contains(key)) << key;
   EXPECT_EQ(j.dump().find("NaN"), std::string::npos);
   EXPECT_FALSE(j.contains("trajectories"));
+}
+
+TEST(ResultJson, TheAnswerCountsInTheSingularWhenThereIsOne) {
+  // "1 impacts", "1 limiter impacts" and "1 collisions" were printed.
+  Model m;
+  m.pellets.resize(1);
+  RunResult run;
+  run.summary.final = {{0.5, 1.0, PelletState::sliding, -1}};
+  run.summary.last_impact = {1, 0.1};
+  run.summary.limiter_impacts = 1;
+  run.summary.collisions = 1;
+  run.summary.ends_vibro_impact = false;
+  run.stats.t_reached = 2.0;
+  const std::string answer = result_to_json(run, m)["summary"]["answer"];
+  EXPECT_NE(answer.find("1 impact (1 limiter impact, 1 collision)"), std::string::npos) << answer;
+  run.summary.last_impact = {2, 0.2};
+  run.summary.collisions = 0;
+  const std::string two = result_to_json(run, m)["summary"]["answer"];
+  EXPECT_NE(two.find("2 impacts (1 limiter impact, 0 collisions)"), std::string::npos) << two;
 }
 
 }  // namespace

@@ -269,6 +269,32 @@ TEST(RealRun, ThePortraitMarksAChatterSequenceToRest) {
   EXPECT_GT(collision, 0);
 }
 
+// A jump between two branches that no listed impact explains is not marked as an impact (it
+// was marked a limiter impact, the default kind); and a pellet that sticks and slips inside its
+// friction cone with no limiter (the rest-in-cone preset) shows no impact mark or legend entry.
+TEST(RealRun, AJumpWithoutAnImpactIsNotMarkedAsOne) {
+  PelletTrack track{0, {{1, {{0.0, 0.1, 0.0}, {1.0, 0.1, 0.0}}}, {2, {{1.0, 0.1, 0.5}}}}};
+  const auto jumps = render::velocity_jumps(track, {}, PhasePlot{});
+  ASSERT_EQ(jumps.size(), 1u);
+  EXPECT_EQ(jumps[0].mark, nullptr);
+
+  Model cone;
+  cone.R = 0.5;
+  cone.alpha0 = 0.05;
+  cone.pellets = {{0.2, 0.03, 0.0, {0.15, 2.0, 0.0}}};
+  SimOptions o;
+  o.t_end = 10.0;
+  o.check = false;
+  o.record = {true};
+  const RunResult run = simulate(cone, o);
+  for (const Event& e : run.events) EXPECT_EQ(render::event_mark(e.kind), nullptr);
+  for (const render::Jump& j : render::velocity_jumps(run.tracks.at(0), run.events, PhasePlot{}))
+    EXPECT_EQ(j.mark, nullptr) << "at phi = " << j.before.x;
+  const RenderResult svg = render_figure(one_plot(PhasePlot{}), cone, run, ImageFormat::svg);
+  ASSERT_TRUE(svg.ok());
+  EXPECT_EQ(testing::count_of(std::string(svg.bytes.begin(), svg.bytes.end()), "impact"), 0);
+}
+
 // A scene sets the axes: a swing of ±0.3 rad on a φ axis of [−1, 1] fills the middle of the
 // plot only; wrapped, the same swing a turn on is drawn on one turn, [−π, π).
 TEST(RealRun, AScenesAxisLimitsAndWrapHold) {

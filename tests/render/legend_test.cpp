@@ -110,5 +110,34 @@ TEST(LegendFit, ALegendWithNoFreeCornerIsReportedAndMovedOutOfThePlot) {
             100);
 }
 
+// Above its plot a legend lays its entries in rows across the plot's width, so that it takes the
+// height of as few rows as fit (it was one entry a row, a tower over a wide plot: the φ(t) panel
+// of an 85 mm figure lost half its height to it); in one row when the width holds them all, one
+// entry a row at a width of 0.
+TEST(LegendGrid, AboveThePlotEntriesFillRowsAcrossItsWidth) {
+  SurfacePtr surface(cairo_image_surface_create(CAIRO_FORMAT_RGB24, 10, 10));
+  CairoPtr cr(cairo_create(surface.get()));
+  const Style style = style_for(1200, 800);
+  const std::vector<LegendEntry> entries = {{"pellet 1", kInk},
+                                            {"pellet 2", kInk},
+                                            {"limiter impact", kInk, Swatch::marker},
+                                            {"collision", kInk, Swatch::marker}};
+  const LegendGrid column = legend_grid(cr.get(), entries, style, 0.0);
+  const LegendGrid wide = legend_grid(cr.get(), entries, style, 2000.0);
+  const LegendGrid narrow = legend_grid(cr.get(), entries, style, 0.6 * wide.size.x);
+  ASSERT_EQ(column.at.size(), 4u);
+  EXPECT_EQ(legend_size(cr.get(), entries, style).y, column.size.y);
+  for (std::size_t k = 1; k < 4; ++k) {
+    EXPECT_EQ(column.at[k].x, column.at[0].x);
+    EXPECT_GT(column.at[k].y, column.at[k - 1].y);
+    EXPECT_EQ(wide.at[k].y, wide.at[0].y);  // one row
+    EXPECT_GT(wide.at[k].x, wide.at[k - 1].x);
+  }
+  EXPECT_LT(wide.size.y, 0.4 * column.size.y);
+  EXPECT_GT(narrow.size.y, wide.size.y);  // two rows or more
+  EXPECT_LT(narrow.size.y, column.size.y);
+  EXPECT_LE(narrow.size.x, 0.6 * wide.size.x);
+}
+
 }  // namespace
 }  // namespace vibro::render

@@ -3,6 +3,7 @@
 // PDF; without a sweep they are refused.
 #include <gtest/gtest.h>
 
+#include <set>
 #include <string>
 
 #include "core/analysis/sweep.h"
@@ -109,6 +110,39 @@ TEST(SweepPlots, TheRegimeMapsLegendAndSeamsHideNoCell) {
     for (int x = static_cast<int>(area.right()) + 4; x < image.width; ++x)
       swatch += image.argb[static_cast<std::size_t>(y) * image.width + x] == period_1 ? 1 : 0;
   EXPECT_GT(swatch, 50);
+}
+
+// Periods above 8 share one colour and one legend entry, "period > 8", in a colour of its own:
+// the legend listed it once per period above 8, in the grey of "not periodic".
+TEST(SweepPlots, TheRegimeMapsLongPeriodsAreOneEntryApartFromNotPeriodic) {
+  Swept s;
+  s.spec.axis = {"model.pellets[0].Omega", 3.0, 8.0, 4};
+  s.spec.axis2 = SweepAxis{"model.pellets[0].F0", 0.1, 0.5, 2};
+  const int periods[] = {1, 9, 10, 12, 0, 0, 9, 1};
+  for (int j = 0; j < 2; ++j)
+    for (int i = 0; i < 4; ++i) {
+      SweepRun run;
+      run.value = s.spec.axis.value(i);
+      run.value2 = s.spec.axis2->value(j);
+      run.period = periods[4 * j + i];
+      s.result.runs.push_back(run);
+    }
+  const RenderResult svg = draw(SweepView::regime_map, s, ImageFormat::svg);
+  ASSERT_TRUE(svg.ok());
+  const std::string text(svg.bytes.begin(), svg.bytes.end());
+  EXPECT_EQ(testing::count_of(text, "period &gt; 8"), 1);
+  EXPECT_EQ(testing::count_of(text, "not periodic"), 1);
+
+  const RenderResult png = draw(SweepView::regime_map, s, ImageFormat::png);
+  ASSERT_TRUE(png.ok());
+  const testing::Decoded image = testing::decode_png(png.bytes);
+  const render::Rect area =
+      render::figure_layout(figure_of(SweepView::regime_map)).front().plots.front();
+  std::set<std::uint32_t> colours;
+  for (int y = static_cast<int>(area.y) + 2; y < static_cast<int>(area.bottom()) - 2; ++y)
+    for (int x = static_cast<int>(area.x) + 2; x < static_cast<int>(area.right()) - 2; ++x)
+      colours.insert(image.argb[static_cast<std::size_t>(y) * image.width + x]);
+  EXPECT_EQ(colours.size(), 3u);  // period 1, period > 8, not periodic
 }
 
 TEST(SweepPlots, WithoutASweepTheyAreRefused) {

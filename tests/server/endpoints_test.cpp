@@ -180,6 +180,27 @@ TEST_F(Endpoints, GetRenderOverridesSizeAndPellet) {
   EXPECT_NE(one->body, two->body);
 }
 
+TEST_F(Endpoints, GetRenderTakesAPrintSize) {
+  // 85 mm × 60 mm at 150 dpi: 502 × 354 px; a PDF page of 240.9 × 170.1 pt.
+  auto png = server->client().Get("/api/render?preset=paper&width_mm=85&height_mm=60&dpi=150");
+  ASSERT_TRUE(png);
+  ASSERT_EQ(png->status, 200) << png->body;
+  EXPECT_EQ(png_size(png->body), std::make_pair(502, 354));
+  auto pdf = server->client().Get("/api/render?preset=paper&format=pdf&width_mm=85&font_pt=7");
+  ASSERT_TRUE(pdf);
+  ASSERT_EQ(pdf->status, 200) << pdf->body;
+  EXPECT_NE(pdf->body.find("/MediaBox [ 0 0 240.96 160.56 ]"), std::string::npos);
+  // A bad value names its field of the scene's "figure"; a number that is not one, the parameter.
+  auto big = server->client().Get("/api/render?preset=paper&width_mm=170&dpi=2000");
+  ASSERT_TRUE(big);
+  EXPECT_EQ(big->status, 400);
+  EXPECT_EQ(json::parse(big->body, nullptr, false).value("field", ""), "figure.dpi");
+  auto nan = server->client().Get("/api/render?preset=paper&width_mm=wide");
+  ASSERT_TRUE(nan);
+  EXPECT_EQ(nan->status, 400);
+  EXPECT_EQ(json::parse(nan->body, nullptr, false).value("field", ""), "width_mm");
+}
+
 TEST_F(Endpoints, HeadAnswersWithoutABody) {
   auto res = server->client().Head("/api/render?preset=paper&width=400&height=300");
   ASSERT_TRUE(res);

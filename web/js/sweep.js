@@ -31,7 +31,9 @@ export function defaultSweep(scene) {
   const i = Math.max(0, pellets.findIndex((p) => (p.Omega ?? 0) > 0 && (p.F0 ?? 0) !== 0));
   const parameter = pellets[i] && (pellets[i].Omega ?? 0) > 0 ? `model.pellets[${i}].Omega` : `model.pellets[0].F0`;
   const v = valueAt(scene, parameter) ?? 1;
-  return { parameter, from: v / 2, to: v * 1.5, count: 100, transient: 50, record: 20, section: "stroboscopic", continuation: "none" };
+  // To 12 significant digits: 1.5 · 3.3 is 4.949999999999999 in binary, and the form shows it.
+  const tidy = (x) => Number(x.toPrecision(12));
+  return { parameter, from: tidy(v / 2), to: tidy(v * 1.5), count: 100, transient: 50, record: 20, section: "stroboscopic", continuation: "none" };
 }
 
 async function json(response) {
