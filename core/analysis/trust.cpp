@@ -321,7 +321,8 @@ ShadowOptions check_options(const SimOptions& run) {
   //
   // DOP853 (and `auto` on it) checks itself: DOPRI5, checking it above rtol 1e-8 at a
   // thirtieth of the tolerance (a hundredth would have cost 3.3×), erred as much as DOP853 and
-  // cancelled its error (trust scan, seed 4, scene 52: 3e-3 s estimated at 1.1e-4 s). DOP853's
+  // cancelled its error (3e-3 s estimated at 1.1e-4 s; ctest
+  // trust_scene.dop853_checked_by_dopri5_cancelled_its_error). DOP853's
   // run and shadow share their steps only where the longest step holds both, and the shadow's is
   // half the run's: a capped step errs 2⁹ times less (2⁶ for DOPRI5). Held alike, a run at rtol
   // 1e-6 and its shadow at 1e-8 took the same steps of 1/Ω and shared an error a chaotic
@@ -333,10 +334,11 @@ ShadowOptions check_options(const SimOptions& run) {
   //
   // The shadow's error must be well below the run's, whatever the methods' error constants
   // and whatever luck a run has: it runs at a hundredth of both tolerances (at a thirtieth
-  // DOP853 missed a lucky run's error: seed 7, scene 809, the run at rtol 1e-8 erred 3.6e-10 s,
-  // the shadow 3.3e-10 s as much). Over 640,000 runs of trust_scan (seeds 1-32) these choices
-  // took the estimates ten times short from 21 to 17 at the same cost (median 2.25× the bare
-  // run for DOP853, 2.11× for DOPRI5, 1.31× for Radau IIA).
+  // DOP853 missed a lucky run's error: the run at rtol 1e-8 erred 3.6e-10 s, the shadow
+  // 3.3e-10 s as much; ctest trust_scene.a_shadow_at_a_thirtieth_erred_as_much_as_a_lucky_run).
+  // Over 640,000 runs of trust_scan (seeds 1-32) these choices took the estimates ten times short
+  // from 21 to 17 at the same cost (median 2.25× the bare run for DOP853, 2.11× for DOPRI5, 1.31×
+  // for Radau IIA).
   if (run.method == Method::dopri5) o.method = Method::dop853;
   if (run.method == Method::radau5) o.method = Method::automatic;
   if (run.method == Method::automatic && auto_explicit_for(run.rtol) == AutoExplicit::dopri5)

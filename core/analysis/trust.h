@@ -32,17 +32,17 @@ ShadowOptions check_options(const SimOptions& run);
 // The shadow's scene: the run's, its initial speeds 64 ulps faster and the angles of the pellets
 // that move 64 ulps ahead. Where the run and its shadow take the same steps (flights cut short by
 // events, one step each at any tolerance), they round alike and agree about what round-off,
-// amplified by a chaotic chain of impacts, has already moved (trust scan seed 7, scene 534:
-// DOP853 at rtol 1e-10 and its shadow vouched for a turn where a reference listed a collision;
-// now their trust ends before). Speeds alone do not move a chain that starts at once: a pellet
-// near its limiter strikes it at once, and run and shadow then agree far below the round-off a
-// chaotic cascade amplifies (Trust.AShadowOfAnImpactAtOnceStrikesARoundOffApart). Rest
-// stays rest, contacts stay contacts, and the shadow's answer moves by round-off where the scene
-// does not amplify it. Over trust_scan seeds 1-32 (640,000 runs) the angles took the estimates
-// ten times short from 24 to 13 and the wrong events vouched for from 8 to 4, with the share
-// trusted to the end unchanged (98.49 %). Moving the angles of pellets at rest too broke
-// equilibria (a pellet at rest at the bottom turned at 7e-14 s: 2.4 % of the runs lost their
-// trust), and moving the forcing's phase cost 1 %.
+// amplified by a chaotic chain of impacts, has already moved (DOP853 at rtol 1e-10 and a
+// shadow started with it vouched for a turn where a reference listed a collision; ctest
+// trust_scene.a_shadow_started_with_the_run_shared_its_chaotic_error). Speeds alone do not move a
+// chain that starts at once: a pellet near its limiter strikes it at once, and run and shadow then
+// agree far below the round-off a chaotic cascade amplifies
+// (Trust.AShadowOfAnImpactAtOnceStrikesARoundOffApart). Rest stays rest, contacts stay contacts,
+// and the shadow's answer moves by round-off where the scene does not amplify it. Over trust_scan
+// seeds 1-32 (640,000 runs) the angles took the estimates ten times short from 24 to 13 and the
+// wrong events vouched for from 8 to 4, with the share trusted to the end unchanged (98.49 %).
+// Moving the angles of pellets at rest too broke equilibria (a pellet at rest at the bottom turned
+// at 7e-14 s: 2.4 % of the runs lost their trust), and moving the forcing's phase cost 1 %.
 Model check_model(const Model& model);
 
 // A run's events instant by instant, as runs are compared: the collisions of one instant as one
