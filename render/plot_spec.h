@@ -3,8 +3,8 @@
 // draws them. Indices count from 0.
 //
 // A new kind: its struct here and in the PlotSpec variant, its reader and writer in
-// io/plot_json.cpp, its drawer (render/panel.h and its own file) and its case in
-// render/figure.cpp; the compiler names every visitor that misses it.
+// io/plot_json.cpp, its checks in render/plot_validate.cpp, its drawer (render/panel.h and its
+// own file) and its case in render/figure.cpp; the compiler names every visitor that misses it.
 #pragma once
 
 #include <limits>
