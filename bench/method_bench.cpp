@@ -8,6 +8,7 @@
 
 #include "bench_scenes.h"
 #include "core/analysis/checked_run.h"
+#include "timed_run.h"
 
 namespace vibro::bench {
 namespace {
@@ -18,20 +19,6 @@ constexpr const char* kPresets[] = {"paper",        "chatter",        "frictionl
                                     "rest-in-cone", "stiff-friction", "tiny-radius"};
 constexpr Method kMethods[] = {Method::dopri5, Method::dop853, Method::radau5, Method::automatic};
 constexpr double kRtols[] = {1e-6, 1e-9, 1e-12};
-
-void run(benchmark::State& state, const Scene& scene, SimOptions options) {
-  long steps = 0;
-  for (auto _ : state) {
-    const RunResult r = simulate(scene.model, options);
-    if (r.stats.termination != Termination::completed) {
-      state.SkipWithError(r.stats.message.c_str());
-      return;
-    }
-    steps = r.stats.steps;
-    benchmark::DoNotOptimize(r);
-  }
-  state.counters["steps"] = static_cast<double>(steps);
-}
 
 // Registered from main: the presets are parsed from tables that static initialisers fill.
 void register_benchmarks() {
@@ -49,7 +36,7 @@ void register_benchmarks() {
         const std::string id = std::string("Method/") + name + "/" +
                                std::string(method_name(method)) + "/rtol:" + label;
         benchmark::RegisterBenchmark(id.c_str(), [scene, o](benchmark::State& s) {
-          run(s, scene, o);
+          run_counting_steps(s, scene, o);
         })->Unit(benchmark::kMillisecond);
       }
   }

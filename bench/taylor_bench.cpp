@@ -11,6 +11,7 @@
 #include "bench_scenes.h"
 #include "core/analysis/checked_run.h"
 #include "core/analysis/sweep.h"
+#include "timed_run.h"
 
 namespace vibro::bench {
 namespace {
@@ -32,20 +33,6 @@ SimOptions options_for(const Scene& scene, Method method, double rtol) {
   o.atol = rtol / 100;
   o.check = false;
   return o;
-}
-
-void run(benchmark::State& state, const Scene& scene, const SimOptions& options) {
-  long steps = 0;
-  for (auto _ : state) {
-    const RunResult r = simulate(scene.model, options);
-    if (r.stats.termination != Termination::completed) {
-      state.SkipWithError(r.stats.message.c_str());
-      return;
-    }
-    steps = r.stats.steps;
-    benchmark::DoNotOptimize(r);
-  }
-  state.counters["steps"] = static_cast<double>(steps);
 }
 
 void sweep(benchmark::State& state, const Scene& scene, const SimOptions& options) {
@@ -70,7 +57,7 @@ void register_benchmarks() {
         const SimOptions o = options_for(scene, method, rtol);
         const std::string id = std::string("Taylor/") + name + "/" + label(method, rtol);
         benchmark::RegisterBenchmark(id.c_str(), [scene, o](benchmark::State& s) {
-          run(s, scene, o);
+          run_counting_steps(s, scene, o);
         })->Unit(benchmark::kMillisecond);
       }
   }
