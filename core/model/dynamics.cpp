@@ -95,18 +95,25 @@ void SegmentDynamics::evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const 
       for (int i : body.members) F += force(i);
     const double q = dphi * dphi + law_.gR * c;  // normal force per unit mass, over R
     const int side = normal_side_[b];
-    const double acc = law_.acceleration({F, mass_[b], damping_[b]}, c, sn, dphi, s, side);
+    const double C = damping_[b];  // zero exactly when no member is damped (c ≥ 0)
+    const double acc = law_.acceleration({F, mass_[b], 0.0}, c, sn, dphi, s, side);
     const double n = R * (paper ? q : side * q);  // g cos phi + R dphi², or its magnitude
     for (int i : body.members) {
-      const Pellet& p = model_.pellets[i];
+      const double m = model_.pellets[i].m;
       const double Fi = alone ? F : force(i);
       dydt[phi_index(i)] = y[dphi_index(i)];
       dydt[dphi_index(i)] = acc;
-      // The force's and friction's work, less what the damper takes, m R² c dphi².
-      dydt[work_index(i)] = R * dphi * (Fi - p.m * s * law_.mu * n) - damper_power(p, R, dphi);
+      dydt[work_index(i)] = R * dphi * (Fi - m * s * law_.mu * n);  // the force's and friction's
     }
+    // The dampers, in a loop of their own, as SlidingLaw::acceleration subtracts them: the
+    // undamped loop above stays as lean as the hot path needs (no register spilled).
+    if (C != 0.0)
+      for (int i : body.members) {
+        dydt[dphi_index(i)] = acc - C * dphi;
+        dydt[work_index(i)] -= damper_power(model_.pellets[i], R, dphi);
+      }
     if (!J) continue;
-    const SlidingLaw::Slopes dacc = law_.slopes(damping_[b], c, sn, dphi, s, side);
+    const SlidingLaw::Slopes dacc = law_.slopes(C, c, sn, dphi, s, side);
     for (int i : body.members) {
       (*J)(2 * i, 2 * i + 1) = 1.0;
       (*J)(2 * i + 1, 2 * L) = dacc.phi;

@@ -57,14 +57,15 @@ struct SlidingLaw {
   // by its magnitude: a motion interval keeps one side, so its equations stay smooth where the
   // force changes sign (the normal watch ends the interval there). An integrator stepping over
   // the kink of |N| errs by the kink, whatever its error estimate says.
-  // The damping is subtracted last, so an undamped body's acceleration is that of the law alone
-  // to the bit.
+  // The damping is subtracted last, and only when there is some, so an undamped body's
+  // acceleration is that of the law alone, to the bit and at its cost (the hot loop of a run).
   double acceleration(const BodyLoad& load, double cos_phi, double sin_phi, double dphi, int s,
                       int side) const {
     const double F = load.F, M = load.M;
-    return (paper ? F / (M * R) - s * mu * dphi * dphi - gR * (sin_phi + s * mu * cos_phi)
-                  : F / (M * R) - gR * sin_phi - s * mu * side * (dphi * dphi + gR * cos_phi)) -
-           load.C * dphi;
+    const double a =
+        paper ? F / (M * R) - s * mu * dphi * dphi - gR * (sin_phi + s * mu * cos_phi)
+              : F / (M * R) - gR * sin_phi - s * mu * side * (dphi * dphi + gR * cos_phi);
+    return load.C == 0.0 ? a : a - load.C * dphi;
   }
   // Its partial derivatives in phi and dphi, which depend on the place and speed alone (and on
   // the body's damping C, 1/s).
