@@ -16,8 +16,10 @@ enum class RunTable { events, trajectory };
 // "events" or "trajectory"; nothing for another name.
 std::optional<RunTable> run_table_named(std::string_view name);
 
-// events: t,kind,pellets,limiter,phi,dphi_before,dphi_after, one row per event, the lists of an
-// event's pellets and speeds joined by ';' and limiter −1 where none;
+// events: event,t,kind,pellet,limiter,phi,dphi_before,dphi_after, one value per cell: a row for
+// each pellet an event touches (a collision has two, a stuck body's impact one per member), its
+// speeds before and after, the rows of one event sharing its index `event` (from 0), t, kind,
+// limiter (−1 where none) and phi;
 // trajectory: t,pellet,branch,phi,dphi, one row per sample of the recorded branches.
 // Numbers to 17 significant digits: they read back as the same doubles.
 std::string run_csv(const RunResult& run, RunTable table);

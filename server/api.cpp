@@ -218,7 +218,7 @@ void stream_sweep_result(const Job& job, bool csv, httplib::Response& res) {
       AccessLog::streamed(piece.size());
       return sink.write(piece.data(), piece.size());
     };
-    const bool whole = csv ? write_sweep_result_csv(*result, to_sink)
+    const bool whole = csv ? write_sweep_result_csv(spec, *result, to_sink)
                            : write_sweep_result_json(spec, *result, to_sink);
     if (whole) sink.done();
     return whole;  // false: the client went away, the connection ends

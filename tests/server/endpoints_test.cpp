@@ -4,6 +4,7 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <vector>
 
 #include "tests/server/test_server.h"
 
@@ -95,17 +96,26 @@ TEST_F(Endpoints, SimulateGivesEventsOrTheTrajectoryAsCsv) {
   std::istringstream rows(res->body);
   std::string line;
   std::getline(rows, line);
-  EXPECT_EQ(line, "t,kind,pellets,limiter,phi,dphi_before,dphi_after");
-  std::size_t k = 0;
-  for (; std::getline(rows, line); ++k) {
+  EXPECT_EQ(line, "event,t,kind,pellet,limiter,phi,dphi_before,dphi_after");
+  // One value per cell: a row per pellet of an event, the event's index first.
+  std::size_t rows_read = 0, k = 0;
+  for (; std::getline(rows, line); ++rows_read) {
+    EXPECT_EQ(line.find(';'), std::string::npos) << line;
+    std::vector<std::string> cells;
+    for (std::istringstream split(line); std::getline(split, cells.emplace_back(), ',');) {
+    }
+    cells.pop_back();
+    ASSERT_EQ(cells.size(), 8u) << line;
+    k = std::stoul(cells[0]);
     ASSERT_LT(k, events.size());
-    EXPECT_EQ(std::stod(line.substr(0, line.find(','))), events[k]["t"].get<double>());
-    EXPECT_NE(line.find("," + events[k]["kind"].get<std::string>() + ","), std::string::npos)
-        << line;
+    EXPECT_EQ(std::stod(cells[1]), events[k]["t"].get<double>());
+    EXPECT_EQ(cells[2], events[k]["kind"].get<std::string>());
   }
-  EXPECT_EQ(k, events.size());
-  // A collision lists its pellets and their speeds joined by ';', no limiter (−1).
-  EXPECT_NE(res->body.find(",collision,1;0,-1,"), std::string::npos);
+  EXPECT_EQ(k + 1, events.size());
+  EXPECT_GT(rows_read, events.size());  // the collisions take two rows
+  // A collision's pellets on rows of their own, each with its speeds, no limiter (−1).
+  EXPECT_NE(res->body.find(",collision,1,-1,"), std::string::npos);
+  EXPECT_NE(res->body.find(",collision,0,-1,"), std::string::npos);
 
   res = server->client().Get("/api/simulate?preset=paper&t_end=1&format=csv&what=trajectory");
   ASSERT_TRUE(res);
