@@ -1,10 +1,12 @@
 // `vibro simulate SCENE | - | --preset NAME [-o OUT.json|OUT.csv] [--what events|trajectory]`:
-// the run as JSON (events, summary, stats, warnings), or its events or samples as CSV.
+// the run as JSON (events, summary, stats, warnings), or its events or samples as CSV; with
+// --dt the trajectory at a uniform time step.
 #include <algorithm>
 #include <iostream>
 #include <memory>
 #include <optional>
 #include <string>
+#include <variant>
 #include <vector>
 
 #include "app/commands.h"
@@ -20,6 +22,7 @@ namespace {
 struct SimulateOptions {
   SceneOutput job;
   std::optional<RunTable> table;
+  std::optional<double> dt;  // the trajectory sampled at this uniform step, s
 };
 
 int simulate(const SimulateOptions& o) {
@@ -34,8 +37,22 @@ int simulate(const SimulateOptions& o) {
     print_error("--what", "applies to a CSV output (-o OUT.csv)");
     return 2;
   }
-  const RunTable table = o.table.value_or(RunTable::events);
+  RunTable table = o.table.value_or(RunTable::events);
   SimOptions options = scene->sim;
+  if (o.dt) {
+    if (table != RunTable::trajectory) {
+      print_error("--dt", "samples the trajectory: give it with --what trajectory -o OUT.csv");
+      return 2;
+    }
+    auto times =
+        uniform_times(*o.dt, options.t_end, scene->model.size(), kMaxUniformSamples, "--dt");
+    if (auto* e = std::get_if<FieldError>(&times)) {
+      print_error(e->field, e->message);
+      return 2;
+    }
+    options.stops = std::get<std::vector<double>>(std::move(times));
+    table = RunTable::uniform;
+  }
   // Samples for a trajectory CSV, and for the JSON when the scene asks for them.
   options.record.assign(scene->model.size(),
                         (csv && table == RunTable::trajectory) || (json && scene->trajectories));
@@ -64,6 +81,13 @@ Command add_simulate_command(CLI::App& vibro) {
       ->check(accepted_if([](const std::string& name) { return run_table_named(name).has_value(); },
                           "must be \"events\" or \"trajectory\""))
       ->type_name("TABLE");
+  command
+      ->add_option("--dt", o->dt,
+                   "with --what trajectory: the state at t = 0, dt, 2 dt, ... (t,pellet,phi,dphi) "
+                   "instead of the branches' samples, s")
+      ->check(
+          number_where([](double x) { return x > 0.0; }, "must be a positive number of seconds"))
+      ->type_name("S");
   return {command, [o] { return simulate(*o); }};
 }
 

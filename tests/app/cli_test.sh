@@ -273,6 +273,20 @@ assert [i["image"] for i in r["images"]] == ["p.png", "p.svg"] and "answer" in r
 then pass "render draws one run in several formats"
 else fail "render draws one run in several formats"; cat err.txt out.txt; fi
 
+# A trajectory at a uniform step: every pellet's state at t = 0, dt, ..., t_end, from its start.
+if "$vibro" simulate --preset paper --t-end 2 --what trajectory --dt 0.01 -o u.csv 2> err.txt \
+    && python3 -c '
+import csv; rows = list(csv.DictReader(open("u.csv")))
+assert list(rows[0]) == ["t", "pellet", "phi", "dphi"], rows[0]
+assert len(rows) == 2 * 201, len(rows)
+assert all(abs(float(r["t"]) - 0.01 * (k // 2)) < 1e-12 for k, r in enumerate(rows))
+assert float(rows[0]["dphi"]) == 50 and float(rows[-1]["t"]) == 2'
+then pass "simulate --dt samples the trajectory at a uniform step"
+else fail "simulate --dt samples the trajectory at a uniform step"; cat err.txt; fi
+usage "--dt 0" --dt -- simulate --preset paper --what trajectory --dt 0 -o u.csv
+usage "--dt making too many samples" --dt -- simulate --preset paper --what trajectory --dt 1e-9 -o u.csv
+usage "--dt without --what trajectory" --dt -- simulate --preset paper --dt 0.1 -o u.csv
+
 # The serve flags reach the config: the limits and workers the server reports.
 "$vibro" serve --port 0 --quiet --threads 3 --max-t-end 50 --deadline-ms 250 --max-pixels 1e6 \
   --cache-mib 8 > serve.out 2> serve.err &

@@ -6,6 +6,7 @@
 #include <sstream>
 #include <vector>
 
+#include "io/presets.h"
 #include "tests/server/test_server.h"
 
 namespace vibro::testing {
@@ -80,6 +81,43 @@ TEST_F(Endpoints, TrajectoriesOnlyWhenAsked) {
   ASSERT_TRUE(run.contains("trajectories"));
   EXPECT_EQ(run["trajectories"].size(), 2u);
   EXPECT_FALSE(run["trajectories"][0]["branches"].empty());
+}
+
+// A trajectory at a uniform step (dt=): every pellet's state at t = 0, dt, 2 dt, ... to t_end,
+// the first the scene's initial state; a dt that is no positive number, that would make more
+// samples than the server keeps, or that is asked without what=trajectory is refused naming dt.
+TEST_F(Endpoints, SimulateSamplesTheTrajectoryAtAUniformStepOnRequest) {
+  auto res = server->client().Get(
+      "/api/simulate?preset=paper&t_end=1&format=csv&what=trajectory&dt=0.125");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  std::istringstream rows(res->body);
+  std::string line;
+  std::getline(rows, line);
+  EXPECT_EQ(line, "t,pellet,phi,dphi");
+  std::vector<std::string> lines;
+  while (std::getline(rows, line)) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 2u * 9u);  // t = 0, 0.125, ..., 1 for both pellets
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    EXPECT_EQ(std::stod(lines[k].substr(0, lines[k].find(','))), 0.125 * (k / 2)) << lines[k];
+  const json scene = json::parse(*preset_json("paper"));
+  EXPECT_EQ(
+      lines[0], "0,0," + [&] {
+        std::ostringstream s;
+        s.precision(17);
+        s << scene["model"]["pellets"][0]["phi0"].get<double>() << ','
+          << scene["model"]["pellets"][0]["dphi0"].get<double>();
+        return s.str();
+      }());
+  for (const char* bad : {"/api/simulate?preset=paper&format=csv&what=trajectory&dt=0",
+                          "/api/simulate?preset=paper&format=csv&what=trajectory&dt=soon",
+                          "/api/simulate?preset=paper&format=csv&what=trajectory&dt=1e-9",
+                          "/api/simulate?preset=paper&format=csv&dt=0.1"}) {
+    res = server->client().Get(bad);
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 400) << bad;
+    EXPECT_EQ(json::parse(res->body)["field"], "dt") << bad << " " << res->body;
+  }
 }
 
 // API.md "Exports": the events, or the sampled trajectory, as CSV: a row per event (the same
