@@ -21,6 +21,18 @@ enum class RunTable { events, trajectory, uniform };
 // "events" or "trajectory"; nothing for another name.
 std::optional<RunTable> run_table_named(std::string_view name);
 
+// A row of the events table: event `event` (an index into RunResult::events) seen from the
+// `member`-th pellet it touches; member is 0 for an event that touches none (then its pellet and
+// speeds are empty cells).
+struct EventRow {
+  std::size_t event;
+  std::size_t member;
+};
+
+// The events table's rows in order: each event once per pellet it touches. What run_csv writes
+// and the Python module's `Run.events` holds.
+std::vector<EventRow> event_rows(const std::vector<Event>& events);
+
 // events: event,t,kind,pellet,limiter,phi,dphi_before,dphi_after, one value per cell: a row for
 // each pellet an event touches (a collision has two, a stuck body's impact one per member), its
 // speeds before and after, the rows of one event sharing its index `event` (from 0), t, kind,

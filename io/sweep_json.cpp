@@ -319,9 +319,13 @@ std::string csv_cell(const std::string& text) {
 
 }  // namespace
 
+std::array<std::string, 2> sweep_value_names(const SweepSpec& spec) {
+  return {spec.axis.parameter, spec.axis2 ? spec.axis2->parameter : std::string("value2")};
+}
+
 std::string sweep_csv_header(const SweepSpec& spec) {
-  return csv_cell(spec.axis.parameter) + "," +
-         (spec.axis2 ? csv_cell(spec.axis2->parameter) : std::string("value2")) +
+  const std::array<std::string, 2> names = sweep_value_names(spec);
+  return csv_cell(names[0]) + "," + csv_cell(names[1]) +
          ",start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,impacts_per_period,"
          "lyapunov\n";
 }

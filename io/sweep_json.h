@@ -2,6 +2,7 @@
 // and a sweep's result as JSON or CSV, the points as columns.
 #pragma once
 
+#include <array>
 #include <functional>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -42,6 +43,9 @@ std::string sweep_result_csv(const SweepSpec& spec, const SweepResult& result);
 // a sweep of one parameter), start, direction, pellet, t, phi, dphi, phase, limiter, trusted,
 // period, impacts_per_period, lyapunov.
 std::string sweep_csv_header(const SweepSpec& spec);
+// The names of the header's first two columns: the parameters' field paths ("value2" for a
+// sweep of one parameter).
+std::array<std::string, 2> sweep_value_names(const SweepSpec& spec);
 
 // The plot a sweep is drawn as: one of kSweepPlotNames; an empty name picks the regime map for a
 // 2-D sweep and the bifurcation diagram otherwise. Nothing for another name. Whether the sweep
