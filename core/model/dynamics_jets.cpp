@@ -65,12 +65,16 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
       component(dphi_index(i))[k + 1] = acc / (k + 1);
     }
   }
+  const bool alone = body.members.size() == 1;  // its force is the body's
   for (int i : body.members) {
-    std::fill(Fi.begin(), Fi.end(), 0.0);
-    add_force(i, Fi);
+    if (!alone) {
+      std::fill(Fi.begin(), Fi.end(), 0.0);
+      add_force(i, Fi);
+    }
+    const std::span<const double> Fm = alone ? F : Fi;
     const Pellet& p = model_.pellets[i];
     const double ms_mu = p.m * s * mu, damper = p.m * R * R * p.c;  // damper·v² is its power
-    for (int k = 0; k < order; ++k) G[k] = Fi[k] - ms_mu * N[k];
+    for (int k = 0; k < order; ++k) G[k] = Fm[k] - ms_mu * N[k];
     const std::span<double> w = component(work_index(i));
     for (int k = 0; k < order; ++k)
       w[k + 1] = (R * product_coefficient(v, G, k) - damper * Q[k]) / (k + 1);
