@@ -63,8 +63,8 @@ class ScaledMap {
     set_parameter(m, parameter_, p);
     return m;
   }
-  // The same seen from the section's phase.
-  Model at(double p) const { return at_phase(plain(p), phase_); }
+  // The same seen from the section's phase, with the limiters armed as they are there.
+  Model at(double p) const { return armed_as(at_phase(plain(p), phase_), armed_); }
   const SimOptions& options() const { return options_; }
   bool cancelled() const { return cancel_ && cancel_->load(); }
   double band() const { return multiplier_band(options_); }
@@ -102,8 +102,10 @@ class ScaledMap {
     return pt;
   }
 
-  // The state `dt` later along the motion from x at the section, at value p.
-  Vec advance(const Vec& x, double p, double dt) const {
+  // The state `dt` later along the motion from x at the section, at value p, and the limiters
+  // armed there in `armed`.
+  Vec advance(const Vec& x, double p, double dt, std::vector<bool>& armed) const {
+    armed = armed_;
     if (!(dt > 0.0)) return x;
     Model m = at(p);
     for (int i = 0; i < m.size(); ++i) {
@@ -116,6 +118,7 @@ class ScaledMap {
     o.record.clear();
     o.stops.clear();
     const RunResult run = simulate(m, o);
+    armed = run.summary.armed;
     Vec y(size());
     for (int i = 0; i < m.size(); ++i)
       y.segment(2 * i, 2) << run.summary.final[i].phi, run.summary.final[i].dphi;
@@ -124,7 +127,7 @@ class ScaledMap {
 
   // Moves the section `dt` later; returns the point's state there.
   Vec shift_phase(const Point& pt, double dt) {
-    const Vec x = advance(state(pt.v), value(pt.v), dt);
+    const Vec x = advance(state(pt.v), value(pt.v), dt, armed_);
     phase_ += dt;
     return x;
   }
@@ -133,7 +136,8 @@ class ScaledMap {
   std::vector<PhasePoint> section_state(const Vec& v) const {
     const double T = forcing_period(at(value(v)));
     const double dt = T * std::ceil(phase_ / T - 1e-12) - phase_;
-    const Vec x = advance(state(v), value(v), dt);
+    std::vector<bool> armed;
+    const Vec x = advance(state(v), value(v), dt, armed);
     std::vector<PhasePoint> out;
     for (Eigen::Index k = 0; k + 1 < x.size(); k += 2) out.push_back({x[k], x[k + 1]});
     return out;
@@ -147,6 +151,7 @@ class ScaledMap {
   double p0_, span_, time_;
   const std::atomic<bool>* cancel_;  // once set, every point is not ok: the walk ends soon
   double phase_ = 0.0;
+  std::vector<bool> armed_ = armed_at_start(model_);  // the mobile limiters' at the phase
 };
 
 using Point = ScaledMap::Point;
@@ -380,9 +385,10 @@ class Continuation {
       : spec_(spec),
         progress_(progress),
         cancel_(cancel),
+        section_(armed_as(model, start.armed)),
         p0_(*get_parameter(model, spec.parameter)),
         span_(spec.to - p0_),
-        map_(model, options, start.periods, spec.parameter, p0_, span_, cancel),
+        map_(section_, options, start.periods, spec.parameter, p0_, span_, cancel),
         tol_(std::max(1e-10, 100.0 * options.rtol)),
         n_(map_.size()) {
     Vec x(n_);
@@ -425,6 +431,7 @@ class Continuation {
   const ContinuationSpec& spec_;
   const std::function<void(double)>& progress_;
   const std::atomic<bool>* cancel_;
+  const Model section_;  // the limiters armed as at the start's section
   const double p0_, span_;
   ScaledMap map_;
   const double tol_;
