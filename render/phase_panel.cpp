@@ -224,7 +224,11 @@ void draw_phase_panel(cairo_t* cr, const PanelInput<PhasePlot>& in) {
     for (const VisibleBranch& b : branches) lines.push_back({b.index, b.pixels, b.labelled});
     avoid.boxes = draw_branch_numbers(cr, lines, area, style, marker_boxes);
   }
-  const auto limiter_boxes = draw_limiter_labels(cr, tr, limiters, Orientation::vertical, style);
+  // Off the data: the curves, the event marks and the branch numbers.
+  Obstacles data{avoid.lines, avoid.boxes};
+  data.boxes.insert(data.boxes.end(), marker_boxes.begin(), marker_boxes.end());
+  const auto limiter_boxes =
+      draw_limiter_labels(cr, tr, limiters, Orientation::vertical, style, data);
   avoid.boxes.insert(avoid.boxes.end(), limiter_boxes.begin(), limiter_boxes.end());
   cairo_restore(cr);
 
