@@ -62,6 +62,17 @@ PhasePlot create_phase(Fields& f, const Limits& limits) {
   p.friction_zone = f.boolean("friction_zone", false);
   p.wrap = f.boolean("wrap", false);
   p.branch_labels = f.boolean("labels", true);
+  if (const auto colours = f.string("colour", 16)) {
+    if (*colours == "branch")
+      p.colours = PhaseColours::branch;
+    else if (*colours == "one")
+      p.colours = PhaseColours::one;
+    else if (*colours == "time")
+      p.colours = PhaseColours::time;
+    else
+      throw FieldException(f.path("colour"),
+                           "must be \"branch\", \"one\" or \"time\", got \"" + *colours + "\"");
+  }
   p.phi_range = axis_limits(f, "phi_range");
   p.dphi_range = axis_limits(f, "dphi_range");
   p.title = read_title(f);
@@ -165,6 +176,8 @@ struct PlotWriter {
     if (p.friction_zone) j["friction_zone"] = true;
     if (p.wrap) j["wrap"] = true;
     if (!p.branch_labels) j["labels"] = false;
+    if (p.colours != PhaseColours::branch)
+      j["colour"] = p.colours == PhaseColours::one ? "one" : "time";
     write_ranges(p.phi_range, p.dphi_range, j);
   }
   void operator()(const TimePlot& p) const {

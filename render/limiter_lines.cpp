@@ -60,7 +60,8 @@ void draw_limiter_lines(cairo_t* cr, const Transform& tr, const std::vector<Limi
 
 std::vector<Rect> draw_limiter_labels(cairo_t* cr, const Transform& tr,
                                       const std::vector<LimiterLine>& lines,
-                                      Orientation orientation, const Style& style) {
+                                      Orientation orientation, const Style& style,
+                                      const Obstacles& data) {
   const Rect& a = tr.area();
   const double gap = style.px(4.0);
   const bool vertical = orientation == Orientation::vertical;
@@ -76,20 +77,30 @@ std::vector<Rect> draw_limiter_labels(cairo_t* cr, const Transform& tr,
       if (vertical ? (at > box.x && at < box.right()) : (at > box.y && at < box.bottom()))
         return false;
     }
-    return std::none_of(placed.begin(), placed.end(),
-                        [&](const Rect& r) { return r.overlaps(box); });
+    const auto covers = [&](const Rect& r) { return r.overlaps(box); };
+    const auto crosses = [&](const std::vector<Point>& curve) {
+      return length_inside(box, curve) > 0.0;
+    };
+    return std::none_of(placed.begin(), placed.end(), covers) &&
+           std::none_of(data.boxes.begin(), data.boxes.end(), covers) &&
+           std::none_of(data.lines.begin(), data.lines.end(), crosses);
   };
   for (const LimiterLine& line : lines) {
-    // Beside a vertical line at the top, right then left; above a horizontal one at the right
-    // end, then below.
+    // Beside a vertical line, right then left, from its top down in steps of a line of text
+    // until a place is free of the data; above a horizontal one at the right end, then below.
     const double x = tr.px(line.angle), y = tr.py(line.angle);
-    const std::pair<Point, TextAlign> spots[] = {
-        vertical ? std::pair{Point{x + gap, a.y + gap}, TextAlign{HAlign::left, VAlign::top}}
-                 : std::pair{Point{a.right() - gap, y - 0.5 * gap},
-                             TextAlign{HAlign::right, VAlign::bottom}},
-        vertical ? std::pair{Point{x - gap, a.y + gap}, TextAlign{HAlign::right, VAlign::top}}
-                 : std::pair{Point{a.right() - gap, y + 0.5 * gap},
-                             TextAlign{HAlign::right, VAlign::top}}};
+    using Spot = std::pair<Point, TextAlign>;
+    std::vector<Spot> spots;
+    if (vertical) {
+      const double step = 1.4 * style.note_font();
+      for (double top = a.y + gap; top + step <= a.bottom(); top += step)
+        for (double side : {1.0, -1.0})
+          spots.push_back(
+              {{x + side * gap, top}, {side > 0 ? HAlign::left : HAlign::right, VAlign::top}});
+    } else {
+      spots = {{{a.right() - gap, y - 0.5 * gap}, {HAlign::right, VAlign::bottom}},
+               {{a.right() - gap, y + 0.5 * gap}, {HAlign::right, VAlign::top}}};
+    }
     bool done = false;
     for (const std::string& label : limiter_label_choices(line)) {
       for (const auto& [at, align] : spots) {

@@ -8,6 +8,7 @@
 #include <vector>
 
 #include "core/model/model.h"
+#include "render/legend.h"
 #include "render/style.h"
 #include "render/transform.h"
 
@@ -30,11 +31,13 @@ enum class Orientation { vertical, horizontal };
 void draw_limiter_lines(cairo_t* cr, const Transform& tr, const std::vector<LimiterLine>& lines,
                         Orientation orientation, const Style& style);
 
-// Labels each line (beside the top of a vertical line, above or below the right end of a
-// horizontal one) with the longest choice that fits without crossing another line or label;
-// none when even the shortest does not. Returns the boxes of the labels drawn.
+// Labels each line (beside a vertical line, as near its top as the data lets it; above or below
+// the right end of a horizontal one) with the longest choice that fits without crossing another
+// line or label, or the data: a curve of `data.lines` or a box of `data.boxes` (markers, branch
+// numbers). None when even the shortest does not. Returns the boxes of the labels drawn.
 std::vector<Rect> draw_limiter_labels(cairo_t* cr, const Transform& tr,
                                       const std::vector<LimiterLine>& lines,
-                                      Orientation orientation, const Style& style);
+                                      Orientation orientation, const Style& style,
+                                      const Obstacles& data = {});
 
 }  // namespace vibro::render

@@ -2,6 +2,8 @@
 // first-integral overlay, branches, velocity jumps and impacts, labels, frame, legend.
 #include <algorithm>
 #include <cmath>
+#include <cstdio>
+#include <string>
 
 #include "core/model/first_integral.h"
 #include "render/axes.h"
@@ -20,12 +22,39 @@ namespace {
 
 struct VisibleBranch {
   int index = 1;
+  double t = 0.0;             // s: its first sample's time in the window
   std::vector<Point> data;    // (φ, φ̇) inside the window
   std::vector<Point> pixels;  // thinned
   bool labelled = true;       // false on the shorter pieces of a branch cut by wrapping φ
 };
 
 constexpr double kPi = 0.5 * kTwoPi;
+
+// Viridis from dark blue (0) through green to yellow (1): perceptually even, legible in grey
+// and to colour-blind readers.
+Colour time_colour(double u) {
+  static constexpr Colour stops[] = {rgb(0x440154), rgb(0x3B528B), rgb(0x21918C), rgb(0x5EC962),
+                                     rgb(0xFDE725)};
+  const double x = std::clamp(u, 0.0, 1.0) * 4.0;
+  const int k = std::min(static_cast<int>(x), 3);
+  const double f = x - k;
+  const Colour &a = stops[k], &b = stops[k + 1];
+  return {a.r + f * (b.r - a.r), a.g + f * (b.g - a.g), a.b + f * (b.b - a.b), 1.0};
+}
+
+std::string short_time(double t) {
+  char text[32];
+  std::snprintf(text, sizeof text, "%.4g", t);
+  return text;
+}
+
+// A branch's colour as the plot asks: its own, the first series colour, or its start's time
+// over the times the branches start at.
+Colour curve_colour(PhaseColours colours, const VisibleBranch& b, Range times) {
+  if (colours == PhaseColours::branch) return branch_colour(b.index);
+  if (colours == PhaseColours::one) return series_colour(0);
+  return time_colour(times.span() > 0.0 ? (b.t - times.lo) / times.span() : 0.0);
+}
 
 // φ on one turn, [−π, π).
 double on_one_turn(double phi) { return phi - kTwoPi * std::floor((phi + kPi) / kTwoPi); }
@@ -34,12 +63,12 @@ double on_one_turn(double phi) { return phi - kTwoPi * std::floor((phi + kPi) / 
 // its longest piece carries the branch's number.
 void wrap_into(VisibleBranch b, std::vector<VisibleBranch>& out) {
   const std::size_t first = out.size();
-  VisibleBranch piece{b.index, {}, {}, true};
+  VisibleBranch piece{b.index, b.t, {}, {}, true};
   for (const Point& p : b.data) {
     const Point w{on_one_turn(p.x), p.y};
     if (!piece.data.empty() && std::abs(w.x - piece.data.back().x) > kPi) {
       out.push_back(std::move(piece));
-      piece = VisibleBranch{b.index, {}, {}, true};
+      piece = VisibleBranch{b.index, b.t, {}, {}, true};
     }
     piece.data.push_back(w);
   }
@@ -58,7 +87,7 @@ std::vector<VisibleBranch> visible_branches(const PelletTrack& track, const Phas
     if (!branch_selected(spec, b.index)) continue;
     const auto samples = clip_to_window(b.samples, spec.t_from, spec.t_to);
     if (samples.empty()) continue;
-    VisibleBranch v{b.index, {}, {}, true};
+    VisibleBranch v{b.index, samples.front().t, {}, {}, true};
     v.data.reserve(samples.size());
     for (const Sample& s : samples) v.data.push_back({s.phi, s.dphi});
     if (spec.wrap)
@@ -192,9 +221,11 @@ void draw_phase_panel(cairo_t* cr, const PanelInput<PhasePlot>& in) {
   cairo_set_dash(cr, nullptr, 0, 0.0);
 
   cairo_set_line_width(cr, style.curve_width());
+  Range times;
+  for (const VisibleBranch& b : branches) times.include(b.t);
   for (VisibleBranch& b : branches) {
     b.pixels = to_thinned_pixels(tr, b.data);
-    set_colour(cr, branch_colour(b.index));
+    set_colour(cr, curve_colour(spec.colours, b, times));
     stroke_polyline(cr, b.pixels);
     avoid.lines.push_back(b.pixels);
   }
@@ -219,12 +250,16 @@ void draw_phase_panel(cairo_t* cr, const PanelInput<PhasePlot>& in) {
     marks_shown.push_back(mark);
   }
 
-  if (spec.branch_labels) {
+  if (spec.branch_labels && spec.colours == PhaseColours::branch) {
     std::vector<NumberedLine> lines;
     for (const VisibleBranch& b : branches) lines.push_back({b.index, b.pixels, b.labelled});
     avoid.boxes = draw_branch_numbers(cr, lines, area, style, marker_boxes);
   }
-  const auto limiter_boxes = draw_limiter_labels(cr, tr, limiters, Orientation::vertical, style);
+  // Off the data: the curves, the event marks and the branch numbers.
+  Obstacles data{avoid.lines, avoid.boxes};
+  data.boxes.insert(data.boxes.end(), marker_boxes.begin(), marker_boxes.end());
+  const auto limiter_boxes =
+      draw_limiter_labels(cr, tr, limiters, Orientation::vertical, style, data);
   avoid.boxes.insert(avoid.boxes.end(), limiter_boxes.begin(), limiter_boxes.end());
   cairo_restore(cr);
 
@@ -232,6 +267,10 @@ void draw_phase_panel(cairo_t* cr, const PanelInput<PhasePlot>& in) {
   draw_title(cr, in.layout.title_anchor,
              spec.title.empty() ? default_title(spec, in.run.stats.t_reached) : spec.title, style);
   for (const EventMark* mark : marks_shown) legend.push_back(legend_entry(*mark));
+  if (spec.colours == PhaseColours::time && !times.empty())
+    for (double t : {times.lo, times.hi})
+      legend.push_back({(t == times.lo ? "from t = " : "to t = ") + short_time(t) + " s",
+                        time_colour(times.span() > 0.0 ? (t - times.lo) / times.span() : 0.0)});
   // The trajectory is one series; anything else drawn makes the legend worth its space.
   if (!legend.empty()) draw_legend(cr, legend, area, avoid, style);
 }

@@ -39,8 +39,13 @@ struct TimeWindow {
 };
 
 // (φ, φ̇) of one pellet, branches told apart.
+// How a phase portrait colours its branches: each its own colour (numbered), all one colour, or
+// by the time each begins, from dark blue (early) to yellow (late), for a long run that settles.
+enum class PhaseColours { branch, one, time };
+
 struct PhasePlot : TimeWindow {
   int pellet = 0;
+  PhaseColours colours = PhaseColours::branch;  // "one" and "time" number no branch
   std::vector<int> branches;  // only these motion intervals (numbered from 1); empty: all
   std::optional<PhasePoint> first_integral_through;  // the exact unforced curve through it
   bool friction_zone = false;            // shade |φ| ≤ α0 (mod 2π) where a pellet can rest

@@ -122,7 +122,7 @@ void draw_time_panel(cairo_t* cr, const PanelInput<TimePlot>& in) {
     legend.push_back({"pellet " + std::to_string(s.pellet + 1), series_colour(s.pellet)});
   }
   const auto marks = draw_event_row(cr, tr_phi, in, pellets);
-  avoid.boxes = draw_limiter_labels(cr, tr_phi, limiters, Orientation::horizontal, style);
+  avoid.boxes = draw_limiter_labels(cr, tr_phi, limiters, Orientation::horizontal, style, avoid);
   cairo_restore(cr);
   Axis x_top = x;
   x_top.tick_labels = !stacked;

@@ -20,9 +20,7 @@ print_size() {  # NAME PLOTS-JSON FIGURE-JSON
 import json,sys; s=json.load(sys.stdin); plots=json.loads(sys.argv[1])
 s["plots"]=[s["plots"][i] for i in plots]; s["figure"]=json.loads(sys.argv[2]); print(json.dumps(s))' \
     "$2" "$3" > /tmp/vibro_print_scene.json
-  for ext in png pdf; do
-    $vibro render /tmp/vibro_print_scene.json -o "docs/images/$1.$ext" > /dev/null
-  done
+  $vibro render /tmp/vibro_print_scene.json -o "docs/images/$1.png" -o "docs/images/$1.pdf" > /dev/null
 }
 print_size paper-85mm '[0, 2]' '{"width_mm": 85, "height_mm": 120, "font_pt": 8, "dpi": 300}'
 print_size paper-170mm '[0, 1, 2]' '{"width_mm": 170, "height_mm": 130, "font_pt": 8, "dpi": 300}'

@@ -19,10 +19,14 @@ fi
 
 bash scripts/install_packages.sh setup "${packages[@]}"
 
-# ccache makes a rebuild of an unchanged tree (a second clone, CI) take seconds.
+# ccache makes a rebuild of an unchanged tree (a second clone, CI) take seconds. A first build
+# takes minutes: its percentage shows as it goes, the whole output goes to build.log.
+echo "setup: configuring build/ (the log: build.log)"
 cmake -S . -B build -DCMAKE_BUILD_TYPE=Release -DCMAKE_CXX_COMPILER_LAUNCHER=ccache \
   -DCMAKE_C_COMPILER_LAUNCHER=ccache > build.log 2>&1 || { cat build.log; exit 1; }
-cmake --build build -j"$(nproc)" >> build.log 2>&1 || { tail -50 build.log; exit 1; }
+echo "setup: building on $(nproc) cores (a first build takes some minutes)"
+cmake --build build -j"$(nproc)" 2>&1 | bash scripts/build_progress.sh setup build.log \
+  || { tail -50 build.log; exit 1; }
 # `import vibro` for /usr/bin/python3 in any shell: the package goes into its site-packages
 # (/usr/local/lib/python3.X/dist-packages), which needs root.
 sudo=""

@@ -20,7 +20,10 @@ Recorder::Recorder(const Model& model, const std::vector<bool>& record, double r
       open_(model.size(), false),
       record_until_(record_until),
       max_samples_(max_samples),
-      negative_since_(model.size(), kNone) {
+      negative_since_(model.size(), kNone),
+      stretch_length_(model.size(), 0.0),
+      warning_of_(model.size(), -1),
+      stretches_(model.size(), 0) {
   for (int i = 0; i < model.size(); ++i) {
     if (i < static_cast<int>(record.size()) && record[i]) {
       track_of_[i] = static_cast<int>(tracks_.size());
@@ -123,16 +126,27 @@ void Recorder::check_normal_force(double t, const Vec& y, const std::vector<Body
 }
 
 void Recorder::close_warning(int pellet, double t) {
-  if (std::isnan(negative_since_[pellet])) return;
-  if (warnings_.size() < kMaxWarnings) {
-    std::ostringstream msg;
-    msg << "pellet " << pellet + 1
-        << ": the normal force g cos(phi) + R dphi^2 is negative from t = "
-        << negative_since_[pellet] << " s to " << t
-        << " s; there the paper's friction law pushes the pellet along (not physical)";
-    warnings_.push_back({"negative_normal_force", msg.str(), pellet, negative_since_[pellet], t});
-  }
+  const double since = negative_since_[pellet];
+  if (std::isnan(since)) return;
   negative_since_[pellet] = kNone;
+  const int w = warning_of_[pellet];
+  const bool same_approach = w >= 0 && since - warnings_[w].t_end < stretch_length_[pellet];
+  stretch_length_[pellet] = t - since;
+  if (!same_approach) {
+    if (warnings_.size() >= kMaxWarnings) return;
+    warning_of_[pellet] = static_cast<int>(warnings_.size());
+    stretches_[pellet] = 0;
+    warnings_.push_back({"negative_normal_force", "", pellet, since, t});
+  }
+  Warning& warning = warnings_[warning_of_[pellet]];
+  warning.t_end = t;
+  const int n = ++stretches_[pellet];
+  std::ostringstream msg;
+  msg << "pellet " << pellet + 1 << ": the normal force g cos(phi) + R dphi^2 is negative ";
+  if (n > 1) msg << "in " << n << " stretches, each sooner after the last than it lasted, ";
+  msg << "from t = " << warning.t_begin << " s to " << t
+      << " s; there the paper's friction law pushes the pellet along (not physical)";
+  warning.message = msg.str();
 }
 
 void Recorder::end_branch(int pellet) {

@@ -58,7 +58,14 @@ class Recorder {
   Vec last_y_;
   std::vector<double> lowest_, highest_;  // per track: φ and φ̇ (2k, 2k + 1), the extents so far
 
-  std::vector<double> negative_since_;  // per pellet: start of a negative-normal interval, or NaN
+  // Per pellet, the negative-normal stretches: the open one's start (NaN: none), the last closed
+  // one's length, and its warning (an index into warnings_, −1: none) with the stretches it holds.
+  // A stretch that starts sooner after the last one than that one lasted is the same approach
+  // (chatter toward a stop repeats them ever faster): it extends the warning, not a new one.
+  std::vector<double> negative_since_;
+  std::vector<double> stretch_length_;
+  std::vector<int> warning_of_;
+  std::vector<int> stretches_;
   std::vector<Warning> warnings_;
 };
 

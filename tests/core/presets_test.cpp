@@ -78,5 +78,22 @@ TEST(PaperScene, AnswersThePapersQuestion) {
   EXPECT_FALSE(testing::events_of(run, EventKind::chatter).empty());
 }
 
+// Pellet 1 of the paper scene approaches its rest at limiter 2 through chatter, the normal force
+// negative in twelve stretches ever closer together: one warning for the approach (it was
+// twelve), and its own for the stretch near t = 0.8 s, long before.
+TEST(PaperScene, OneWarningForOneApproachOfNegativeNormalForce) {
+  const Scene scene = testing::preset("paper");
+  SimOptions o = scene.sim;
+  o.check = false;
+  const RunResult run = simulate(scene.model, o);
+  ASSERT_EQ(run.warnings.size(), 2u);
+  EXPECT_LT(run.warnings[0].t_end, 1.0);
+  const Warning& approach = run.warnings[1];
+  EXPECT_EQ(approach.code, "negative_normal_force");
+  EXPECT_LT(approach.t_begin, 6.0);
+  EXPECT_GT(approach.t_end, 7.259);
+  EXPECT_NE(approach.message.find("in 12 stretches"), std::string::npos) << approach.message;
+}
+
 }  // namespace
 }  // namespace vibro
