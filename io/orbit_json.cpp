@@ -25,6 +25,17 @@ std::vector<PhasePoint> read_guess(const json& list, const std::string& path) {
   return guess;
 }
 
+std::vector<bool> read_armed(const json& list, const std::string& path) {
+  std::vector<bool> armed;
+  for (std::size_t i = 0; i < list.size(); ++i) {
+    if (!list[i].is_boolean())
+      throw FieldException(path + "[" + std::to_string(i) + "]",
+                           "expected true (armed) or false (disarmed)");
+    armed.push_back(list[i].get<bool>());
+  }
+  return armed;
+}
+
 BifurcationKind followed_kind(const std::string& name, const std::string& path) {
   for (BifurcationKind k :
        {BifurcationKind::fold, BifurcationKind::period_doubling, BifurcationKind::grazing})
@@ -100,6 +111,7 @@ json orbit_json(const PeriodicOrbit& o) {
           {"period", finite_number(o.period)},
           {"t0", finite_number(o.t0)},
           {"state", states_json(o.state)},
+          {"armed", o.armed},
           {"iterations", o.iterations},
           {"residual", finite_number(o.residual)},
           {"multipliers", multipliers_json(o.multipliers)},
@@ -107,6 +119,7 @@ json orbit_json(const PeriodicOrbit& o) {
           {"exact_jacobian", o.exact_jacobian},
           {"jacobian_note", o.jacobian_note},
           {"impacts_per_period", finite_number(o.impacts_per_period)},
+          {"at_rest", o.at_rest},
           {"events", events},
           {"stats", stats_to_json(o.stats)}};
 }
@@ -154,7 +167,7 @@ json curves_json(const std::vector<BifurcationCurve>& curves) {
 
 }  // namespace
 
-OrbitRequest read_orbit_request(const json& j, std::size_t max_pellets) {
+OrbitRequest read_orbit_request(const json& j, std::size_t max_pellets, std::size_t max_limiters) {
   Fields f(j, "periodic_orbit");
   OrbitRequest r;
   OrbitSpec& spec = r.orbit;
@@ -162,6 +175,8 @@ OrbitRequest read_orbit_request(const json& j, std::size_t max_pellets) {
   spec.transient = whole(f, "transient", spec.transient);
   if (const json* guess = f.array("guess", max_pellets))
     spec.guess = read_guess(*guess, f.path("guess"));
+  if (const json* armed = f.array("armed", max_limiters))
+    spec.armed = read_armed(*armed, f.path("armed"));
   spec.max_iterations = whole(f, "max_iterations", spec.max_iterations);
   if (const json* c = f.value("continuation"))
     r.continuation = read_continuation(*c, f.path("continuation"), r.follow);
@@ -174,6 +189,7 @@ json orbit_request_to_json(const OrbitRequest& r) {
             {"transient", r.orbit.transient},
             {"max_iterations", r.orbit.max_iterations}};
   if (!r.orbit.guess.empty()) j["guess"] = states_json(r.orbit.guess);
+  if (!r.orbit.armed.empty()) j["armed"] = r.orbit.armed;
   if (r.continuation)
     j["continuation"] = {{"parameter", r.continuation->parameter},
                          {"to", r.continuation->to},

@@ -10,10 +10,12 @@
 
 namespace vibro {
 
-// Reads a scene's "periodic_orbit" object, a guess of at most `max_pellets` states; throws
+// Reads a scene's "periodic_orbit" object, a guess of at most `max_pellets` states and an armed
+// set of at most `max_limiters`; throws
 // FieldException (io/json_fields.h) naming the field. What depends on the model (the guess's
 // count, the parameter's name) is validate_orbit_request's.
-OrbitRequest read_orbit_request(const nlohmann::json& json, std::size_t max_pellets);
+OrbitRequest read_orbit_request(const nlohmann::json& json, std::size_t max_pellets,
+                                std::size_t max_limiters);
 nlohmann::json orbit_request_to_json(const OrbitRequest& request);
 
 // {"orbit": {...}, "branch": [...], "bifurcations": [...], "reached", "message"}, and "curves"

@@ -36,6 +36,7 @@ Limiter read_limiter(const json& j, const std::string& path, int pellets) {
   l.k = f.required_number("k");
   l.mobile = f.boolean("mobile", false);
   if (auto r = f.integer("rearm_by")) l.rearm_by = static_cast<int>(*r);
+  l.armed = f.boolean("armed", true);
   if (const json* list = f.array("pellets", 64)) {
     for (std::size_t i = 0; i < list->size(); ++i) {
       l.pellets.push_back(index_in((*list)[i], item(f.path("pellets"), i), pellets, "pellet"));
@@ -157,7 +158,7 @@ SceneOrError scene_from_json(const json& j, const Limits& limits) {
     if (const json* print = f.value("figure")) s.figure.print = read_print_size(*print);
     if (const json* sweep = f.value("sweep")) s.sweep = read_sweep(*sweep);
     if (const json* orbit = f.value("periodic_orbit"))
-      s.periodic_orbit = read_orbit_request(*orbit, limits.pellets);
+      s.periodic_orbit = read_orbit_request(*orbit, limits.pellets, limits.limiters);
     f.done();
     if (auto e = validate_scene(s, limits)) return *e;
     apply_print_size(s.figure);
@@ -297,6 +298,7 @@ json scene_to_json(const Scene& s) {
   for (const Limiter& l : s.model.limiters) {
     json lj = {{"angle", l.angle}, {"k", l.k}, {"mobile", l.mobile}};
     if (l.mobile) lj["rearm_by"] = l.rearm_by;
+    if (!l.armed) lj["armed"] = false;  // scenes that start armed read back as before
     if (!l.pellets.empty()) lj["pellets"] = l.pellets;
     limiters.push_back(lj);
   }

@@ -244,8 +244,8 @@ json sweep_to_json(const SweepSpec& s) {
   return j;
 }
 
-bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
-                             const TextSink& sink) {
+bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, const TextSink& sink,
+                             const json& scene) {
   Pieces out(sink);
   out.text("{\"parameter\":");
   out.string(spec.axis.parameter);
@@ -269,7 +269,12 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
   }
   long points = 0;
   for (const SweepRun& run : result.runs) points += static_cast<long>(run.points.size());
-  out.text("},\"section\":");
+  out.text("}");
+  if (!scene.is_null()) {
+    out.text(",\"scene\":");
+    out.text(scene.dump());
+  }
+  out.text(",\"section\":");
   out.string(section_name(spec.section));
   out.text(",\"stats\":{\"cancelled\":");
   out.boolean(result.cancelled);
@@ -285,9 +290,9 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
   return out.finish();
 }
 
-json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
+json sweep_result_json(const SweepSpec& spec, const SweepResult& result, const json& scene) {
   return json::parse(whole_text(
-      [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink); }));
+      [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink, scene); }));
 }
 
 std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {
@@ -301,11 +306,34 @@ std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpe
   return std::nullopt;
 }
 
-bool write_sweep_result_csv(const SweepResult& result, const TextSink& sink) {
+namespace {
+
+// A header cell as CSV quotes it: within double quotes, its quotes doubled, when it holds a
+// comma, a quote or a line break (a field path does not, but the header must stay one row).
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
+}  // namespace
+
+std::array<std::string, 2> sweep_value_names(const SweepSpec& spec) {
+  return {spec.axis.parameter, spec.axis2 ? spec.axis2->parameter : std::string("value2")};
+}
+
+std::string sweep_csv_header(const SweepSpec& spec) {
+  const std::array<std::string, 2> names = sweep_value_names(spec);
+  return csv_cell(names[0]) + "," + csv_cell(names[1]) +
+         ",start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,impacts_per_period,"
+         "lyapunov\n";
+}
+
+bool write_sweep_result_csv(const SweepSpec& spec, const SweepResult& result,
+                            const TextSink& sink) {
   Pieces out(sink);
-  out.text(
-      "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
-      "impacts_per_period,lyapunov\n");
+  out.text(sweep_csv_header(spec));
   for (const SweepRun& run : result.runs) {
     if (!out.ok()) return false;
     for (const SectionPoint& p : run.points) {
@@ -337,8 +365,9 @@ bool write_sweep_result_csv(const SweepResult& result, const TextSink& sink) {
   return out.finish();
 }
 
-std::string sweep_result_csv(const SweepResult& result) {
-  return whole_text([&](const TextSink& sink) { return write_sweep_result_csv(result, sink); });
+std::string sweep_result_csv(const SweepSpec& spec, const SweepResult& result) {
+  return whole_text(
+      [&](const TextSink& sink) { return write_sweep_result_csv(spec, result, sink); });
 }
 
 }  // namespace vibro

@@ -27,7 +27,6 @@ struct Numpy {
   Numpy() : module(py::module_::import("numpy")) {}
   py::module_ module;
   py::object array = module.attr("array");
-  py::object empty = module.attr("empty");
 };
 
 // The n strings get(0) … as a numpy array of str.
@@ -36,23 +35,6 @@ py::array string_column(const Numpy& np, std::size_t n, const Get& get) {
   py::list list(n);
   for (std::size_t k = 0; k < n; ++k) list[k] = py::str(std::string(get(k)));
   return np.array(list, py::arg("dtype") = "str");
-}
-
-// The n Python objects get(0) … as a numpy array of dtype object: what a column holds whose
-// entries are lists (an event's pellets, its speeds), one tuple each.
-template <class Get>
-py::array object_column(const Numpy& np, std::size_t n, const Get& get) {
-  py::array a = np.empty(n, py::arg("dtype") = "object");
-  for (std::size_t k = 0; k < n; ++k) a[py::int_(k)] = get(k);
-  return a;
-}
-
-// A tuple of the items of a vector.
-template <class T>
-py::tuple tuple_of(const std::vector<T>& items) {
-  py::tuple t(items.size());
-  for (std::size_t k = 0; k < items.size(); ++k) t[k] = py::cast(items[k]);
-  return t;
 }
 
 }  // namespace vibro::python

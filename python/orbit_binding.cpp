@@ -9,6 +9,7 @@
 #include <nlohmann/json.hpp>
 
 #include "io/orbit_json.h"
+#include "io/scene_json.h"
 #include "python/bindings.h"
 #include "python/image.h"
 #include "python/interruptible.h"
@@ -43,7 +44,12 @@ class PeriodicOrbitResult {
     return py::object(data_[py::str(key)]);
   }
   const py::dict& data() const { return data_; }
-  std::string to_json() const { return json_.dump(2) + "\n"; }
+  // With its scene, as `vibro orbit` writes it (so that `vibro plot` can redraw it).
+  std::string to_json() const {
+    nlohmann::json saved = json_;
+    saved["scene"] = scene_to_json(scene_);
+    return saved.dump(2) + "\n";
+  }
 
   // The continued branch as `vibro orbit -o OUT.png` draws it (without the sweep beneath);
   // None when there is no branch to draw.

@@ -1,5 +1,6 @@
 // vibro.simulate(scene, trajectories=None, deadline_ms=None) -> vibro.Run: the run `vibro simulate`
 // makes of the scene (app/simulate_command.cpp), its JSON the same text.
+#include <limits>
 #include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
@@ -7,6 +8,7 @@
 
 #include "core/analysis/checked_run.h"
 #include "io/result_json.h"
+#include "io/run_csv.h"
 #include "python/bindings.h"
 #include "python/columns.h"
 #include "python/json_values.h"
@@ -36,23 +38,34 @@ class Run {
   Run(Model model, RunResult run, nlohmann::json parts)
       : model_(std::move(model)), run_(std::move(run)), json_(std::move(parts)) {}
 
-  // One array per column of the events' CSV (t,kind,pellets,limiter,phi,dphi_before,dphi_after);
-  // the lists of an event's pellets and speeds as tuples, limiter −1 where none.
+  // One array per column of the events' CSV (io/run_csv.h: event,t,kind,pellet,limiter,phi,
+  // dphi_before,dphi_after), a row per pellet an event touches; limiter −1 where none. An event
+  // that touches no pellet would have pellet −1 and NaN speeds, as pandas reads its empty cells.
   py::dict events() {
     if (events_) return events_.cast<py::dict>();
     const std::vector<Event>& e = run_.events;
-    const std::size_t n = e.size();
-    const Numpy np;
+    const std::vector<EventRow> rows = event_rows(e);
+    const std::size_t n = rows.size();
+    const auto event = [&](std::size_t k) -> const Event& { return e[rows[k].event]; };
+    const auto cell = [&](const std::vector<double>& xs, std::size_t k) {
+      const std::size_t i = rows[k].member;
+      return i < xs.size() ? xs[i] : std::numeric_limits<double>::quiet_NaN();
+    };
     py::dict d;
-    d["t"] = column<double>(n, [&](std::size_t k) { return e[k].t; });
-    d["kind"] = string_column(np, n, [&](std::size_t k) { return event_kind_name(e[k].kind); });
-    d["pellets"] = object_column(np, n, [&](std::size_t k) { return tuple_of(e[k].pellets); });
-    d["limiter"] = column<std::int64_t>(n, [&](std::size_t k) { return e[k].limiter; });
-    d["phi"] = column<double>(n, [&](std::size_t k) { return e[k].phi; });
+    d["event"] = column<std::int64_t>(n, [&](std::size_t k) { return rows[k].event; });
+    d["t"] = column<double>(n, [&](std::size_t k) { return event(k).t; });
+    d["kind"] =
+        string_column(Numpy(), n, [&](std::size_t k) { return event_kind_name(event(k).kind); });
+    d["pellet"] = column<std::int64_t>(n, [&](std::size_t k) {
+      const std::vector<int>& p = event(k).pellets;
+      return rows[k].member < p.size() ? p[rows[k].member] : -1;
+    });
+    d["limiter"] = column<std::int64_t>(n, [&](std::size_t k) { return event(k).limiter; });
+    d["phi"] = column<double>(n, [&](std::size_t k) { return event(k).phi; });
     d["dphi_before"] =
-        object_column(np, n, [&](std::size_t k) { return tuple_of(e[k].dphi_before); });
+        column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_before, k); });
     d["dphi_after"] =
-        object_column(np, n, [&](std::size_t k) { return tuple_of(e[k].dphi_after); });
+        column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_after, k); });
     events_ = d;
     return d;
   }

@@ -2,6 +2,7 @@
 // sweep` runs it (app/sweep_command.cpp), on `threads` threads with the GIL released; the same
 // points.
 #include <algorithm>
+#include <array>
 #include <atomic>
 #include <limits>
 #include <optional>
@@ -10,6 +11,7 @@
 #include <vector>
 
 #include "core/analysis/sweep.h"
+#include "io/scene_json.h"
 #include "io/sweep_json.h"
 #include "python/bindings.h"
 #include "python/columns.h"
@@ -42,9 +44,10 @@ class Sweep {
     const auto point = [&](std::size_t k) -> const SectionPoint& {
       return run(k).points[where_[k].second];
     };
+    const std::array<std::string, 2> values = sweep_value_names(spec());
     py::dict d;
-    d["value"] = column<double>(n, [&](std::size_t k) { return run(k).value; });
-    d["value2"] = column<double>(n, [&](std::size_t k) { return run(k).value2; });
+    d[py::str(values[0])] = column<double>(n, [&](std::size_t k) { return run(k).value; });
+    d[py::str(values[1])] = column<double>(n, [&](std::size_t k) { return run(k).value2; });
     d["start"] = column<std::int64_t>(n, [&](std::size_t k) { return run(k).start; });
     d["direction"] = column<std::int64_t>(n, [&](std::size_t k) { return run(k).direction; });
     d["pellet"] = column<std::int64_t>(n, [&](std::size_t k) { return point(k).pellet; });
@@ -100,8 +103,11 @@ class Sweep {
     return d;
   }
 
-  std::string to_json() const { return sweep_result_json(spec(), result_).dump() + "\n"; }
-  std::string to_csv() const { return sweep_result_csv(result_); }
+  // With its scene, as `vibro sweep` writes it (so that `vibro plot` can redraw it).
+  std::string to_json() const {
+    return sweep_result_json(spec(), result_, scene_to_json(scene_)).dump() + "\n";
+  }
+  std::string to_csv() const { return sweep_result_csv(spec(), result_); }
 
   // As `vibro sweep -o OUT.png --plot PLOT --pellet PELLET --coordinate COORDINATE` draws it.
   py::object render(const std::string& plot, const std::string& format_name, int pellet,
@@ -188,12 +194,14 @@ Sweep sweep_scene(py::handle scene_value, std::optional<int> threads, py::object
 
 void add_sweep(py::module_& m) {
   py::class_<Sweep>(m, "Sweep", "A finished sweep (vibro.sweep).")
-      .def_property_readonly("points", &Sweep::points,
-                             "The section points: a dict of equal-length numpy arrays, one per "
-                             "column of `vibro sweep -o OUT.csv` (value, value2, start, direction, "
-                             "pellet, t, phi, dphi, phase, limiter, trusted, period, "
-                             "impacts_per_period, lyapunov: NaN without one) and run, the index "
-                             "of its run in `runs`.")
+      .def_property_readonly(
+          "points", &Sweep::points,
+          "The section points: a dict of equal-length numpy arrays, one per "
+          "column of `vibro sweep -o OUT.csv` (the swept values under the "
+          "parameters' field paths, or value2 for a sweep of one; start, direction, "
+          "pellet, t, phi, dphi, phase, limiter, trusted, period, "
+          "impacts_per_period, lyapunov: NaN without one) and run, the index "
+          "of its run in `runs`.")
       .def_property_readonly("runs", &Sweep::runs,
                              "One entry per run: a dict of numpy arrays (the JSON's \"runs\").")
       .def_property_readonly("stats", &Sweep::stats,

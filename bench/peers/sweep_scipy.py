@@ -3,8 +3,10 @@
 with a terminal event at the stop, restarted after every impact, per value of Omega.
 
 Usage: /usr/bin/python3 bench/peers/sweep_scipy.py [--values N] [--rtols 1e-6,1e-8,...] [--vibro build/vibro]
+                                                   [--method dop853|taylor|auto|...]
 Runs N values of the preset's 1,000-value sweep (every 1000/N-th), 50 transient and 20 recorded
-periods each, with SciPy and with vibro (DOP853, one thread, the check off) at each tolerance, and
+periods each, with SciPy and with vibro (--method, DOP853 unless told, one thread, the check off)
+at each tolerance, and
 prints per tolerance the seconds per run of both and the median error of their stroboscopic
 points against a truth computed by SciPy at rtol 1e-13; then the ratio at the same tolerance and
 at matched error (SciPy's seconds at vibro's error, interpolated log-log on SciPy's curve).
@@ -79,13 +81,13 @@ def section(scene, Omega, transient, record, rtol):
     return points
 
 
-def vibro_sections(vibro, scene, omegas, transient, record, rtol):
+def vibro_sections(vibro, scene, omegas, transient, record, rtol, method):
     """vibro on the same values: one sweep per value on one thread, the check off.
     Returns (seconds per run, {Omega: [(phi, dphi)]})."""
     seconds, points = 0.0, {}
     for Om in omegas:
         s = dict(scene)
-        s["solver"] = {"method": "dop853", "rtol": rtol, "atol": rtol * 1e-3, "check": False}
+        s["solver"] = {"method": method, "rtol": rtol, "atol": rtol * 1e-3, "check": False}
         s["sweep"] = dict(scene["sweep"], **{"from": Om, "to": Om, "count": 1, "transient": transient,
                                              "record": record, "continuation": "none"})
         out = json.loads(subprocess.run([vibro, "sweep", "-", "--threads", "1"], input=json.dumps(s),
@@ -118,6 +120,7 @@ def main():
     a.add_argument("--values", type=int, default=20)
     a.add_argument("--rtols", default="1e-6,1e-8,1e-10,1e-12")
     a.add_argument("--vibro", default=os.path.join(ROOT, "build", "vibro"))
+    a.add_argument("--method", default="dop853")
     o = a.parse_args()
     scene = load_preset(o.vibro)
     sweep = scene["sweep"]
@@ -132,7 +135,8 @@ def main():
         started = time.perf_counter()
         peer = {Om: [(p[1], p[2]) for p in section(scene, Om, transient, record, rtol)] for Om in omegas}
         scipy_s = (time.perf_counter() - started) / len(omegas)
-        vibro_s, ours = vibro_sections(o.vibro, scene, omegas, transient, record, rtol)
+        vibro_s, ours = vibro_sections(o.vibro, scene, omegas, transient, record, rtol,
+                                         o.method)
         rows.append({"rtol": rtol, "scipy_s_per_run": scipy_s, "scipy_error": error(peer, truth, speed),
                      "vibro_s_per_run": vibro_s, "vibro_error": error(ours, truth, speed),
                      "ratio_same_rtol": scipy_s / vibro_s})
@@ -140,7 +144,7 @@ def main():
     for r in rows:
         s = seconds_at(r["vibro_error"], scipy_curve)
         r["ratio_matched_error"] = s / r["vibro_s_per_run"] if s else None
-    print(json.dumps({"values": len(omegas), "periods_per_run": transient + record,
+    print(json.dumps({"values": len(omegas), "method": o.method, "periods_per_run": transient + record,
                       "truth": "SciPy DOP853 at rtol 1e-13", "rows": rows}, indent=1))
 
 

@@ -63,8 +63,8 @@ class ScaledMap {
     set_parameter(m, parameter_, p);
     return m;
   }
-  // The same seen from the section's phase.
-  Model at(double p) const { return at_phase(plain(p), phase_); }
+  // The same seen from the section's phase, with the limiters armed as they are there.
+  Model at(double p) const { return armed_as(at_phase(plain(p), phase_), armed_); }
   const SimOptions& options() const { return options_; }
   bool cancelled() const { return cancel_ && cancel_->load(); }
   double band() const { return multiplier_band(options_); }
@@ -102,8 +102,10 @@ class ScaledMap {
     return pt;
   }
 
-  // The state `dt` later along the motion from x at the section, at value p.
-  Vec advance(const Vec& x, double p, double dt) const {
+  // The state `dt` later along the motion from x at the section, at value p, and the limiters
+  // armed there in `armed`.
+  Vec advance(const Vec& x, double p, double dt, std::vector<bool>& armed) const {
+    armed = armed_;
     if (!(dt > 0.0)) return x;
     Model m = at(p);
     for (int i = 0; i < m.size(); ++i) {
@@ -116,6 +118,7 @@ class ScaledMap {
     o.record.clear();
     o.stops.clear();
     const RunResult run = simulate(m, o);
+    armed = run.summary.armed;
     Vec y(size());
     for (int i = 0; i < m.size(); ++i)
       y.segment(2 * i, 2) << run.summary.final[i].phi, run.summary.final[i].dphi;
@@ -124,7 +127,7 @@ class ScaledMap {
 
   // Moves the section `dt` later; returns the point's state there.
   Vec shift_phase(const Point& pt, double dt) {
-    const Vec x = advance(state(pt.v), value(pt.v), dt);
+    const Vec x = advance(state(pt.v), value(pt.v), dt, armed_);
     phase_ += dt;
     return x;
   }
@@ -133,7 +136,8 @@ class ScaledMap {
   std::vector<PhasePoint> section_state(const Vec& v) const {
     const double T = forcing_period(at(value(v)));
     const double dt = T * std::ceil(phase_ / T - 1e-12) - phase_;
-    const Vec x = advance(state(v), value(v), dt);
+    std::vector<bool> armed;
+    const Vec x = advance(state(v), value(v), dt, armed);
     std::vector<PhasePoint> out;
     for (Eigen::Index k = 0; k + 1 < x.size(); k += 2) out.push_back({x[k], x[k + 1]});
     return out;
@@ -147,6 +151,7 @@ class ScaledMap {
   double p0_, span_, time_;
   const std::atomic<bool>* cancel_;  // once set, every point is not ok: the walk ends soon
   double phase_ = 0.0;
+  std::vector<bool> armed_ = armed_at_start(model_);  // the mobile limiters' at the phase
 };
 
 using Point = ScaledMap::Point;
@@ -370,6 +375,53 @@ void find_doubled(const ScaledMap& map, const Point& at, double past, double spa
   }
 }
 
+// The limiter impact a branch's motion makes slowest, whose speed vanishes at a grazing.
+struct SlowImpact {
+  int pellet = -1, limiter = -1;
+  double side = 0.0;  // +1: the pellet strikes it moving up (the limiter above it)
+  double speed = INFINITY;
+};
+
+SlowImpact slowest_impact(const RunResult& run) {
+  SlowImpact s;
+  for (const Event& e : run.events)
+    if (e.kind == EventKind::limiter && std::abs(e.dphi_before[0]) < s.speed)
+      s = {e.pellets[0], e.limiter, e.dphi_before[0] > 0.0 ? 1.0 : -1.0,
+           std::abs(e.dphi_before[0])};
+  return s;
+}
+
+// The model without limiter l (none of whose limiters is mobile): the motion the pellet would
+// make if the limiter were not there, which a non-impacting motion is.
+Model without_limiter(Model m, int l) {
+  m.limiters.erase(m.limiters.begin() + l);
+  return m;
+}
+
+// The free motion near x at the model m and how far its turn goes past the limiter (rad, > 0:
+// it would cross it; 0 at the grazing), or none where it is not found.
+struct FreeMotion {
+  Vec x;
+  double overshoot = 0.0;
+};
+std::optional<FreeMotion> free_motion(const Model& m, const SimOptions& options, int periods,
+                                      const Vec& x, const SlowImpact& slow, double angle) {
+  OrbitSpec spec;
+  spec.periods = periods;
+  spec.transient = 0;
+  for (Eigen::Index k = 0; k + 1 < x.size(); k += 2) spec.guess.push_back({x[k], x[k + 1]});
+  const PeriodicOrbit o = find_periodic_orbit(m, options, spec);
+  if (!o.converged) return std::nullopt;
+  FreeMotion f{Vec(x.size()), -INFINITY};
+  for (std::size_t i = 0; i < o.state.size(); ++i)
+    f.x.segment(2 * i, 2) << o.state[i].phi, o.state[i].dphi;
+  for (const Event& e : o.events)
+    if (e.kind == EventKind::reversal && e.pellets[0] == slow.pellet)
+      f.overshoot = std::max(f.overshoot, slow.side * wrap_angle(e.phi - angle));
+  if (!std::isfinite(f.overshoot)) return std::nullopt;
+  return f;
+}
+
 // One continuation: the branch so far, the point it stands on with its tangent and signature, and
 // the arclength step. Each member is one move of the pseudo-arclength walk.
 class Continuation {
@@ -380,9 +432,10 @@ class Continuation {
       : spec_(spec),
         progress_(progress),
         cancel_(cancel),
+        section_(armed_as(model, start.armed)),
         p0_(*get_parameter(model, spec.parameter)),
         span_(spec.to - p0_),
-        map_(model, options, start.periods, spec.parameter, p0_, span_, cancel),
+        map_(section_, options, start.periods, spec.parameter, p0_, span_, cancel),
         tol_(std::max(1e-10, 100.0 * options.rtol)),
         n_(map_.size()) {
     Vec x(n_);
@@ -407,6 +460,20 @@ class Continuation {
   Step step_to(const Vec& predicted) const;
   void keep_clear();
   bool cross_grazing();
+  bool jump_grazing();
+  struct Grazing;
+  std::optional<Grazing> grazing_across(const Step& next) const;
+  struct Grazing {
+    double value;
+    Vec x, beyond;  // the grazing motion's state, and the free motion's on its far side
+  };
+  Grazing refine_grazing(const SlowImpact& slow, double angle, double pa, FreeMotion a, double pb,
+                         FreeMotion b) const;
+  std::optional<FreeMotion> free_at(const SlowImpact& slow, double angle, double p,
+                                    const Vec& x) const {
+    return free_motion(without_limiter(map_.at(p), slow.limiter), map_.options(), map_.periods(), x,
+                       slow, angle);
+  }
   std::optional<std::pair<Point, double>> point_past_grazing(double way) const;
   std::vector<BranchPoint> walk_back(const Point& across, double step, double way) const;
   void note_bifurcations(const Step& next);
@@ -425,6 +492,7 @@ class Continuation {
   const ContinuationSpec& spec_;
   const std::function<void(double)>& progress_;
   const std::atomic<bool>* cancel_;
+  const Model section_;  // the limiters armed as at the start's section
   const double p0_, span_;
   ScaledMap map_;
   const double tol_;
@@ -434,6 +502,7 @@ class Continuation {
   Vec t_;
   Signature sig_;
   double ds_ = 0.0;
+  std::size_t jump_tried_at_ = 0;  // branch points when the last grazing jump was tried
 };
 
 OrbitBranch Continuation::run() {
@@ -454,6 +523,12 @@ OrbitBranch Continuation::run() {
     if (cancelled()) {
       branch_.message = "cancelled";
       return branch_;
+    }
+    // Steps shrunk to a crawl with a slow impact on the branch: the square root of a grazing
+    // ahead, which the corrector only creeps toward. Jump to it instead where it is one.
+    if (ds_ < 1e-3 && branch_.points.size() >= jump_tried_at_ + 5) {
+      jump_tried_at_ = branch_.points.size();
+      if (jump_grazing()) continue;
     }
     Step next = step_to(here_.v + ds_ * t_);
     if (!next.point.ok) {
@@ -534,6 +609,96 @@ bool Continuation::cross_grazing() {
   return true;
 }
 
+// The grazing between pa, whose free motion overshoots the limiter (a), and pb, whose does not
+// (b): Illinois regula falsi on the overshoot, a smooth function of the parameter.
+Continuation::Grazing Continuation::refine_grazing(const SlowImpact& slow, double angle, double pa,
+                                                   FreeMotion a, double pb, FreeMotion b) const {
+  double ha = a.overshoot, hb = b.overshoot;
+  int last = 0;
+  for (int k = 0; k < 60 && std::abs(pb - pa) > 1e-14 * std::abs(pa) && ha != 0.0; ++k) {
+    const double pc = (pa * hb - pb * ha) / (hb - ha);
+    const std::optional<FreeMotion> c = free_at(slow, angle, pc, a.x);
+    if (!c) break;
+    if (c->overshoot > 0.0) {
+      pa = pc, ha = c->overshoot, a = *c;
+      if (last == -1) hb /= 2.0;
+      last = -1;
+    } else {
+      pb = pc, hb = c->overshoot, b = *c;
+      if (last == 1) ha /= 2.0;
+      last = 1;
+    }
+  }
+  return std::abs(ha) < std::abs(hb) ? Grazing{pa, a.x, b.x} : Grazing{pb, b.x, b.x};
+}
+
+// The grazing between here and `next` where one of them has a limiter impact the other lacks,
+// located on the free motion; none where it is not that.
+std::optional<Continuation::Grazing> Continuation::grazing_across(const Step& next) const {
+  const SlowImpact h = slowest_impact(here_.map.run), n = slowest_impact(next.point.map.run);
+  const bool from_here = h.pellet >= 0 && n.limiter != h.limiter;
+  if (!from_here && !(n.pellet >= 0 && h.limiter != n.limiter)) return std::nullopt;
+  const SlowImpact& slow = from_here ? h : n;
+  const Point& impacting = from_here ? here_ : next.point;
+  const Point& free = from_here ? next.point : here_;
+  for (const Limiter& l : map_.at(map_.value(here_.v)).limiters)
+    if (l.mobile) return std::nullopt;
+  const double angle = map_.at(map_.value(here_.v)).limiters[slow.limiter].angle;
+  const double pa = map_.value(impacting.v), pb = map_.value(free.v);
+  const std::optional<FreeMotion> a = free_at(slow, angle, pa, map_.state(impacting.v));
+  const std::optional<FreeMotion> b = free_at(slow, angle, pb, map_.state(free.v));
+  if (!a || !b || !(a->overshoot > 0.0) || !(b->overshoot < 0.0)) return std::nullopt;
+  return refine_grazing(slow, angle, pa, *a, pb, *b);
+}
+
+// On the impacting side near a grazing: the impact's speed goes to zero like a square root of
+// the distance to it, and the corrector creeps. The grazing motion is the free motion (the one
+// the limiter does not touch) whose turn just reaches the limiter, smooth in the parameter: it is
+// located there, by regula falsi on its overshoot past the limiter, reported, and the branch goes
+// on from the free motion a step past it (true); false where this is no such grazing.
+bool Continuation::jump_grazing() {
+  const SlowImpact slow = slowest_impact(here_.map.run);
+  const Model plain = map_.at(map_.value(here_.v));
+  if (slow.pellet < 0) return false;
+  for (const Limiter& l : plain.limiters)
+    if (l.mobile) return false;
+  const double way = t_[n_] > 0.0 ? 1.0 : -1.0;
+  const double angle = plain.limiters[slow.limiter].angle;
+  double pa = map_.value(here_.v);
+  std::optional<FreeMotion> a = free_at(slow, angle, pa, map_.state(here_.v));
+  if (!a || a->overshoot <= 0.0) return false;
+  double pb = pa;
+  std::optional<FreeMotion> b;
+  for (double d : {1e-3, 1e-2, 3e-2, 0.1}) {
+    pb = pa + way * d * std::abs(span_);
+    if ((pb - spec_.to) * way > 0.0) pb = spec_.to;
+    b = free_at(slow, angle, pb, a->x);
+    if (b && b->overshoot < 0.0) break;
+    b.reset();
+  }
+  if (!b) return false;
+  const Grazing g = refine_grazing(slow, angle, pa, *a, pb, *b);
+  const double pg = g.value;
+  const Vec xg = g.x;
+  // The branch goes on from the free motion a step past the grazing, where the limiter is back.
+  const double pn = pg + way * std::min(1e-3 * std::abs(span_), std::abs(spec_.to - pg));
+  const std::optional<FreeMotion> n = free_at(slow, angle, pn, g.beyond);
+  if (!n || n->overshoot >= 0.0) return false;
+  Point next = map_.evaluate(map_.scaled(n->x, pn));
+  if (!next.ok || slowest_impact(next.map.run).limiter == slow.limiter) return false;
+  branch_.bifurcations.push_back(
+      {BifurcationKind::grazing, pg, map_.section_state(map_.scaled(xg, pg)), {}, {}});
+  const Point at = map_.evaluate(map_.scaled(xg, pg));
+  if (at.ok) branch_.points.push_back(branch_point(map_, at));
+  here_ = std::move(next);
+  t_ = tangent(here_, way * along_parameter());
+  keep_clear();
+  sig_ = signature(here_, t_, map_.band());
+  branch_.points.push_back(branch_point(map_, here_));
+  ds_ = 1e-3;
+  return true;
+}
+
 // Past the grazing, near it: a motion at a parameter step of 1e-4 to 0.1 (scaled) with an impact
 // more or less and the state close by, and the step that found it.
 std::optional<std::pair<Point, double>> Continuation::point_past_grazing(double way) const {
@@ -573,11 +738,20 @@ void Continuation::note_bifurcations(const Step& next) {
                                BifurcationKind::period_doubling, BifurcationKind::neimark_sacker}) {
     if (!crossed(kind, sig_, next.sig)) continue;
     const Point at = locate(map_, kind, here_, sig_, t_, ds_, next.point, tol_);
-    const double value = map_.value(at.v);
+    double value = map_.value(at.v);
+    std::vector<PhasePoint> state = map_.section_state(at.v);
+    // A grazing is located on the free motion, which stays smooth there (bisection on the
+    // branch stalls in the square root, or where no correction lands between the two sides).
+    const std::optional<Grazing> exact =
+        kind == BifurcationKind::grazing ? grazing_across(next) : std::nullopt;
+    if (exact) {
+      value = exact->value;
+      state = map_.section_state(map_.scaled(exact->x, value));
+    }
     if (grazing && std::abs(value - *grazing) <= 1e-6 * std::abs(span_)) continue;
     if (!confirmed(kind, at)) continue;
     if (kind == BifurcationKind::grazing) grazing = value;
-    Bifurcation b{kind, value, map_.section_state(at.v), {}, {}};
+    Bifurcation b{kind, value, std::move(state), {}, {}};
     if (kind == BifurcationKind::period_doubling)
       find_doubled(map_, at,
                    (inside_unit_circle(here_.multipliers, map_.band()) ? 1.0 : -1.0) *

@@ -98,6 +98,35 @@ std::optional<std::string> beyond_limiter(const Model& model, int i, double phi)
   return std::nullopt;
 }
 
+// How far pellet i at the unwrapped angle phi lies along the turn it starts in, from the copy
+// δ + 2πk of a limiter's angle below its start phi0 (in [0, 2π] where it stays in that turn);
+// none where phi0 lies on a copy, from which the turn is either.
+std::optional<double> along_turn(const Model& model, int i, const Limiter& lim, double phi) {
+  const double start = model.pellets[i].phi0;
+  const double below = lim.angle + kTwoPi * std::floor((start - lim.angle) / kTwoPi);
+  if (start == below) return std::nullopt;
+  return phi - below;
+}
+
+// Why pellets i and j at angles phi_i, phi_j lie in the other order than they start in, along the
+// turn a fixed limiter acting on both closes (pellets never pass each other, nor that limiter:
+// such a state is a motion of the scene with the pellets swapped, which its pellets never reach).
+std::optional<std::string> swapped(const Model& model, int i, int j, double phi_i, double phi_j) {
+  for (const Limiter& lim : model.limiters) {
+    if (lim.mobile || !lim.acts_on(i) || !lim.acts_on(j)) continue;
+    const auto start_i = along_turn(model, i, lim, model.pellets[i].phi0);
+    const auto start_j = along_turn(model, j, lim, model.pellets[j].phi0);
+    if (!start_i || !start_j || *start_i == *start_j) return std::nullopt;
+    // Touching (equal places) keeps the order.
+    const double u_i = *along_turn(model, i, lim, phi_i), u_j = *along_turn(model, j, lim, phi_j);
+    if (*start_i < *start_j ? u_i <= u_j : u_i >= u_j) return std::nullopt;
+    return "pellets " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
+           " in the other order than they start in (φ = " + number(phi_i) + " and " +
+           number(phi_j) + " rad): they never pass each other, so a motion the scene never reaches";
+  }
+  return std::nullopt;
+}
+
 // Why the map's run from x starts a pellet resting on a limiter from the side it did not start
 // on (held there by a limiter it could only reach through it); empty if none does.
 std::string rests_on_far_side(const Model& model, const RunResult& run) {
@@ -113,6 +142,18 @@ std::string rests_on_far_side(const Model& model, const RunResult& run) {
     return "rests pellet " + std::to_string(i + 1) + " against limiter " +
            std::to_string(b.limiter + 1) + " from the side it did not start on";
   }
+  return {};
+}
+
+// Why the run ends with limiters armed otherwise than the model starts them (no return to the
+// section's armed set); empty if it ends with the same.
+std::string other_armed_set(const Model& model, const RunResult& run) {
+  const std::vector<bool> start = armed_at_start(model);
+  for (std::size_t l = 0; l < start.size() && l < run.summary.armed.size(); ++l)
+    if (start[l] != run.summary.armed[l])
+      return std::string("ends with mobile limiter ") + std::to_string(l) + " " +
+             (run.summary.armed[l] ? "armed" : "disarmed") + ", not " +
+             (start[l] ? "armed" : "disarmed") + " as at the section";
   return {};
 }
 
@@ -153,7 +194,38 @@ std::optional<FieldError> check_simulated_time(const OrbitSpec& spec, double T,
   return std::nullopt;
 }
 
+// The guess's armed set: one per limiter, a fixed one armed, and only with a guess (without one
+// the run to the guess gives it).
+std::optional<FieldError> check_armed(const Model& model, const OrbitSpec& spec) {
+  if (spec.armed.empty()) return std::nullopt;
+  if (spec.guess.empty())
+    return FieldError{"periodic_orbit.armed",
+                      "goes with a guess: without one the run to the starting guess gives it"};
+  if (spec.armed.size() != model.limiters.size())
+    return FieldError{"periodic_orbit.armed", "expected one true or false per limiter (" +
+                                                  std::to_string(model.limiters.size()) +
+                                                  "), got " + std::to_string(spec.armed.size())};
+  for (std::size_t l = 0; l < spec.armed.size(); ++l)
+    if (!spec.armed[l] && !model.limiters[l].mobile)
+      return FieldError{"periodic_orbit.armed[" + std::to_string(l) + "]",
+                        "limiter " + std::to_string(l) + " is fixed: it is always armed"};
+  return std::nullopt;
+}
+
 }  // namespace
+
+Model armed_as(const Model& model, const std::vector<bool>& armed) {
+  Model m = model;
+  for (std::size_t l = 0; l < m.limiters.size() && l < armed.size(); ++l)
+    m.limiters[l].armed = armed[l] || !m.limiters[l].mobile;
+  return m;
+}
+
+std::vector<bool> armed_at_start(const Model& model) {
+  std::vector<bool> armed;
+  for (const Limiter& l : model.limiters) armed.push_back(!l.mobile || l.armed);
+  return armed;
+}
 
 std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& spec,
                                          const Limits& limits) {
@@ -172,11 +244,6 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
                         "every force must repeat with the first forced pellet's period 2π/Ω: Omega "
                         "must be a whole multiple of it"};
   }
-  for (std::size_t l = 0; l < model.limiters.size(); ++l)
-    if (model.limiters[l].mobile)
-      return FieldError{"model.limiters[" + std::to_string(l) + "].mobile",
-                        "periodic orbits are sought with fixed limiters only: a mobile limiter's "
-                        "armed state is not part of the section's state"};
   if (spec.periods < 1 || spec.periods > limits.orbit_periods)
     return FieldError{"periodic_orbit.periods",
                       "expected a whole number of forcing periods from 1 to " +
@@ -197,6 +264,12 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
     if (std::optional<std::string> off =
             beyond_limiter(model, static_cast<int>(i), spec.guess[i].phi))
       return FieldError{"periodic_orbit.guess[" + std::to_string(i) + "].phi", "puts " + *off};
+  for (std::size_t i = 0; i < spec.guess.size(); ++i)
+    for (std::size_t j = i + 1; j < spec.guess.size(); ++j)
+      if (std::optional<std::string> off = swapped(model, static_cast<int>(i), static_cast<int>(j),
+                                                   spec.guess[i].phi, spec.guess[j].phi))
+        return FieldError{"periodic_orbit.guess[" + std::to_string(j) + "].phi", "puts " + *off};
+  if (auto e = check_armed(model, spec)) return e;
   if (spec.max_iterations < 1 || spec.max_iterations > limits.orbit_iterations)
     return FieldError{"periodic_orbit.max_iterations", "expected a whole number from 1 to " +
                                                            std::to_string(limits.orbit_iterations)};
@@ -206,6 +279,9 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
 std::optional<std::string> off_own_side(const Model& model, const Vec& x) {
   for (int i = 0; i < model.size(); ++i)
     if (std::optional<std::string> off = beyond_limiter(model, i, x[2 * i])) return off;
+  for (int i = 0; i < model.size(); ++i)
+    for (int j = i + 1; j < model.size(); ++j)
+      if (std::optional<std::string> off = swapped(model, i, j, x[2 * i], x[2 * j])) return off;
   return std::nullopt;
 }
 
@@ -232,6 +308,11 @@ MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int per
   p.ok = p.run.stats.termination == Termination::completed;
   p.image = final_state(p.run);
   if (!p.ok) return p;
+  if (std::string other = other_armed_set(model, p.run); !other.empty()) {
+    p.ok = false;
+    p.run.stats.message = other;
+    return p;
+  }
   if (std::string far = rests_on_far_side(model, p.run); !far.empty()) {
     p.ok = false;
     p.run.stats.message = far;
@@ -272,11 +353,12 @@ double residual_norm(const Model& model, const Vec& r) {
 namespace {
 
 // The state the search starts from: the guess, or the scene's start after spec.transient periods
-// (none, with orbit.message saying why, where that run failed).
+// (none, with orbit.message saying why, where that run failed); its armed set in orbit.armed.
 std::optional<Vec> starting_state(const Model& model, const SimOptions& options,
                                   const OrbitSpec& spec, PeriodicOrbit& orbit) {
   const int n = model.size();
   Vec x(2 * n);
+  orbit.armed = spec.armed.empty() ? armed_at_start(model) : spec.armed;
   if (!spec.guess.empty()) {
     for (int i = 0; i < n; ++i) x.segment(2 * i, 2) << spec.guess[i].phi, spec.guess[i].dphi;
     return x;
@@ -288,6 +370,7 @@ std::optional<Vec> starting_state(const Model& model, const SimOptions& options,
     orbit.message = "the run that gives the starting guess " + warmup.stats.message;
     return std::nullopt;
   }
+  orbit.armed = warmup.summary.armed;
   return final_state(warmup);
 }
 
@@ -344,6 +427,9 @@ void describe(const MapPoint& p, const OrbitSpec& spec, double band, PeriodicOrb
     orbit.events.push_back(std::move(e));
   }
   orbit.impacts_per_period = static_cast<double>(impacts) / spec.periods;
+  bool still = p.run.events.empty();
+  for (Eigen::Index k = 1; k < p.x.size(); k += 2) still = still && p.x[k] == 0.0;
+  orbit.at_rest = still;
 }
 
 // The check: the orbit run with the shadow at a tighter tolerance must return to itself, with
@@ -355,6 +441,7 @@ void check_admissible(const Model& model, SimOptions check, const OrbitSpec& spe
   check.record.clear();
   check.stops.clear();
   const RunResult run = simulate(started_at(model, x), check);
+  const std::string other = other_armed_set(model, run);
   orbit.stats = run.stats;
   const double returned =
       residual_norm(model, orbit_residual({x, final_state(run), {}, true, {}, {}, true}));
@@ -367,6 +454,8 @@ void check_admissible(const Model& model, SimOptions check, const OrbitSpec& spe
   } else if (run.stats.trusted_until < check.t_end * (1.0 - 1e-12)) {
     orbit.message = "the check run vouches for its events only up to t = " +
                     number(orbit.t0 + run.stats.trusted_until) + " s";
+  } else if (!other.empty()) {
+    orbit.message = "the check run " + other;
   } else if (returned > 10.0 * tol) {
     orbit.message = "the check run returns " + number(returned) + " away from the orbit";
   } else {
@@ -387,9 +476,11 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
   const std::optional<Vec> x = starting_state(model, until(options, deadline), spec, orbit);
   if (!x) return orbit;
   const double tol = tolerance_for(options);
+  // The mobile limiters armed as on the section, for every map and the check.
+  const Model section = armed_as(model, orbit.armed);
   const MapPoint p =
-      newton(model, options, deadline, spec, tol,
-             stroboscopic_map(model, until(options, deadline), spec.periods, *x), orbit);
+      newton(section, options, deadline, spec, tol,
+             stroboscopic_map(section, until(options, deadline), spec.periods, *x), orbit);
   for (int i = 0; i < model.size(); ++i) orbit.state.push_back({p.x[2 * i], p.x[2 * i + 1]});
   if (!p.ok) {
     orbit.message = "the map's run " + p.run.stats.message;
@@ -406,7 +497,7 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
     return orbit;
   }
   describe(p, spec, multiplier_band(options), orbit);
-  check_admissible(model, until(options, deadline), spec, p.x, tol, orbit);
+  check_admissible(section, until(options, deadline), spec, p.x, tol, orbit);
   return orbit;
 }
 
@@ -414,7 +505,7 @@ std::variant<OrbitReturn, FieldError> orbit_return(const Model& model, const Sim
                                                    const PeriodicOrbit& orbit) {
   if (!orbit.converged)
     return FieldError{"periodic_orbit", "no periodic motion to draw: " + orbit.message};
-  OrbitReturn once{model, options};
+  OrbitReturn once{armed_as(model, orbit.armed), options};
   for (int i = 0; i < once.model.size(); ++i) {
     once.model.pellets[i].phi0 = orbit.state[i].phi;
     once.model.pellets[i].dphi0 = orbit.state[i].dphi;

@@ -24,6 +24,9 @@ struct OrbitSpec {
   int periods = 1;                // forcing periods until the state returns
   int transient = 100;            // periods of the scene's own run that give the starting guess
   std::vector<PhasePoint> guess;  // one per pellet; given, it replaces the run's guess
+  // With a guess, per limiter: armed at the section (MODEL.md, "Periodic motions with a mobile
+  // limiter"); empty: as the model's limiters start. Without one, the run's armed set at its end.
+  std::vector<bool> armed;
   int max_iterations = 40;
 };
 
@@ -40,8 +43,16 @@ double forcing_period(const Model& model);
 // the original's t = theta. A section at another phase of the forcing is a section of it.
 Model at_phase(const Model& model, double theta);
 
-// The stroboscopic map over `periods` forcing periods from x (phi, dphi per pellet), and its
-// Jacobian (unset, with the reason, where the path holds what it does not differentiate).
+// The model with its limiters armed at the start as `armed` says (one per limiter): the state of
+// the mobile limiters on a section, which a periodic motion returns to with its continuous state.
+Model armed_as(const Model& model, const std::vector<bool>& armed);
+// The limiters armed as the model starts (a fixed one always).
+std::vector<bool> armed_at_start(const Model& model);
+
+// The stroboscopic map over `periods` forcing periods from x (phi, dphi per pellet) with the
+// limiters armed as the model starts, and its Jacobian (unset, with the reason, where the path
+// holds what it does not differentiate). The armed set is fixed on the section: a run that ends
+// with another one is no return (not ok), since no periodic motion passes through it.
 struct MapPoint {
   Vec x, image;  // 2N
   Mat jacobian;  // 2N × 2N, exact (saltation) or, failing that, central differences
@@ -55,7 +66,8 @@ MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int per
 // Why x is no state of the scene's motion on the section (MODEL.md, "A fixed point never crosses
 // a limiter"), or nothing if it is one: a pellet's angle beyond a fixed limiter that acts on it,
 // on the side the pellet did not start on (the run from x would be a motion the scene's pellet
-// never reaches, on the far side of the limiter).
+// never reaches, on the far side of the limiter), or two pellets in the other order than they
+// start in along the turn a fixed limiter acting on both closes (they never pass each other).
 std::optional<std::string> off_own_side(const Model& model, const Vec& x);
 
 // How far from the unit circle a multiplier must be to count as inside or outside it: the
@@ -77,6 +89,7 @@ struct PeriodicOrbit {
   double period = 0.0;  // T, s
   double t0 = 0.0;      // the section time of `state`, s
   std::vector<PhasePoint> state;
+  std::vector<bool> armed;  // per limiter, at the section: the same after every return
   int iterations = 0;
   double residual = 0.0;                          // rad, speeds scaled by sqrt(R/g)
   std::vector<std::complex<double>> multipliers;  // eigenvalues of the monodromy matrix
@@ -84,6 +97,10 @@ struct PeriodicOrbit {
   bool exact_jacobian = true;
   std::string jacobian_note;
   double impacts_per_period = 0.0;  // limiter impacts and collisions
+  // Every pellet at rest on the section and no event over the return: the motion has come to
+  // rest (a rest state is a fixed point of the map; a pellet friction holds wherever it stopped
+  // has the multiplier 1 of that continuum of rest states, one on a limiter 0).
+  bool at_rest = false;
   // The motion checked as a physical one: a run of the orbit at tighter tolerance returns to it,
   // its events are vouched for, and no near miss (a grazing) makes its sequence uncertain.
   bool admissible = false;
@@ -97,8 +114,8 @@ PeriodicOrbit find_periodic_orbit(const Model& model, const SimOptions& options,
                                   const OrbitSpec& spec);
 
 // One return of a found periodic motion as a run to make: the model started on the orbit's state
-// and the options of a run over its periods. The section time t0 is a whole number of every
-// force's periods, so the forces' phases are those of t = 0 and the run starts there.
+// and armed set and the options of a run over its periods. The section time t0 is a whole number of
+// every force's periods, so the forces' phases are those of t = 0 and the run starts there.
 struct OrbitReturn {
   Model model;
   SimOptions options;

@@ -246,9 +246,15 @@ namespace {
 // The watch's polynomial over a step given as polynomials: its linear form of the state's, less
 // its value where a deflated watch started; deflated at this step's start, divided by τ^order
 // (its first coefficients are the root it starts on). False where it cannot be formed.
+// Whether watch_polynomial can form the watch's polynomial on this step.
+bool formable(const Watch& w, const StepPolynomials& p) {
+  if (p.degree < 0 || p.degree > kMaxPolynomialDegree) return false;
+  return w.deflation == 0 || w.t0 != p.t0 || w.deflation <= p.degree;
+}
+
 bool watch_polynomial(const Watch& w, const LinearForm& form, const StepPolynomials& p,
                       std::array<double, kMaxPolynomialDegree + 1>& q, int& degree) {
-  if (p.degree < 0 || p.degree > kMaxPolynomialDegree) return false;
+  if (!formable(w, p)) return false;
   q.fill(0.0);
   for (int j = 0; j < form.terms; ++j) {
     const std::span<const double> c = p.component(form.index[j]);
@@ -257,13 +263,23 @@ bool watch_polynomial(const Watch& w, const LinearForm& form, const StepPolynomi
   q[0] += form.constant - (w.deflation != 0 ? w.g0 : 0.0);
   degree = p.degree;
   if (w.deflation == 0 || w.t0 != p.t0) return true;
-  if (w.deflation > degree) return false;
   std::copy(q.begin() + w.deflation, q.begin() + degree + 1, q.begin());
   degree -= w.deflation;
   return true;
 }
 
 }  // namespace
+
+bool CrossingFinder::served_by_polynomials(const std::vector<Watch>& watches,
+                                           const std::vector<Body>& bodies, const StepView& step) {
+  const StepPolynomials* p = step.polynomials();
+  if (!p || p->t0 != step.t_prev()) return false;
+  for (std::size_t w = 0; w < watches.size(); ++w)
+    if (!tracks_[w].armed || !linear_form(watches[w], bodies) || !formable(watches[w], *p))
+      return false;
+  calm_end_ = std::numeric_limits<double>::quiet_NaN();  // the end's values are not calm()'s
+  return true;
+}
 
 std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const WatchFunction& fn,
                                                       const StepView& step, bool& served) {
@@ -287,12 +303,23 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
   Vec& y = scratch_left_;
   for (int i = 0; i < minima.count; ++i) {
     const PolynomialMinimum& m = minima.at[i];
+    if (!(m.value < near)) continue;  // above any near miss's error (near_miss)
     step.dense(t0 + m.tau, y);
     if (auto graze = near_miss(fn.watch, t0 + m.tau, m.value, m.half_curvature, track.largest, y))
       grazes_.push_back(*graze);
   }
   if (root) return Bracket{t0 + root->lo, t0 + root->hi, root->p_lo, root->p_hi};
-  // No root: the track moves on to the step's end, as a scan's would.
+  // No root: the track moves on to the step's end, as a scan's would. An undeflated watch's
+  // polynomial is its value, and its derivative the rate closing() gives (a gap's speeds' or a
+  // speed's acceleration), without the state.
+  if (fn.watch.deflation == 0) {
+    track.last = polynomial_value(poly, h);
+    if (follows_motion(fn.watch.kind)) {
+      track.closing = Closing{track.last, polynomial_rate(poly, h), 0.0};
+      track.largest = std::max(track.largest, track.closing.value);
+    }
+    return std::nullopt;
+  }
   step.dense(step.t(), y);
   track.last = fn.value(step.t(), y);
   if (follows_motion(fn.watch.kind)) {

@@ -95,6 +95,12 @@ class CrossingFinder {
   bool calm(const std::vector<Watch>& watches, const Model& model, const std::vector<Body>& bodies,
             double t_prev, double t, const Vec& y);
 
+  // Whether every watch of the step is served by its polynomial (on_polynomials): the step is
+  // given as polynomials and each watch is linear in the state and armed. Then `find` needs no
+  // samples inside the step: its end alone, with no calm() before it.
+  bool served_by_polynomials(const std::vector<Watch>& watches, const std::vector<Body>& bodies,
+                             const StepView& step);
+
   // The step (step.t_prev(), times.back()] with the states at the sample times (increasing, the
   // last one the step's end, step.t()). Allocates only when it finds a crossing or a near miss.
   std::vector<Crossing> find(const std::vector<Watch>& watches, const Model& model,

@@ -45,13 +45,56 @@ PolynomialBracket bisect(std::span<const double> c, PolynomialBracket b, bool fa
   return b;
 }
 
-// The real roots of p (c[0..d]) strictly inside (0, h), increasing; returns how many. Between two
-// turning points (the roots of p', found the same way) p is monotone and has one root where its
-// sign changes; a turning point where p is zero is a root of its own.
+// The Bernstein coefficients b[0..d] of p (c[0..d]) on [0, h]: those of p(h·x) on [0, 1],
+// b_i = Σ_k C(i, k)·a_k with a_k = c[k]·h^k / C(d, k), the binomial sums taken by Pascal's rule.
+// p lies in their convex hull, and has at most as many roots in (0, h) as they change sign.
+void bernstein(std::span<const double> c, double h, Coefficients& b) {
+  const int d = static_cast<int>(c.size()) - 1;
+  double power = 1.0, binomial = 1.0;  // h^k, C(d, k)
+  for (int k = 0; k <= d; ++k) {
+    b[k] = c[k] * power / binomial;
+    power *= h;
+    binomial = binomial * (d - k) / (k + 1);
+  }
+  for (int r = 1; r <= d; ++r)
+    for (int i = d; i >= r; --i) b[i] += b[i - 1];
+}
+
+// The sign changes of b[0..d], zeros skipped.
+int sign_changes(const Coefficients& b, int d) {
+  int changes = 0, last = 0;
+  for (int i = 0; i <= d; ++i) {
+    const int sign = (b[i] > 0.0) - (b[i] < 0.0);
+    if (sign != 0 && last != 0 && sign != last) ++changes;
+    if (sign != 0) last = sign;
+  }
+  return changes;
+}
+
+// The real roots of p (c[0..d]) strictly inside (0, h), increasing; returns how many. Where p's
+// Bernstein coefficients do not change sign it has none (Descartes' rule, as in the
+// Vincent–Collins–Akritas scheme); where they change sign once and p's ends have opposite signs
+// it has one, bracketed by the ends. Otherwise, between two turning points (the roots of p',
+// found the same way) p is monotone and has one root where its sign changes; a turning point
+// where p is zero is a root of its own.
 int roots_inside(std::span<const double> c, double h, double* roots) {
   int d = static_cast<int>(c.size()) - 1;
   while (d > 0 && c[d] == 0.0) --d;
   if (d <= 0) return 0;
+  {
+    Coefficients b{};
+    bernstein(c.first(d + 1), h, b);
+    const int changes = sign_changes(b, d);
+    if (b[0] != 0.0 && b[d] != 0.0) {
+      if (changes == 0) return 0;
+      const double p0 = polynomial_value(c.first(d + 1), 0.0);
+      const double ph = polynomial_value(c.first(d + 1), h);
+      if (changes == 1 && p0 != 0.0 && ph != 0.0 && (p0 > 0.0) != (ph > 0.0)) {
+        roots[0] = bisect(c.first(d + 1), {0.0, h, p0, ph}, p0 > 0.0).hi;
+        return 1;
+      }
+    }
+  }
   Coefficients derivative{};
   for (int k = 1; k <= d; ++k) derivative[k - 1] = k * c[k];
   std::array<double, kMaxPolynomialDegree> turns{};
@@ -81,23 +124,20 @@ double polynomial_value(std::span<const double> c, double tau) {
   return integrators::horner(c, tau);
 }
 
+double polynomial_rate(std::span<const double> c, double tau) {
+  double r = 0.0;
+  for (std::size_t k = c.size(); k-- > 1;) r = r * tau + static_cast<double>(k) * c[k];
+  return r;
+}
+
 bool stays_above(std::span<const double> c, double h, double level) {
   const int d = static_cast<int>(c.size()) - 1;
   if (d < 0 || d > kMaxPolynomialDegree) return false;
   double spread = 0.0;
   for (int k = d; k >= 1; --k) spread = (spread + std::abs(c[k])) * h;
   if (c[0] - spread > level) return true;
-  // The Bernstein coefficients of p(h·x) on [0, 1]: b_i = Σ_k C(i, k)·a_k with
-  // a_k = c[k]·h^k / C(d, k), the binomial sums taken by Pascal's rule.
   Coefficients b{};
-  double power = 1.0, binomial = 1.0;  // h^k, C(d, k)
-  for (int k = 0; k <= d; ++k) {
-    b[k] = c[k] * power / binomial;
-    power *= h;
-    binomial = binomial * (d - k) / (k + 1);
-  }
-  for (int r = 1; r <= d; ++r)
-    for (int i = d; i >= r; --i) b[i] += b[i - 1];
+  bernstein(c, h, b);
   for (int i = 0; i <= d; ++i)
     if (!(b[i] > level)) return false;
   return true;

@@ -14,6 +14,8 @@ inline constexpr int kMaxPolynomialDegree = 31;
 
 // p(τ) = Σ_k c[k]·τ^k by Horner's rule.
 double polynomial_value(std::span<const double> c, double tau);
+// p'(τ), by Horner's rule on the derivative's coefficients k·c[k].
+double polynomial_rate(std::span<const double> c, double tau);
 
 // Whether p stays above `level` over [0, h], proven by a bound: c[0] − Σ_{k≥1} |c[k]|·h^k
 // first, then the least of p's Bernstein coefficients on [0, h] (p lies in their convex hull).

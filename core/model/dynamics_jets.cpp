@@ -51,26 +51,35 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
   const double R = law_.R, gR = law_.gR, mu = law_.mu, M = mass_[b], damping = damping_[b];
   const int s = body.s, side = normal_side_[b];
   const double sigma = law_.paper ? 1.0 : side;  // n = R·σ·(v² + gR·cos u)
+  // Without friction v² and n enter neither the motion nor the work, unless a damper's power
+  // needs v²: they stay 0.
+  const bool damped = std::any_of(body.members.begin(), body.members.end(),
+                                  [&](int i) { return model_.pellets[i].c != 0.0; });
+  const bool squares = mu != 0.0 || damped;
   S[0] = std::sin(u[0]);
   C[0] = std::cos(u[0]);
   for (int k = 0; k < order; ++k) {
     if (k > 0) sin_cos_coefficient(u, S, C, k);
-    Q[k] = product_coefficient(v, v, k);
+    if (squares) Q[k] = product_coefficient(v, v, k);
     double acc = law_.paper ? F[k] / (M * R) - s * mu * Q[k] - gR * (S[k] + s * mu * C[k])
                             : F[k] / (M * R) - gR * S[k] - s * mu * side * (Q[k] + gR * C[k]);
     acc -= damping * v[k];
-    N[k] = R * sigma * (Q[k] + gR * C[k]);
+    if (mu != 0.0) N[k] = R * sigma * (Q[k] + gR * C[k]);
     for (int i : body.members) {
       component(phi_index(i))[k + 1] = component(dphi_index(i))[k] / (k + 1);
       component(dphi_index(i))[k + 1] = acc / (k + 1);
     }
   }
+  const bool alone = body.members.size() == 1;  // its force is the body's
   for (int i : body.members) {
-    std::fill(Fi.begin(), Fi.end(), 0.0);
-    add_force(i, Fi);
+    if (!alone) {
+      std::fill(Fi.begin(), Fi.end(), 0.0);
+      add_force(i, Fi);
+    }
+    const std::span<const double> Fm = alone ? F : Fi;
     const Pellet& p = model_.pellets[i];
     const double ms_mu = p.m * s * mu, damper = p.m * R * R * p.c;  // damper·v² is its power
-    for (int k = 0; k < order; ++k) G[k] = Fi[k] - ms_mu * N[k];
+    for (int k = 0; k < order; ++k) G[k] = Fm[k] - ms_mu * N[k];
     const std::span<double> w = component(work_index(i));
     for (int k = 0; k < order; ++k)
       w[k + 1] = (R * product_coefficient(v, G, k) - damper * Q[k]) / (k + 1);

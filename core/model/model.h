@@ -41,6 +41,9 @@ struct Limiter {
   bool mobile = false;       // disarmed by the impact it takes, re-armed by an impact on `rearm_by`
   int rearm_by = -1;         // index of the limiter whose impacts re-arm this one (mobile only)
   std::vector<int> pellets;  // pellets it acts on; empty: all
+  // Armed at t = 0. Only a mobile limiter may start disarmed (a run started on a periodic motion
+  // whose section finds it so); a fixed one is always armed.
+  bool armed = true;
   bool acts_on(int pellet) const;
 };
 

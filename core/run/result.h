@@ -63,6 +63,7 @@ struct Summary {
   // the paper's question of when the system stops being vibro-impact.
   bool ends_vibro_impact = true;
   std::vector<FinalState> final;
+  std::vector<bool> armed;  // per limiter: armed at the end (a mobile one may be disarmed)
 };
 
 enum class Termination {

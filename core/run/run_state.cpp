@@ -15,6 +15,12 @@ EventTolerances exact_speeds(EventTolerances tol) {
   return tol;
 }
 
+std::vector<bool> initially_armed(const Model& model) {
+  std::vector<bool> armed;
+  for (const Limiter& l : model.limiters) armed.push_back(!l.mobile || l.armed);
+  return armed;
+}
+
 Vec initial_state(const Model& model) {
   Vec y(3 * model.size());
   for (int i = 0; i < model.size(); ++i) {
@@ -44,7 +50,7 @@ RunState::RunState(const Model& model, const SolverOptions& options, Stepper& st
       stepper_(stepper),
       observers_(observers),
       y_(initial_state(model)),
-      armed_(model.limiters.size(), true),
+      armed_(initially_armed(model)),
       neighbours_(model.size() >= 2 ? circular_neighbours(y_, model.size())
                                     : std::vector<Neighbours>{}),
       times_(std::max(options.samples_per_step, 2) + 1),
@@ -131,6 +137,7 @@ RunResult RunState::finish(const EndView& end, const std::optional<Graze>& graze
   st.dop853_steps = s.dop853_steps;
   st.t_reached = end.t_reached;
   for (RunObserver* o : observers_) o->on_end(end, result);
+  result.summary.armed = armed_;
   st.wall_ms = std::chrono::duration<double, std::milli>(Clock::now() - started_).count();
   return result;
 }

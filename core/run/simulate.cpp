@@ -69,10 +69,12 @@ std::vector<Crossing> Simulation::search_step(double a, double b, int& first) {
   times_[m] = b;
   states_[m] = stepper_.y();
   // Samples inside the step for the watches near their roots; a step where every watch stays
-  // far from zero is searched at its end alone.
-  const bool calm =
-      !opt_.sample_every_step && finder_.calm(in.watches(), model_, in.bodies(), a, b, states_[m]);
-  first = calm ? m : 0;
+  // far from zero, or where the stepper's polynomials serve every watch, is searched at its end
+  // alone.
+  const bool alone = finder_.served_by_polynomials(in.watches(), in.bodies(), stepper_) ||
+                     (!opt_.sample_every_step &&
+                      finder_.calm(in.watches(), model_, in.bodies(), a, b, states_[m]));
+  first = alone ? m : 0;
   for (int k = 0; k < m; ++k) times_[k] = a + (b - a) * (k + 1) / (m + 1);
   for (int k = first; k < m; ++k) stepper_.dense(times_[k], states_[k]);
   return finder_.find(in.watches(), model_, in.bodies(), stepper_,

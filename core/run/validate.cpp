@@ -102,7 +102,7 @@ std::optional<FieldError> check_pellets(const Model& m, const Limits& limits) {
   return std::nullopt;
 }
 
-// Limiter i's re-arming: a mobile one names another limiter, a fixed one none.
+// Limiter i's re-arming: a mobile one names another limiter, a fixed one none (and is armed).
 std::optional<FieldError> check_rearm(const Model& m, int i) {
   const Limiter& l = m.limiters[i];
   const int nl = static_cast<int>(m.limiters.size());
@@ -115,6 +115,9 @@ std::optional<FieldError> check_rearm(const Model& m, int i) {
     }
   } else if (l.rearm_by != -1) {
     return FieldError{limiter_field(i, "rearm_by"), "applies only to a mobile limiter"};
+  } else if (!l.armed) {
+    return FieldError{limiter_field(i, "armed"),
+                      "only a mobile limiter may start disarmed: a fixed one is always armed"};
   }
   return std::nullopt;
 }

@@ -43,21 +43,22 @@ def test_events_are_the_columns_of_the_csv(tmp_path):
     run_cli("simulate", "--preset", "paper", "-o", tmp_path / "run.csv")
     rows = list(csv.DictReader(io.StringIO((tmp_path / "run.csv").read_text())))
     events = run.events
-    assert list(events) == ["t", "kind", "pellets", "limiter", "phi", "dphi_before", "dphi_after"]
+    assert list(events) == list(rows[0])  # the CSV's columns in its order
     assert {len(a) for a in events.values()} == {len(rows)} and len(rows) > 20
     assert events["t"].dtype == np.float64 and events["limiter"].dtype == np.int64
-
-    def numbers(text, kind):
-        return tuple(kind(x) for x in text.split(";")) if text else ()
-
+    assert events["pellet"].dtype == np.int64 and events["dphi_before"].dtype == np.float64
     for k, row in enumerate(rows):
+        assert events["event"][k] == int(row["event"])
         assert events["t"][k] == float(row["t"])  # 17 digits: the same double
         assert events["kind"][k] == row["kind"]
-        assert events["pellets"][k] == numbers(row["pellets"], int)
+        assert events["pellet"][k] == int(row["pellet"])
         assert events["limiter"][k] == int(row["limiter"])
         assert events["phi"][k] == float(row["phi"])
-        assert events["dphi_before"][k] == numbers(row["dphi_before"], float)
-        assert events["dphi_after"][k] == numbers(row["dphi_after"], float)
+        assert events["dphi_before"][k] == float(row["dphi_before"])
+        assert events["dphi_after"][k] == float(row["dphi_after"])
+    collisions = events["kind"] == "collision"
+    assert collisions.any()  # the paper scene's collisions: two rows each, one per pellet
+    assert np.all(np.unique(events["event"][collisions], return_counts=True)[1] == 2)
 
 
 def test_trajectories_are_the_samples_of_the_csv(tmp_path):

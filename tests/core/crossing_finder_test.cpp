@@ -232,6 +232,54 @@ TEST(CrossingFinder, APolynomialStepReportsItsNearMissAtTheMinimum) {
   EXPECT_NEAR(f.finder.first_graze()->value, 1e-11, 1e-15);
 }
 
+// Every watch linear and armed on a step given as polynomials: the step needs no samples, and a
+// root in the second of two such steps is found from the track the first left at its end.
+TEST(CrossingFinder, AStepItsPolynomialsServeIsSearchedAtItsEndAlone) {
+  Finder f;
+  const ToyStep sampled = ToyStep::polynomial(0.0, 1.0, {1.0, -0.5}, false);
+  f.begin(sampled);
+  EXPECT_FALSE(f.finder.served_by_polynomials(f.watches, f.bodies, sampled));
+  const ToyStep first = ToyStep::polynomial(0.0, 1.0, {1.0, -0.5}, true);
+  EXPECT_TRUE(f.finder.served_by_polynomials(f.watches, f.bodies, first));
+  EXPECT_TRUE(f.next(first, 0).empty());
+  const ToyStep second = ToyStep::polynomial(1.0, 2.0, {0.5, -0.25, -1.0}, true);
+  EXPECT_TRUE(f.finder.served_by_polynomials(f.watches, f.bodies, second));
+  const std::vector<Crossing> found = f.next(second, 0);
+  ASSERT_EQ(found.size(), 1u);
+  EXPECT_NEAR(found[0].t, 1.0 + (-0.25 + std::sqrt(0.0625 + 2.0)) / 2.0, 1e-14);
+  expect_root_to_round_off(second, found[0].t);
+}
+
+// A watch that starts on its root is not armed: its step is sampled until it is positive.
+TEST(CrossingFinder, AnUnarmedWatchIsNotServedByPolynomials) {
+  Finder f;
+  const ToyStep step = ToyStep::polynomial(0.0, 1.0, {0.0, 1.0, -2.0}, true);
+  f.begin(step);
+  EXPECT_FALSE(f.finder.served_by_polynomials(f.watches, f.bodies, step));
+}
+
+// (τ − 0.1)(τ − 0.2)···(τ − 0.8): seven turning points, the first root at 0.1, found with the
+// Bernstein coefficients' sign changes pruning the turning points' search.
+TEST(PolynomialRoots, FindsTheFirstRootOfAPolynomialWithManyTurningPoints) {
+  std::vector<double> c = {1.0};
+  for (int r = 1; r <= 8; ++r) {
+    std::vector<double> next(c.size() + 1, 0.0);
+    for (std::size_t k = 0; k < c.size(); ++k) {
+      next[k] -= 0.1 * r * c[k];
+      next[k + 1] += c[k];
+    }
+    c = next;
+  }
+  const auto b = first_polynomial_crossing(c, 1.0);
+  ASSERT_TRUE(b);
+  EXPECT_NEAR(b->hi, 0.1, 1e-14);
+  EXPECT_LE(b->hi - b->lo, 4.0 * kEps);
+  // Short of the first root: no crossing, and no minimum before it.
+  PolynomialMinima minima;
+  EXPECT_FALSE(first_polynomial_crossing(c, 0.09, &minima));
+  EXPECT_EQ(minima.count, 0);
+}
+
 TEST(PolynomialRoots, TheFirstCrossingsBracketIsRoundOffWide) {
   const std::vector<double> c = {0.21, -1.0, 1.0};  // (τ − 0.3)(τ − 0.7)
   const auto b = first_polynomial_crossing(c, 1.0);

@@ -79,6 +79,28 @@ TEST(Limiter, APelletStartingOnALimiterStrikesItAtTimeZero) {
   EXPECT_DOUBLE_EQ(run.events[0].dphi_after[0], -1.0);
 }
 
+// A pellet started at rest exactly on a limiter's angle lies on the boundary of the two turns the
+// limiter closes, so its unwrapped angle does not say which side it is on (MODEL.md leaves it
+// open); it is taken to rest against the limiter, on the side its free acceleration presses it
+// to. Here gravity pulls it toward the bottom, so it rests on the limiter from above, at the
+// angle, for good; a start a little off the angle on the bottom side slides down instead.
+TEST(Limiter, APelletStartedAtRestOnALimiterRestsOnTheSideItIsPressedTo) {
+  for (double angle : {M_PI / 4, -M_PI / 4}) {
+    Model m = testing::one_pellet(0.0, angle, 0.0);
+    m.limiters = {{angle, 0.5, false, -1, {}}};
+    const RunResult run = simulate(m, testing::recorded(m, 1.0));
+    ASSERT_EQ(run.summary.final.size(), 1u);
+    EXPECT_EQ(run.summary.final[0].state, PelletState::resting_at_limiter) << angle;
+    EXPECT_EQ(run.summary.final[0].phi, angle);
+    EXPECT_TRUE(testing::events_of(run, EventKind::limiter).empty());
+
+    m.pellets[0].phi0 = angle * (1.0 - 1e-3);
+    const RunResult off = simulate(m, testing::recorded(m, 0.2));
+    EXPECT_EQ(off.summary.final[0].state, PelletState::sliding) << angle;
+    EXPECT_LT(std::abs(off.summary.final[0].phi), std::abs(angle) - 0.01);
+  }
+}
+
 TEST(Limiter, LimiterActingOnOnePelletLetsTheOtherPass) {
   Model m = testing::one_pellet(0.0, 0.0, 5.0);
   m.pellets.push_back(m.pellets[0]);

@@ -126,5 +126,43 @@ TEST(OrbitGrazing, NoRestOnTheStopFromItsFarSideAndTheGrazingIsReported) {
   EXPECT_NEAR(g.front(), grazing, 1e-5);
 }
 
+// From the impacting side the branch used to creep toward the grazing (a multiplier running to
+// −∞, steps shrinking: the square root of Nordmark's map) and stop short of it. Now it crosses:
+// the grazing is reported where A = δ, and the branch goes on with non-impacting motions to `to`.
+// The scenes of reproducers 1 and 3 from their impacting ends, each started on the impacting
+// motion a 400-period run settles on.
+TEST(OrbitGrazing, TheBranchCrossesTheGrazingFromTheImpactingSide) {
+  struct Case {
+    Model model;
+    double to, sign;
+  };
+  const Case cases[] = {
+      {stop_scene(0.01035936, 13.288340754210061, M_PI / 2, 0.000528, 0.0, 0.001056, 0.7),
+       15.06011952143807, 1.0},
+      {stop_scene(0.0005139459, 3.3220851885525153, 0.0, 0.0005239, 0.0, 0.0010478, 0.8),
+       3.0563183734683137, -1.0}};
+  for (const Case& c : cases) {
+    const Reproducer r{c.model, {}, c.to};
+    const double grazing = std::sqrt(kG / kR + c.sign * r.f() / r.delta());
+    OrbitSpec spec;
+    spec.transient = 400;
+    const PeriodicOrbit start = find_periodic_orbit(c.model, tight(), spec);
+    ASSERT_TRUE(start.converged) << start.message;
+    ASSERT_EQ(start.impacts_per_period, 1.0);
+    ContinuationSpec cs;
+    cs.parameter = "model.pellets[0].Omega";
+    cs.to = c.to;
+    cs.max_points = 300;
+    const OrbitBranch b = continue_orbit(c.model, tight(), start, cs);
+    const std::vector<double> g = grazings(b);
+    ASSERT_FALSE(g.empty()) << b.message;
+    EXPECT_NEAR(g.front(), grazing, 1e-5);
+    EXPECT_TRUE(b.reached) << b.message;
+    ASSERT_FALSE(b.points.empty());
+    EXPECT_EQ(b.points.front().impacts_per_period, 1.0);
+    EXPECT_EQ(b.points.back().impacts_per_period, 0.0);
+  }
+}
+
 }  // namespace
 }  // namespace vibro

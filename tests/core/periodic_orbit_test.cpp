@@ -252,9 +252,6 @@ TEST(PeriodicOrbit, BadRequestsNameTheirField) {
   Model incommensurate = impact_oscillator(5.0);
   incommensurate.pellets.push_back({0.1, 1.0, 0.0, {0.2, 7.3, 0.0}});
   EXPECT_EQ(validate_orbit(incommensurate, {})->field, "model.pellets[1].Omega");
-  Model mobile = impact_oscillator(5.0);
-  mobile.limiters.push_back({1.0, 0.5, true, 0, {}});
-  EXPECT_EQ(validate_orbit(mobile, {})->field, "model.limiters[1].mobile");
   EXPECT_FALSE(validate_orbit(impact_oscillator(5.0), {}));
 }
 

@@ -34,6 +34,35 @@ std::string field_of(const json& scene) {
   return "(accepted)";
 }
 
+// A mobile limiter's armed state: a limiter may start disarmed (a scene started on a motion's
+// section), a guess carries the section's armed set, and both read back through the canonical
+// form; a fixed limiter cannot be disarmed, and an armed set holds booleans.
+TEST(OrbitJson, ArmedStatesOfMobileLimitersAreRead) {
+  json s = nlohmann::json::parse(std::string(*preset_json("paper")));
+  s["model"]["limiters"][0]["armed"] = false;
+  s["periodic_orbit"] = {
+      {"periods", 6},
+      {"guess", {{{"phi", 1.42}, {"dphi", 3.43}}, {{"phi", 1.13}, {"dphi", 1.1}}}},
+      {"armed", {false, true}}};
+  const SceneOrError read = scene_from_json(s);
+  ASSERT_TRUE(std::holds_alternative<Scene>(read)) << std::get<FieldError>(read).message;
+  const Scene& scene = std::get<Scene>(read);
+  EXPECT_FALSE(scene.model.limiters[0].armed);
+  EXPECT_TRUE(scene.model.limiters[1].armed);
+  EXPECT_EQ(scene.periodic_orbit->orbit.armed, (std::vector<bool>{false, true}));
+  const json canonical = scene_to_json(scene);
+  EXPECT_EQ(canonical["model"]["limiters"][0]["armed"], false);
+  EXPECT_FALSE(canonical["model"]["limiters"][1].contains("armed"));
+  EXPECT_EQ(canonical["periodic_orbit"]["armed"], json({false, true}));
+
+  json fixed = s;
+  fixed["model"]["limiters"][1]["armed"] = false;
+  EXPECT_EQ(field_of(fixed), "model.limiters[1].armed");
+  json text = s;
+  text["periodic_orbit"]["armed"] = {"no", true};
+  EXPECT_EQ(field_of(text), "periodic_orbit.armed[0]");
+}
+
 TEST(OrbitJson, ASceneAsksForAnOrbitAndItsContinuation) {
   const SceneOrError read = scene_from_json(orbit_scene());
   ASSERT_TRUE(std::holds_alternative<Scene>(read)) << std::get<FieldError>(read).message;

@@ -171,30 +171,56 @@ export class SceneForm {
         hint: "impacts on it re-arm this one",
       });
       const rearmSelect = rearm.querySelector("select");
+      // Only a mobile limiter may start disarmed (a scene started on a periodic motion's section).
+      const armed = checkField({
+        path: `${path}.armed`,
+        label: 'armed at start',
+        checked: l.armed !== false,
+        defaultOn: true
+      });
+      const armedBox = armed.querySelector('input');
+      armedBox.disabled = !l.mobile;
       return card(
-        path,
-        `Limiter ${i + 1}`,
-        removeButton(`Remove limiter ${i + 1}`, false, () => this.restructure((s) => removeLimiter(s, i), "[data-action=add-limiter]")),
-        grid(
-          numberField({ path: `${path}.angle`, label: "angle", unit: "rad", value: l.angle, angle: true, aria: `Limiter ${i + 1} angle (rad)` }),
-          numberField({ path: `${path}.k`, label: "k — restitution", value: l.k, hint: "[0, 1]", aria: `Limiter ${i + 1} restitution k` }),
-          checkField({
-            path: `${path}.mobile`,
-            label: "mobile",
-            checked: l.mobile,
-            onChange: (e) => {
-              rearmSelect.disabled = !e.target.checked;
-            },
-          }),
-          rearm,
-          pelletChecks({
-            path: `${path}.pellets`,
-            legend: `Limiter ${i + 1} acts on pellets`,
-            count: pelletCount,
-            selected: l.pellets ?? [],
-            hint: "none checked: all pellets",
-          }),
-        ),
+          path,
+          `Limiter ${i + 1}`,
+          removeButton(
+              `Remove limiter ${i + 1}`, false,
+              () => this.restructure((s) => removeLimiter(s, i), '[data-action=add-limiter]')),
+          grid(
+              numberField({
+                path: `${path}.angle`,
+                label: 'angle',
+                unit: 'rad',
+                value: l.angle,
+                angle: true,
+                aria: `Limiter ${i + 1} angle (rad)`
+              }),
+              numberField({
+                path: `${path}.k`,
+                label: 'k — restitution',
+                value: l.k,
+                hint: '[0, 1]',
+                aria: `Limiter ${i + 1} restitution k`
+              }),
+              checkField({
+                path: `${path}.mobile`,
+                label: 'mobile',
+                checked: l.mobile,
+                onChange: (e) => {
+                  rearmSelect.disabled = !e.target.checked;
+                  armedBox.disabled = !e.target.checked;
+                },
+              }),
+              rearm,
+              armed,
+              pelletChecks({
+                path: `${path}.pellets`,
+                legend: `Limiter ${i + 1} acts on pellets`,
+                count: pelletCount,
+                selected: l.pellets ?? [],
+                hint: 'none checked: all pellets',
+              }),
+              ),
       );
     });
     const add = addButton("limiter", "+ Limiter", n >= MAX_LIMITERS, () =>
