@@ -299,6 +299,12 @@ std::optional<FieldError> validate_follow(const Model& model, const Continuation
   const std::string field = "periodic_orbit.continuation.";
   if (spec.kind == BifurcationKind::neimark_sacker)
     return FieldError{field + "follow", "expected \"fold\", \"period_doubling\" or \"grazing\""};
+  // A mobile limiter's armed state changes along the motion; the walk keeps the scene's own.
+  for (std::size_t l = 0; l < model.limiters.size(); ++l)
+    if (model.limiters[l].mobile)
+      return FieldError{"model.limiters[" + std::to_string(l) + "].mobile",
+                        "bifurcation curves are followed with fixed limiters only: the curve's "
+                        "section would need the mobile limiter's armed state at its phase"};
   const std::string p2 = field + "parameter2.";
   const std::optional<double> own = get_parameter(model, spec.parameter2);
   if (!own)

@@ -154,6 +154,11 @@ TEST(BifurcationCurve, BadFollowsNameTheirField) {
   EXPECT_EQ(field({BifurcationKind::fold, "model.limiters[0].k", NAN, 0.9}), p2 + "from");
   EXPECT_EQ(field({BifurcationKind::fold, "model.limiters[0].k", 0.85, 0.9}), p2 + "from");
   EXPECT_EQ(field({BifurcationKind::fold, "model.limiters[0].k", 0.5, 0.9}), "");
+  Model mobile = m;
+  mobile.limiters[0].mobile = true;
+  EXPECT_EQ(
+      validate_follow(mobile, c, {BifurcationKind::fold, "model.limiters[0].k", 0.5, 0.9})->field,
+      "model.limiters[0].mobile");
 }
 
 // Without the named bifurcation on the branch there is no curve, and the message says so; a
