@@ -4,9 +4,9 @@
 // motions and their stability"), to stdout without -o; or draws it (render/orbit_figure.h): the
 // continued branch, over the brute-force diagram when the scene's sweep is over the same parameter
 // (run here on every core); the bifurcation curves it follows, over the regime map when the sweep
-// spans the same two parameters; or else one return of the motion in the scene's plots. While a branch
-// is followed or a sweep runs, a progress bar shows on stderr when that is a terminal. Exits 1 when
-// no orbit was found: the JSON then says why.
+// spans the same two parameters; or else one return of the motion in the scene's plots. While a
+// branch is followed or a sweep runs, a progress bar shows on stderr when that is a terminal. Exits
+// 1 when no orbit was found: the JSON then says why.
 #include <unistd.h>
 
 #include <algorithm>
