@@ -3,9 +3,10 @@
 // parameter when it asks for a continuation, and writes the result as JSON (API.md, "Periodic
 // motions and their stability"), to stdout without -o; or draws it (render/orbit_figure.h): the
 // continued branch, over the brute-force diagram when the scene's sweep is over the same parameter
-// (run here on every core), or else one return of the motion in the scene's plots. While a branch
-// is followed or a sweep runs, a progress bar shows on stderr when that is a terminal. Exits 1 when
-// no orbit was found: the JSON then says why.
+// (run here on every core); the bifurcation curves it follows, over the regime map when the sweep
+// spans the same two parameters; or else one return of the motion in the scene's plots. While a
+// branch is followed or a sweep runs, a progress bar shows on stderr when that is a terminal. Exits
+// 1 when no orbit was found: the JSON then says why.
 #include <unistd.h>
 
 #include <algorithm>
@@ -31,9 +32,12 @@ namespace {
 // The scene's sweep, when it draws beneath the branch: the same parameter, one axis.
 std::optional<SweepResult> sweep_beneath(const Scene& scene, const OrbitRequest& request,
                                          ProgressBar& bar) {
-  if (!request.continuation || !scene.sweep || scene.sweep->axis2 ||
-      scene.sweep->axis.parameter != request.continuation->parameter)
-    return std::nullopt;
+  if (!request.continuation || !scene.sweep) return std::nullopt;
+  const bool one_axis =
+      !scene.sweep->axis2 && scene.sweep->axis.parameter == request.continuation->parameter;
+  const bool curves =
+      request.follow && sweep_of_curves(*scene.sweep, *request.continuation, *request.follow);
+  if (!one_axis && !curves) return std::nullopt;
   SweepControl control;
   control.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (isatty(STDERR_FILENO))
@@ -52,8 +56,12 @@ std::optional<std::string> orbit_image(const Scene& scene, const OrbitRequest& r
                                        const OrbitResult& result,
                                        const std::optional<SweepResult>& sweep,
                                        ImageFormat format) {
-  const OrbitFigure figure{&result.branch, request.continuation ? &*request.continuation : nullptr,
-                           sweep ? &*scene.sweep : nullptr, sweep ? &*sweep : nullptr};
+  const OrbitFigure figure{&result.branch,
+                           request.continuation ? &*request.continuation : nullptr,
+                           sweep ? &*scene.sweep : nullptr,
+                           sweep ? &*sweep : nullptr,
+                           &result.curves,
+                           request.follow ? &*request.follow : nullptr};
   return drawn_bytes(draws_branch(figure)
                          ? render_branch_figure(scene.figure, scene.model, figure, format)
                          : server::draw_orbit_return(scene, result.orbit, format));

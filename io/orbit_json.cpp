@@ -36,7 +36,43 @@ std::vector<bool> read_armed(const json& list, const std::string& path) {
   return armed;
 }
 
-ContinuationSpec read_continuation(const json& j, const std::string& path) {
+BifurcationKind followed_kind(const std::string& name, const std::string& path) {
+  for (BifurcationKind k :
+       {BifurcationKind::fold, BifurcationKind::period_doubling, BifurcationKind::grazing})
+    if (name == bifurcation_kind_name(k)) return k;
+  throw FieldException(
+      path, "expected \"fold\", \"period_doubling\" or \"grazing\", got \"" + name + "\"");
+}
+
+// The continuation's "follow" and "parameter2", which come together.
+std::optional<FollowSpec> read_follow(Fields& f) {
+  const auto kind = f.string("follow", 40);
+  const json* second = f.value("parameter2");
+  if (!kind && !second) return std::nullopt;
+  if (!kind)
+    throw FieldException(f.path("follow"),
+                         "is required with parameter2: \"fold\", \"period_doubling\" or "
+                         "\"grazing\", the bifurcation to follow in it");
+  if (!second)
+    throw FieldException(f.path("parameter2"),
+                         "is required with follow: {\"parameter\", \"from\", \"to\"}, the "
+                         "second parameter to follow the bifurcation in");
+  FollowSpec spec;
+  spec.kind = followed_kind(*kind, f.path("follow"));
+  Fields p(*second, f.path("parameter2"));
+  const auto parameter = p.string("parameter", 200);
+  if (!parameter)
+    throw FieldException(p.path("parameter"),
+                         "is required: a field path such as \"model.limiters[0].k\"");
+  spec.parameter2 = *parameter;
+  spec.from = p.required_number("from");
+  spec.to = p.required_number("to");
+  p.done();
+  return spec;
+}
+
+ContinuationSpec read_continuation(const json& j, const std::string& path,
+                                   std::optional<FollowSpec>& follow) {
   Fields f(j, path);
   ContinuationSpec c;
   const auto parameter = f.string("parameter", 200);
@@ -46,6 +82,7 @@ ContinuationSpec read_continuation(const json& j, const std::string& path) {
   c.parameter = *parameter;
   c.to = f.required_number("to");
   c.max_points = whole(f, "max_points", c.max_points);
+  follow = read_follow(f);
   f.done();
   return c;
 }
@@ -113,6 +150,21 @@ json bifurcations_json(const std::vector<Bifurcation>& bifurcations) {
   return list;
 }
 
+json curves_json(const std::vector<BifurcationCurve>& curves) {
+  json list = json::array();
+  for (const BifurcationCurve& c : curves) {
+    json points = json::array();
+    for (const CurvePoint& p : c.points)
+      points.push_back({{"value", finite_number(p.value)}, {"value2", finite_number(p.value2)}});
+    list.push_back({{"kind", std::string(bifurcation_kind_name(c.kind))},
+                    {"points", std::move(points)},
+                    {"reached_from", c.reached_from},
+                    {"reached_to", c.reached_to},
+                    {"message", c.message}});
+  }
+  return list;
+}
+
 }  // namespace
 
 OrbitRequest read_orbit_request(const json& j, std::size_t max_pellets, std::size_t max_limiters) {
@@ -127,7 +179,7 @@ OrbitRequest read_orbit_request(const json& j, std::size_t max_pellets, std::siz
     spec.armed = read_armed(*armed, f.path("armed"));
   spec.max_iterations = whole(f, "max_iterations", spec.max_iterations);
   if (const json* c = f.value("continuation"))
-    r.continuation = read_continuation(*c, f.path("continuation"));
+    r.continuation = read_continuation(*c, f.path("continuation"), r.follow);
   f.done();
   return r;
 }
@@ -142,15 +194,22 @@ json orbit_request_to_json(const OrbitRequest& r) {
     j["continuation"] = {{"parameter", r.continuation->parameter},
                          {"to", r.continuation->to},
                          {"max_points", r.continuation->max_points}};
+  if (r.continuation && r.follow) {
+    j["continuation"]["follow"] = std::string(bifurcation_kind_name(r.follow->kind));
+    j["continuation"]["parameter2"] = {
+        {"parameter", r.follow->parameter2}, {"from", r.follow->from}, {"to", r.follow->to}};
+  }
   return j;
 }
 
 json orbit_result_json(const OrbitResult& result) {
-  return {{"orbit", orbit_json(result.orbit)},
-          {"branch", branch_json(result.branch.points)},
-          {"bifurcations", bifurcations_json(result.branch.bifurcations)},
-          {"reached", result.branch.reached},
-          {"message", result.branch.message}};
+  json j = {{"orbit", orbit_json(result.orbit)},
+            {"branch", branch_json(result.branch.points)},
+            {"bifurcations", bifurcations_json(result.branch.bifurcations)},
+            {"reached", result.branch.reached},
+            {"message", result.branch.message}};
+  if (!result.curves.empty()) j["curves"] = curves_json(result.curves);
+  return j;
 }
 
 }  // namespace vibro

@@ -18,8 +18,9 @@ OrbitRequest read_orbit_request(const nlohmann::json& json, std::size_t max_pell
                                 std::size_t max_limiters);
 nlohmann::json orbit_request_to_json(const OrbitRequest& request);
 
-// {"orbit": {...}, "branch": [...], "bifurcations": [...], "reached", "message"}; the branch and
-// bifurcations are empty arrays when nothing was continued. Non-finite numbers are null.
+// {"orbit": {...}, "branch": [...], "bifurcations": [...], "reached", "message"}, and "curves"
+// when the request follows a bifurcation; the branch and bifurcations are empty arrays when
+// nothing was continued. Non-finite numbers are null.
 nlohmann::json orbit_result_json(const OrbitResult& result);
 
 }  // namespace vibro

@@ -18,11 +18,15 @@ std::optional<FieldError> check_branch_time(const Model& model, const OrbitReque
   const std::string field = "periodic_orbit.continuation.";
   const ContinuationSpec& spec = *request.continuation;
   const int periods = request.orbit.periods;
-  const double total = kMapsPerPoint * spec.max_points * periods;
+  // A curve's point costs some Newton iterations, each 3 + 2N maps (the test function's
+  // derivatives by differences): about twice a branch point's.
+  const double per_point = request.follow ? 3.0 * kMapsPerPoint : kMapsPerPoint;
+  const double total = per_point * spec.max_points * periods;
   if (total > limits.sweep_periods)
     return FieldError{field + "max_points",
                       "the branch may take some " + std::to_string(static_cast<long>(total)) +
-                          " forcing periods (16 maps × max_points × periods), over the limit of " +
+                          " forcing periods (" + std::to_string(static_cast<int>(per_point)) +
+                          " maps × max_points × periods), over the limit of " +
                           std::to_string(static_cast<long>(limits.sweep_periods))};
   Model end = model;
   set_parameter(end, spec.parameter, spec.to);
@@ -42,6 +46,8 @@ std::optional<FieldError> validate_orbit_request(const Model& model, const Orbit
   if (auto e = validate_orbit(model, request.orbit, limits)) return e;
   if (!request.continuation) return std::nullopt;
   if (auto e = validate_continuation(model, *request.continuation, limits)) return e;
+  if (request.follow)
+    if (auto e = validate_follow(model, *request.continuation, *request.follow, limits)) return e;
   return check_branch_time(model, request, limits);
 }
 
@@ -56,10 +62,22 @@ OrbitResult run_orbit_request(const Model& model, const SimOptions& options,
   if (!result.orbit.converged) {
     result.branch.message =
         "no branch: the orbit to start from was not found (" + result.orbit.message + ")";
+    if (request.follow)
+      result.curves.push_back({request.follow->kind, {}, false, false, result.branch.message});
     return result;
   }
+  const double share = request.follow ? 0.5 : 1.0;
+  const auto part = [&](double offset) {
+    return std::function<void(double)>([&progress, offset, share](double done) {
+      if (progress) progress(offset + share * done);
+    });
+  };
   result.branch =
-      continue_orbit(model, options, result.orbit, *request.continuation, progress, cancel);
+      continue_orbit(model, options, result.orbit, *request.continuation, part(0.0), cancel);
+  if (request.follow)
+    result.curves.push_back(follow_bifurcation(model, options, request.orbit.periods,
+                                               *request.continuation, result.branch,
+                                               *request.follow, part(0.5), cancel));
   return result;
 }
 

@@ -7,6 +7,7 @@
 #include <functional>
 #include <optional>
 
+#include "core/analysis/bifurcation_curve.h"
 #include "core/analysis/orbit_continuation.h"
 #include "core/analysis/periodic_orbit.h"
 #include "core/model/model.h"
@@ -18,6 +19,9 @@ namespace vibro {
 struct OrbitRequest {
   OrbitSpec orbit;  // a scene without "periodic_orbit" gets these defaults
   std::optional<ContinuationSpec> continuation;  // absent: the orbit alone
+  // The continuation's "follow" and "parameter2": a bifurcation of the branch to follow in a
+  // second parameter (core/analysis/bifurcation_curve.h); only with a continuation.
+  std::optional<FollowSpec> follow;
 };
 
 // Why the request cannot run on this model, naming the field ("periodic_orbit.periods",
@@ -31,9 +35,13 @@ struct OrbitResult {
   // Continued from the orbit when the request asks for it and the orbit converged; otherwise
   // no points, and its message says why when a continuation was asked for.
   OrbitBranch branch;
+  // The followed bifurcation's curve when the request asks for one (without points, its message
+  // saying why, when there was no branch to take it from).
+  std::vector<BifurcationCurve> curves;
 };
 
-// Finds the orbit, then follows it when the request asks. `progress` (0 to 1) and `cancel` are
+// Finds the orbit, then follows it when the request asks, and then the bifurcation to follow.
+// `progress` (0 to 1, the branch and the curve each half when both are made) and `cancel` are
 // the continuation's (core/analysis/orbit_continuation.h). Call validate_orbit_request first.
 OrbitResult run_orbit_request(const Model& model, const SimOptions& options,
                               const OrbitRequest& request,

@@ -211,7 +211,7 @@ struct PlotWriter {
     j["pellet"] = p.pellet;
   }
   void operator()(const BranchPlot& p) const {
-    j["kind"] = "branch";
+    j["kind"] = p.curves ? "bifurcation_curves" : "branch";
     j["pellet"] = p.pellet;
   }
 };

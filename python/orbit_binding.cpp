@@ -56,8 +56,11 @@ class PeriodicOrbitResult {
   py::object branch_image(const std::string& format_name) const {
     const ImageFormat format = image_format(format_name);
     const OrbitRequest& request = *scene_.periodic_orbit;
-    const OrbitFigure figure{&result_.branch,
-                             request.continuation ? &*request.continuation : nullptr};
+    const OrbitFigure figure{
+        .branch = &result_.branch,
+        .continuation = request.continuation ? &*request.continuation : nullptr,
+        .curves = &result_.curves,
+        .follow = request.follow ? &*request.follow : nullptr};
     if (!draws_branch(figure)) return py::none();
     RenderResult image;
     {

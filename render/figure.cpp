@@ -120,6 +120,7 @@ struct PanelDrawer {
   }
   Drawn operator()(const BranchPlot& plot) const {
     if (!data.branch) return FieldError{kind_field, "needs a continued periodic motion"};
+    if (plot.curves) return curves(plot);
     if (!data.sweep) {
       render::draw_branch_panel(cr, input(plot), *data.branch);
       return std::nullopt;
@@ -127,6 +128,34 @@ struct PanelDrawer {
     // Over the sweep beneath it: that sweep's bifurcation diagram with the branch drawn on it.
     const SweepPlot diagram{SweepView::bifurcation, plot.pellet, plot.coordinate, plot.title};
     render::draw_sweep_points_panel(cr, input(diagram), *data.sweep, &*data.branch);
+    return std::nullopt;
+  }
+
+  // Bifurcation curves, over the regime map of a 2-D sweep of the same two parameters if given.
+  Drawn curves(const BranchPlot& plot) const {
+    const BranchData& branch = *data.branch;
+    if (!branch.curves || !branch.follow)
+      return FieldError{kind_field,
+                        "needs bifurcation curves (periodic_orbit.continuation.follow)"};
+    const SweepSpec* spec = data.sweep ? &data.sweep->spec : nullptr;
+    const std::string& p1 = branch.continuation.parameter;
+    const std::string& p2 = branch.follow->parameter2;
+    const bool same =
+        spec && spec->axis2 && spec->axis.parameter == p1 && spec->axis2->parameter == p2;
+    const bool swapped =
+        spec && spec->axis2 && spec->axis.parameter == p2 && spec->axis2->parameter == p1;
+    if (!same && !swapped) {
+      render::draw_curves_panel(cr, input(plot), branch);
+      return std::nullopt;
+    }
+    const SweepPlot map{SweepView::regime_map, plot.pellet, plot.coordinate,
+                        plot.title.empty() ? "Bifurcation curves over the regime map" : plot.title};
+    const render::Style& style = frame.style;
+    render::draw_regime_map_panel(
+        cr, input(map), *data.sweep,
+        [&](const render::Transform& tr, std::vector<render::LegendEntry>& legend) {
+          render::draw_bifurcation_curves(cr, tr, *branch.curves, swapped, style, legend);
+        });
     return std::nullopt;
   }
 };

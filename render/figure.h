@@ -16,6 +16,7 @@
 #include <string_view>
 #include <vector>
 
+#include "core/analysis/bifurcation_curve.h"
 #include "core/analysis/orbit_continuation.h"
 #include "core/analysis/sweep.h"
 #include "core/analysis/work_precision.h"
@@ -77,10 +78,13 @@ struct SweepData {
   const SweepResult& result;
 };
 
-// A continued periodic motion and the continuation that made it.
+// A continued periodic motion and the continuation that made it; with the bifurcation curves
+// followed from it in a second parameter, when a bifurcation_curves panel draws them.
 struct BranchData {
   const OrbitBranch& branch;
   const ContinuationSpec& continuation;
+  const std::vector<BifurcationCurve>* curves = nullptr;
+  const FollowSpec* follow = nullptr;
 };
 
 // What panels that draw more than the run draw, each part whole or absent: work-precision panels

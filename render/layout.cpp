@@ -81,8 +81,10 @@ std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
       const auto* time = std::get_if<TimePlot>(&plot);
       const int stacked = time && time->show_dphi ? 2 : 1;
       const auto* sweep = std::get_if<SweepPlot>(&plot);
-      const bool map =
-          sweep && (sweep->view == SweepView::regime_map || sweep->view == SweepView::lyapunov_map);
+      const auto* curves = std::get_if<BranchPlot>(&plot);
+      const bool map = (sweep && (sweep->view == SweepView::regime_map ||
+                                  sweep->view == SweepView::lyapunov_map)) ||
+                       (curves && curves->curves);
       layouts.push_back(panel_layout(cells[i], style, stacked, map ? kMapLegendColumn : 0.0));
     }
   }

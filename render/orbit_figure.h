@@ -6,6 +6,7 @@
 // and draws it with render_figure.
 #pragma once
 
+#include "core/analysis/bifurcation_curve.h"
 #include "core/analysis/orbit_continuation.h"
 #include "core/analysis/periodic_orbit.h"
 #include "render/figure.h"
@@ -17,13 +18,22 @@ struct OrbitFigure {
   const ContinuationSpec* continuation = nullptr;
   const SweepSpec* sweep_spec = nullptr;  // drawn beneath the branch, if given
   const SweepResult* sweep = nullptr;
+  // Bifurcation curves followed from the branch: given (with their spec), the figure is them
+  // (kind "bifurcation_curves"), over the regime map of a 2-D sweep of the same two parameters.
+  const std::vector<BifurcationCurve>* curves = nullptr;
+  const FollowSpec* follow = nullptr;
 };
+
+// Whether a 2-D sweep spans the same two parameters as the curves (in either order).
+bool sweep_of_curves(const SweepSpec& sweep, const ContinuationSpec& continuation,
+                     const FollowSpec& follow);
 
 // Whether the figure is the continued branch (a continuation with points); else it is one
 // return of the motion.
 bool draws_branch(const OrbitFigure& orbit);
 
-// The continued branch in one panel; `figure` is the scene's (its size). Call when draws_branch.
+// The continued branch (or its curves) in one panel; `figure` is the scene's (its size). Call when
+// draws_branch.
 RenderResult render_branch_figure(const FigureSpec& figure, const Model& model,
                                   const OrbitFigure& orbit, ImageFormat format);
 

@@ -6,6 +6,9 @@
 
 #include <cairo.h>
 
+#include <functional>
+#include <vector>
+
 #include "core/model/model.h"
 #include "core/run/result.h"
 #include "render/figure.h"
@@ -57,8 +60,19 @@ void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& bran
                        const Style& style, std::vector<LegendEntry>& legend, Obstacles& avoid);
 Range branch_range(const OrbitBranch& branch, int pellet, SectionCoordinate coordinate);
 
-// A 2-D sweep's cells coloured by the period of the motion, with a legend of periods.
-void draw_regime_map_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep);
+// A 2-D sweep's cells coloured by the period of the motion, with a legend of periods; `over`,
+// when given, draws on the cells in the map's transform and adds its legend entries.
+using MapOverlay = std::function<void(const Transform&, std::vector<LegendEntry>&)>;
+void draw_regime_map_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep,
+                           const MapOverlay& over = {});
+
+// The bifurcation curves followed from a branch, in the plane of the continuation's parameter
+// (x) and the second one (y), each kind by its dash; alone, or into a given transform with the
+// parameters swapped when the map's axes are (core/analysis/bifurcation_curve.h).
+void draw_curves_panel(cairo_t* cr, const PanelInput<BranchPlot>& in, const BranchData& branch);
+void draw_bifurcation_curves(cairo_t* cr, const Transform& tr,
+                             const std::vector<BifurcationCurve>& curves, bool swapped,
+                             const Style& style, std::vector<LegendEntry>& legend);
 
 // A sweep's largest Lyapunov exponents against the swept parameter, one line per direction of
 // continuation, with the zero line; and a 2-D sweep's cells coloured by it, with a colour bar.

@@ -102,11 +102,14 @@ struct SweepPlot {
   std::string title;
 };
 
-// A continued periodic motion against its parameter, stability and bifurcations marked.
+// A continued periodic motion against its parameter, stability and bifurcations marked; or,
+// with `curves` (kind "bifurcation_curves"), the bifurcations followed in a second parameter, in
+// the plane of the two (over the regime map of a 2-D sweep of the same two, when given).
 struct BranchPlot {
   int pellet = 0;
   SectionCoordinate coordinate = SectionCoordinate::dphi;
   std::string title;
+  bool curves = false;
 };
 
 using PlotSpec = std::variant<PhasePlot, TimePlot, CylinderPlot, MechanismPlot, WorkPrecisionPlot,

@@ -183,7 +183,8 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const
              style);
 }
 
-void draw_regime_map_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep) {
+void draw_regime_map_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep,
+                           const MapOverlay& over) {
   const CellMap map = draw_cells(cr, in, sweep, [](const SweepRun& run) {
     return run.at_rest ? Colour{1.0, 1.0, 1.0, 1.0} : period_colour(run.period);
   });
@@ -203,6 +204,12 @@ void draw_regime_map_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const S
   if (rest)
     legend.push_back({"at rest", {1.0, 1.0, 1.0, 1.0}, Swatch::area, MarkerShape::circle, kGuide});
   if (map.untrusted) legend.push_back({"not trusted", kInk, Swatch::line});
+  if (over) {
+    cairo_save(cr);
+    clip_to(cr, in.layout.plots.front());
+    over(map.tr, legend);
+    cairo_restore(cr);
+  }
   draw_frame(cr, map.tr, map.x, map.y, in.style);
   draw_legend(cr, legend, legend_column(in), {}, in.style);
   draw_title(cr, in.layout.title_anchor,

@@ -25,6 +25,8 @@ s["plots"]=[s["plots"][i] for i in plots]; s["figure"]=json.loads(sys.argv[2]); 
 print_size paper-85mm '[0, 2]' '{"width_mm": 85, "height_mm": 120, "font_pt": 8, "dpi": 300}'
 print_size paper-170mm '[0, 1, 2]' '{"width_mm": 170, "height_mm": 130, "font_pt": 8, "dpi": 300}'
 $vibro orbit --preset impact-oscillator -o docs/images/orbit-branch-impact-oscillator.png
+# A period doubling followed in (Omega, k), over the regime map of the same two (docs/ORBITS.md).
+$vibro orbit docs/scenes/impact-oscillator-pd-curve.json -o docs/images/orbit-curves-impact-oscillator.png
 $vibro orbit docs/scenes/paper-period6.json -o docs/images/orbit-paper-period6.png
 # Bifurcation diagrams, regime and impact maps (docs/SWEEPS.md).
 $vibro sweep --preset impact-oscillator -o docs/images/bifurcation-impact-oscillator.png

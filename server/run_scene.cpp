@@ -105,7 +105,11 @@ RenderResult draw_orbit_return(const Scene& scene, const PeriodicOrbit& orbit, I
 
 JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format) {
   const auto& continuation = scene.periodic_orbit->continuation;
-  const OrbitFigure figure{&result.branch, continuation ? &*continuation : nullptr};
+  const auto& follow = scene.periodic_orbit->follow;
+  const OrbitFigure figure{.branch = &result.branch,
+                           .continuation = continuation ? &*continuation : nullptr,
+                           .curves = &result.curves,
+                           .follow = follow ? &*follow : nullptr};
   const RenderResult image = draws_branch(figure)
                                  ? render_branch_figure(scene.figure, scene.model, figure, format)
                                  : draw_orbit_return(scene, result.orbit, format);

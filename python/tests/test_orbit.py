@@ -58,3 +58,26 @@ def test_progress_and_an_orbit_alone():
     alone = vibro.periodic_orbit(scene)
     assert alone.branch == [] and alone.render() is None and alone._repr_png_() is None
     assert alone.orbit["converged"]
+
+
+def test_a_followed_period_doubling_gives_its_curve():
+    scene = vibro.preset("impact-oscillator")
+    scene["model"]["pellets"][0]["Omega"] = 6.0
+    scene["periodic_orbit"] = {
+        "guess": [{"phi": 0.15, "dphi": 0.1}],
+        "continuation": {
+            "parameter": "model.pellets[0].Omega", "to": 5.0, "max_points": 30,
+            "follow": "period_doubling",
+            "parameter2": {"parameter": "model.limiters[0].k", "from": 0.7, "to": 0.9}}}
+    shares = []
+    found = vibro.periodic_orbit(scene, progress=shares.append)
+    assert shares == sorted(shares) and shares[-1] <= 1
+    (curve,) = found.curves
+    assert curve["kind"] == "period_doubling"
+    assert curve["points"][0]["value2"] == 0.7 and curve["points"][-1]["value2"] == 0.9
+    assert all(5.0 < p["value"] < 6.0 for p in curve["points"])
+    assert found.render().startswith(b"\x89PNG")
+    del scene["periodic_orbit"]["continuation"]["parameter2"]
+    with pytest.raises(vibro.SceneError) as e:
+        vibro.periodic_orbit(scene)
+    assert e.value.field == "periodic_orbit.continuation.parameter2"

@@ -223,3 +223,77 @@ TEST(OrbitJson, AnOrbitAloneHasAnEmptyBranch) {
 
 }  // namespace
 }  // namespace vibro
+
+namespace vibro {
+namespace {
+
+// The shared scene following the period doubling in the stop's restitution.
+json follow_scene() {
+  json s = orbit_scene();
+  s["periodic_orbit"]["continuation"]["to"] = 5.0;
+  s["periodic_orbit"]["continuation"]["follow"] = "period_doubling";
+  s["periodic_orbit"]["continuation"]["parameter2"] = {
+      {"parameter", "model.limiters[0].k"}, {"from", 0.6}, {"to", 0.9}};
+  return s;
+}
+
+TEST(OrbitJson, AFollowIsReadKeptAndEveryBadFieldNamed) {
+  const SceneOrError r = scene_from_json(follow_scene());
+  ASSERT_TRUE(std::holds_alternative<Scene>(r));
+  const OrbitRequest& request = *std::get<Scene>(r).periodic_orbit;
+  ASSERT_TRUE(request.follow);
+  EXPECT_EQ(request.follow->kind, BifurcationKind::period_doubling);
+  EXPECT_EQ(request.follow->parameter2, "model.limiters[0].k");
+  EXPECT_EQ(request.follow->to, 0.9);
+  const json back = orbit_request_to_json(request)["continuation"];
+  EXPECT_EQ(back["follow"], "period_doubling");
+  EXPECT_EQ(back["parameter2"]["from"], 0.6);
+
+  const std::string c = "periodic_orbit.continuation.";
+  const auto without = [](const char* key) {
+    json s = follow_scene();
+    s["periodic_orbit"]["continuation"].erase(key);
+    return s;
+  };
+  EXPECT_EQ(field_of(without("parameter2")), c + "parameter2");
+  EXPECT_EQ(field_of(without("follow")), c + "follow");
+  struct Case {
+    const char* pointer;
+    json value;
+    std::string field;
+  };
+  const std::vector<Case> cases = {
+      {"/follow", "neimark_sacker", c + "follow"},
+      {"/follow", "cusp", c + "follow"},
+      {"/follow", 1, c + "follow"},
+      {"/parameter2", 0.5, c + "parameter2"},
+      {"/parameter2/parameter", "model.pellets[0].Omega", c + "parameter2.parameter"},
+      {"/parameter2/parameter", "model.limiters[3].k", c + "parameter2.parameter"},
+      {"/parameter2/parameter", nullptr, c + "parameter2.parameter"},
+      {"/parameter2/from", nullptr, c + "parameter2.from"},
+      {"/parameter2/from", 0.85, c + "parameter2.from"},
+      {"/parameter2/to", 1.5, c + "parameter2.to"},
+      {"/parameter2/to", 0.5, c + "parameter2.to"},
+      {"/parameter2/count", 10, c + "parameter2.count"},
+  };
+  for (const Case& k : cases) {
+    json s = follow_scene();
+    s["periodic_orbit"]["continuation"][json::json_pointer(k.pointer)] = k.value;
+    EXPECT_EQ(field_of(s), k.field) << k.pointer << " = " << k.value.dump();
+  }
+}
+
+TEST(OrbitJson, CurvesAreInTheResultOnlyWhenFollowed) {
+  OrbitResult r = synthetic_result();
+  EXPECT_FALSE(orbit_result_json(r).contains("curves"));
+  r.curves = {{BifurcationKind::grazing, {{0.1, 2.5}, {0.2, NAN}}, true, false, "lost"}};
+  const json j = orbit_result_json(r);
+  ASSERT_EQ(j["curves"].size(), 1u);
+  EXPECT_EQ(j["curves"][0]["kind"], "grazing");
+  EXPECT_EQ(j["curves"][0]["points"][0], (json{{"value", 0.1}, {"value2", 2.5}}));
+  EXPECT_TRUE(j["curves"][0]["points"][1]["value2"].is_null());
+  EXPECT_EQ(j["curves"][0]["message"], "lost");
+}
+
+}  // namespace
+}  // namespace vibro

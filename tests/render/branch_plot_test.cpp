@@ -170,3 +170,37 @@ TEST(BranchPlot, AFoldAndADoublingAtOneValueAreOneMarkAndOnesOutsideTheWindowAre
 
 }  // namespace
 }  // namespace vibro
+
+namespace vibro {
+namespace {
+
+// The bifurcation_curves kind: the curves in the plane of the two parameters, named in the
+// legend; without curves it is refused, naming the panel's kind.
+TEST(BifurcationCurvesPlot, DrawsTheCurvesAloneAndWithoutThemIsRefused) {
+  const ContinuationSpec spec{"model.pellets[0].Omega", 5.0, 100};
+  const FollowSpec follow{BifurcationKind::period_doubling, "model.limiters[0].k", 0.6, 0.95};
+  OrbitBranch branch;
+  const std::vector<BifurcationCurve> curves = {
+      {BifurcationKind::period_doubling, {{5.45, 0.6}, {5.56, 0.8}, {5.58, 0.95}}, true, true, ""}};
+  FigureSpec figure;
+  BranchPlot plot;
+  plot.curves = true;
+  figure.plots = {plot};
+  const PanelData data{nullptr, std::nullopt, BranchData{branch, spec, &curves, &follow}};
+  const RenderResult svg =
+      render_figure(figure, impact_oscillator(6.0), RunResult{}, ImageFormat::svg, data);
+  ASSERT_TRUE(svg.ok()) << svg.error->message;
+  const std::string text(svg.bytes.begin(), svg.bytes.end());
+  EXPECT_NE(text.find("Bifurcation curves"), std::string::npos);
+  EXPECT_NE(text.find("period doubling"), std::string::npos);
+  EXPECT_NE(text.find("k of limiter 1"), std::string::npos);
+
+  const PanelData without{nullptr, std::nullopt, BranchData{branch, spec}};
+  const RenderResult refused =
+      render_figure(figure, impact_oscillator(6.0), RunResult{}, ImageFormat::png, without);
+  ASSERT_FALSE(refused.ok());
+  EXPECT_EQ(refused.error->field, "plots[0].kind");
+}
+
+}  // namespace
+}  // namespace vibro

@@ -161,6 +161,44 @@ TEST_F(PeriodicOrbitApi, AContinuationRunsAsAJobAndGivesABranch) {
   EXPECT_EQ(json::parse(plot->body)["field"], "plot");
 }
 
+// A followed bifurcation runs in the same job: its curve is in the result, and the image draws
+// it in the plane of the two parameters.
+TEST_F(PeriodicOrbitApi, AFollowedPeriodDoublingGivesItsCurve) {
+  auto c = server->client();
+  json s = impact_oscillator_orbit();
+  s["periodic_orbit"]["continuation"] = {
+      {"parameter", "model.pellets[0].Omega"},
+      {"to", 5.0},
+      {"max_points", 30},
+      {"follow", "period_doubling"},
+      {"parameter2", {{"parameter", "model.limiters[0].k"}, {"from", 0.7}, {"to", 0.9}}}};
+  auto res = post(c, s);
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  const json status = status_when_ended(c, location, 1200);
+  ASSERT_FALSE(status.is_null());
+  ASSERT_EQ(status["status"], "done") << status.dump();
+  auto result = c.Get((location + "/result").c_str());
+  ASSERT_EQ(result->status, 200) << result->body;
+  const json r = json::parse(result->body);
+  ASSERT_EQ(r["curves"].size(), 1u) << r.dump();
+  const json& curve = r["curves"][0];
+  EXPECT_EQ(curve["kind"], "period_doubling");
+  ASSERT_GE(curve["points"].size(), 3u) << curve["message"];
+  EXPECT_EQ(curve["points"].front()["value2"], 0.7);
+  EXPECT_EQ(curve["points"].back()["value2"], 0.9);
+  auto svg = c.Get((location + "/result?format=svg").c_str());
+  ASSERT_EQ(svg->status, 200);
+  EXPECT_NE(svg->body.find("Bifurcation curves"), std::string::npos);
+  EXPECT_NE(svg->body.find("period doubling"), std::string::npos);
+  // Without parameter2 the follow is refused, naming the field.
+  s["periodic_orbit"]["continuation"].erase("parameter2");
+  res = post(c, s);
+  ASSERT_EQ(res->status, 400) << res->body;
+  EXPECT_EQ(json::parse(res->body)["field"], "periodic_orbit.continuation.parameter2");
+}
+
 }  // namespace
 }  // namespace vibro::testing
 
