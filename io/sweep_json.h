@@ -34,6 +34,11 @@ nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& resul
 // Lyapunov exponent last, empty without one and "-inf" where every perturbation dies. Numbers
 // to 17 significant digits.
 bool write_sweep_result_csv(const SweepResult& result, const TextSink& sink);
+// The CSV's header row, with the attractor column for a sweep that classifies attractors; and
+// one run's lines, the attractor column holding `attractor` when given (a stream of chains
+// writes them as they finish, io/sweep_csv_stream.h).
+std::string sweep_csv_header(bool classified);
+std::string sweep_run_csv(const SweepRun& run, std::optional<int> attractor);
 std::string sweep_result_csv(const SweepResult& result);
 
 // The plot a sweep is drawn as: one of kSweepPlotNames; an empty name picks the regime map for a
@@ -42,7 +47,7 @@ std::string sweep_result_csv(const SweepResult& result);
 // (render/figure.h).
 std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpec& spec);
 inline constexpr const char* kSweepPlotNames =
-    "\"bifurcation\", \"section\", \"impact_map\", \"regime_map\", \"lyapunov\" or "
-    "\"lyapunov_map\"";
+    "\"bifurcation\", \"section\", \"impact_map\", \"regime_map\", \"lyapunov\", "
+    "\"lyapunov_map\" or \"basins\"";
 
 }  // namespace vibro

@@ -81,9 +81,11 @@ std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
       const auto* time = std::get_if<TimePlot>(&plot);
       const int stacked = time && time->show_dphi ? 2 : 1;
       const auto* sweep = std::get_if<SweepPlot>(&plot);
-      const bool map =
-          sweep && (sweep->view == SweepView::regime_map || sweep->view == SweepView::lyapunov_map);
-      layouts.push_back(panel_layout(cells[i], style, stacked, map ? kMapLegendColumn : 0.0));
+      const bool map = sweep && map_view(sweep->view);
+      const double column = !map                               ? 0.0
+                            : sweep->view == SweepView::basins ? kBasinsLegendColumn
+                                                               : kMapLegendColumn;
+      layouts.push_back(panel_layout(cells[i], style, stacked, column));
     }
   }
   return layouts;

@@ -58,6 +58,10 @@ Range branch_range(const OrbitBranch& branch, int pellet, SectionCoordinate coor
 // A 2-D sweep's cells coloured by the period of the motion, with a legend of periods.
 void draw_regime_map_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep);
 
+// A basin sweep's cells coloured by attractor (SweepRun::attractor), with a legend of the
+// attractors' periods and impacts per period. The sweep classified them (validate_sweep_plot).
+void draw_basins_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep);
+
 // A sweep's largest Lyapunov exponents against the swept parameter, one line per direction of
 // continuation, with the zero line; and a 2-D sweep's cells coloured by it, with a colour bar.
 // The sweep computed them (validate_sweep_plot).
