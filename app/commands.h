@@ -20,6 +20,7 @@ Command add_render_command(CLI::App& vibro);
 Command add_work_precision_command(CLI::App& vibro);
 Command add_sweep_command(CLI::App& vibro);
 Command add_orbit_command(CLI::App& vibro);
+Command add_plot_command(CLI::App& vibro);
 Command add_serve_command(CLI::App& vibro);
 Command add_presets_command(CLI::App& vibro);
 Command add_preset_command(CLI::App& vibro);

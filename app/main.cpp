@@ -35,9 +35,9 @@ int run(int argc, char** argv) {
   // At most one command: a second command's name is an argument of the first.
   app.require_subcommand(0, 1);
   const std::vector<Command> commands = {
-      add_simulate_command(app), add_render_command(app), add_work_precision_command(app),
-      add_sweep_command(app),    add_orbit_command(app),  add_serve_command(app),
-      add_presets_command(app),  add_preset_command(app),
+      add_simulate_command(app), add_render_command(app),  add_work_precision_command(app),
+      add_sweep_command(app),    add_orbit_command(app),   add_plot_command(app),
+      add_serve_command(app),    add_presets_command(app), add_preset_command(app),
   };
   std::string topic;
   CLI::App* help =

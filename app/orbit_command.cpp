@@ -1,10 +1,10 @@
-// `vibro orbit SCENE | - | --preset NAME [-o OUT.json|.png|.svg|.pdf]`: finds the periodic motion
-// the scene's "periodic_orbit" asks for (the defaults without one), follows it in a parameter
-// when it asks for a continuation, and writes the result as JSON (API.md, "Periodic motions and
-// their stability"), to stdout without -o; or draws it (render/orbit_figure.h): the continued
-// branch, over the brute-force diagram when the scene's sweep is over the same parameter (run
-// here on every core), or else one return of the motion in the scene's plots. While a branch is
-// followed or a sweep runs, a progress bar shows on stderr when that is a terminal. Exits 1 when
+// `vibro orbit SCENE | - | --preset NAME [-o OUT.json|.png|.svg|.pdf]...`: finds the periodic
+// motion the scene's "periodic_orbit" asks for (the defaults without one), follows it in a
+// parameter when it asks for a continuation, and writes the result as JSON (API.md, "Periodic
+// motions and their stability"), to stdout without -o; or draws it (render/orbit_figure.h): the
+// continued branch, over the brute-force diagram when the scene's sweep is over the same parameter
+// (run here on every core), or else one return of the motion in the scene's plots. While a branch
+// is followed or a sweep runs, a progress bar shows on stderr when that is a terminal. Exits 1 when
 // no orbit was found: the JSON then says why.
 #include <unistd.h>
 
@@ -21,7 +21,7 @@
 #include "app/scene_options.h"
 #include "app/usage.h"
 #include "io/orbit_json.h"
-#include "io/whole_file.h"
+#include "io/scene_json.h"
 #include "render/orbit_figure.h"
 #include "server/run_scene.h"
 
@@ -46,16 +46,26 @@ std::optional<SweepResult> sweep_beneath(const Scene& scene, const OrbitRequest&
   return run_sweep(scene.model, options, *scene.sweep, control);
 }
 
+// The figure of the result, as the scene's plots and its continuation ask: the branch (over the
+// sweep beneath it), or one return of the motion. Empty after printing why it cannot be drawn.
+std::optional<std::string> orbit_image(const Scene& scene, const OrbitRequest& request,
+                                       const OrbitResult& result,
+                                       const std::optional<SweepResult>& sweep,
+                                       ImageFormat format) {
+  const OrbitFigure figure{&result.branch, request.continuation ? &*request.continuation : nullptr,
+                           sweep ? &*scene.sweep : nullptr, sweep ? &*sweep : nullptr};
+  return drawn_bytes(draws_branch(figure)
+                         ? render_branch_figure(scene.figure, scene.model, figure, format)
+                         : server::draw_orbit_return(scene, result.orbit, format));
+}
+
 int orbit(const SceneOutput& o) {
   const auto loaded = load_scene(o.scene);
   if (!loaded) return 2;
   const Scene& scene = *loaded;
-  const std::string& out = o.out;
-  const std::optional<ImageFormat> image = image_format_of_file(out);
-  if (!out.empty() && !out.ends_with(".json") && !image) {
-    print_error("-o", "name the output OUT.json, OUT.png, OUT.svg or OUT.pdf");
+  if (!outputs_named(o.outs, {".json", ".png", ".svg", ".pdf"},
+                     "OUT.json, OUT.png, OUT.svg or OUT.pdf"))
     return 2;
-  }
   const OrbitRequest request = scene.periodic_orbit.value_or(OrbitRequest{});
   if (auto e = validate_orbit_request(scene.model, request)) {
     print_error(e->field, e->message);
@@ -69,28 +79,22 @@ int orbit(const SceneOutput& o) {
     };
   const OrbitResult result = run_orbit_request(scene.model, scene.sim, request, progress);
   if (progress) bar(1.0, "finished");
-  std::string bytes;
-  if (image) {
-    const std::optional<SweepResult> sweep = sweep_beneath(scene, request, bar);
-    const OrbitFigure figure{&result.branch,
-                             request.continuation ? &*request.continuation : nullptr,
-                             sweep ? &*scene.sweep : nullptr, sweep ? &*sweep : nullptr};
-    const RenderResult drawn = draws_branch(figure)
-                                   ? render_branch_figure(scene.figure, scene.model, figure, *image)
-                                   : server::draw_orbit_return(scene, result.orbit, *image);
-    if (!drawn.ok()) {
-      print_error(drawn.error->field, drawn.error->message);
-      return 1;
-    }
-    bytes.assign(drawn.bytes.begin(), drawn.bytes.end());
-  } else {
-    bytes = orbit_result_json(result).dump(2) + "\n";
-  }
-  if (out.empty()) {
-    std::cout << bytes;  // checked once the command ends (app/main.cpp)
-  } else if (const auto problem = write_whole_file(out, bytes)) {
-    print_error("-o", problem->message);
-    return 1;
+  const bool draws = std::any_of(o.outs.begin(), o.outs.end(), [](const std::string& out) {
+    return image_format_of_file(out).has_value();
+  });
+  // Run once for every image that draws it.
+  const std::optional<SweepResult> sweep =
+      draws ? sweep_beneath(scene, request, bar) : std::nullopt;
+  // With its scene, so that `vibro plot` redraws it from this output alone.
+  nlohmann::json saved = orbit_result_json(result);
+  saved["scene"] = scene_to_json(scene);
+  const std::string json = saved.dump(2) + "\n";
+  if (o.outs.empty()) std::cout << json;  // checked once the command ends (app/main.cpp)
+  for (const std::string& out : o.outs) {
+    const auto image = image_format_of_file(out);
+    const auto bytes = image ? orbit_image(scene, request, result, sweep, *image) : json;
+    if (!bytes) return 1;
+    if (!write_output(out, *bytes)) return 1;
   }
   return result.orbit.converged ? 0 : 1;
 }

@@ -10,7 +10,6 @@
 #include "core/analysis/checked_run.h"
 #include "core/analysis/work_precision.h"
 #include "io/result_json.h"
-#include "io/whole_file.h"
 #include "render/figure.h"
 #include "render/run_plan.h"
 
@@ -21,40 +20,38 @@ int render(const SceneOutput& o) {
   const auto loaded = load_scene(o.scene);
   if (!loaded) return 2;
   const Scene& scene = *loaded;
-  const std::string& out = o.out;
-  const auto named = image_format_of_file(out);
-  if (out.empty() || !named) {
+  if (o.outs.empty()) {
     print_error("-o", "name the image with -o OUT.png, OUT.svg or OUT.pdf");
     return 2;
   }
-  const ImageFormat format = *named;
-  if (auto e = validate_figure(scene.figure, scene.model, format)) {
-    print_error(e->field, e->message);
-    return 2;
+  for (const std::string& out : o.outs) {
+    const auto format = image_format_of_file(out);
+    if (!format) {
+      print_error("-o", "name the image with -o OUT.png, OUT.svg or OUT.pdf");
+      return 2;
+    }
+    if (auto e = validate_figure(scene.figure, scene.model, *format)) {
+      print_error(e->field, e->message);
+      return 2;
+    }
   }
   const RunPlan plan = plan_run(scene.figure, scene.sim, scene.model.size());
   const RunResult run = simulate(scene.model, plan.options);
   std::optional<WorkPrecisionReport> sweep;
   if (plan.needs_work_precision) sweep = work_precision(scene.model, scene.sim);
-  const RenderResult image =
-      render_figure(scene.figure, scene.model, run, format, {sweep ? &*sweep : nullptr});
-  if (!image.ok()) {
-    print_error(image.error->field, image.error->message);
-    return 1;
-  }
-  const std::string_view bytes(reinterpret_cast<const char*>(image.bytes.data()),
-                               image.bytes.size());
-  if (const auto problem = write_whole_file(out, bytes)) {
-    print_error("-o", problem->message);
-    return 1;
+  nlohmann::json images = nlohmann::json::array();
+  for (const std::string& out : o.outs) {  // one run, drawn in every format asked for
+    const auto bytes = drawn_bytes(render_figure(
+        scene.figure, scene.model, run, *image_format_of_file(out), {sweep ? &*sweep : nullptr}));
+    if (!bytes || !write_output(out, *bytes)) return 1;
+    images.push_back({{"image", out}, {"bytes", bytes->size()}});
   }
   nlohmann::json j = result_to_json(run, scene.model);
-  std::cout << nlohmann::json{{"image", out},
-                              {"bytes", image.bytes.size()},
-                              {"answer", j["summary"]["answer"]},
-                              {"stats", j["stats"]}}
-                   .dump(2)
-            << "\n";
+  // One image: {"image", "bytes", ...} as before; several: "images": [{"image", "bytes"}, ...].
+  nlohmann::json said = images.size() == 1 ? images[0] : nlohmann::json{{"images", images}};
+  said["answer"] = j["summary"]["answer"];
+  said["stats"] = j["stats"];
+  std::cout << said.dump(2) << "\n";
   return 0;
 }
 

@@ -71,7 +71,10 @@ CLI::App* add_scene_command(CLI::App& vibro, const std::string& name,
                             SceneOutput& job) {
   CLI::App* command = vibro.add_subcommand(name, description);
   add_scene_options(*command, job.scene);
-  command->add_option("-o,--output", job.out, output_help)->type_name("OUT");
+  command->add_option("-o,--output", job.outs, output_help + " (repeat -o for several)")
+      ->multi_option_policy(CLI::MultiOptionPolicy::TakeAll)
+      ->expected(1)
+      ->type_name("OUT");
   return command;
 }
 
@@ -116,6 +119,33 @@ std::optional<Scene> load_scene(const SceneSource& source) {
   Scene scene = std::get<Scene>(std::move(parsed));
   if (source.deadline_ms > 0.0) scene.sim.deadline_ms = source.deadline_ms;
   return scene;
+}
+
+bool outputs_named(const std::vector<std::string>& outs, std::initializer_list<const char*> endings,
+                   const std::string& names) {
+  for (const std::string& out : outs) {
+    bool named = false;
+    for (const char* ending : endings) named = named || out.ends_with(ending);
+    if (!named) {
+      print_error("-o", "name the output " + names + ", not \"" + out + "\"");
+      return false;
+    }
+  }
+  return true;
+}
+
+bool write_output(const std::string& out, std::string_view bytes) {
+  const auto problem = write_whole_file(out, bytes);
+  if (problem) print_error("-o", problem->message);
+  return !problem;
+}
+
+std::optional<std::string> drawn_bytes(const RenderResult& image) {
+  if (!image.ok()) {
+    print_error(image.error->field, image.error->message);
+    return std::nullopt;
+  }
+  return std::string(image.bytes.begin(), image.bytes.end());
 }
 
 }  // namespace vibro

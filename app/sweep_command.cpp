@@ -1,8 +1,10 @@
-// `vibro sweep SCENE | --preset NAME [-o OUT.json|.csv|.png|.svg|.pdf] [--threads N] [--plot KIND]
+// `vibro sweep SCENE | --preset NAME [-o OUT.json|.csv|.png|.svg|.pdf]... [--threads N] [--plot
+// KIND]
 // [--pellet I] [--coordinate dphi|phi] [--resume]`: runs the scene's sweep on every core (or N
 // threads), and under mpirun or srun on every rank's (app/mpi_sweep.h); writes its points (JSON
 // to stdout without -o) or draws it (a bifurcation diagram, a section, an impact map, a regime
-// map, or its largest Lyapunov exponents as a line or a map), and shows a progress bar with the
+// map, or its largest Lyapunov exponents as a line or a map), to every -o given from the one run
+// (`vibro plot` redraws a saved OUT.json later), and shows a progress bar with the
 // time left on stderr when that is a terminal. With -o, finished chains are kept in OUT.partial
 // as they finish, so a sweep that stops (a failed rank, a killed job, Ctrl-C) resumes with
 // --resume; OUT.partial goes once OUT is written. A checkpoint that cannot be written (a full
@@ -21,9 +23,11 @@
 #include "app/mpi_sweep.h"
 #include "app/progress_bar.h"
 #include "app/scene_options.h"
+#include "app/sweep_plot_options.h"
 #include "app/usage.h"
 #include "core/analysis/attractors.h"
 #include "core/analysis/sweep.h"
+#include "io/scene_json.h"
 #include "io/sweep_checkpoint.h"
 #include "io/sweep_csv_stream.h"
 #include "io/sweep_json.h"
@@ -37,20 +41,19 @@ namespace {
 struct SweepOptions {
   SceneOutput job;
   int threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
-  std::string plot;
-  std::optional<std::string> pellet;  // checked against the scene's pellets once it is read
-  SectionCoordinate coordinate = SectionCoordinate::dphi;
+  SweepPlotOptions plot;
   bool resume = false;
 };
 
 // A sweep as the command line asks for it, checked.
 struct SweepJob {
   Scene scene;
-  std::string out;
+  std::vector<std::string> outs;  // every one written from the one sweep
   int threads = 1;
   SweepPlot plot;
-  std::optional<ImageFormat> image;
   std::optional<Checkpoint> resumed;  // rank 0 only
+  // The file the finished chains are kept beside (its .partial): the first output.
+  std::string checkpointed() const { return outs.empty() ? std::string() : outs.front(); }
 };
 
 // Reads the scene and checks the options against it; on rank 0 (`root`) also reads the
@@ -61,45 +64,28 @@ std::optional<SweepJob> prepare(const SweepOptions& o, bool root, int& code) {
   if (!scene) return std::nullopt;
   SweepJob job;
   job.scene = std::move(*scene);
-  job.out = o.job.out;
+  job.outs = o.job.outs;
   job.threads = o.threads;
-  job.plot.coordinate = o.coordinate;
-  if (o.pellet) {
-    const std::string& v = *o.pellet;
-    job.plot.pellet = v.size() == 1 && v[0] >= '0' && v[0] <= '9' ? v[0] - '0' : -1;
-    if (job.plot.pellet < 0 || job.plot.pellet >= job.scene.model.size()) {
-      print_error("--pellet",
-                  "must be a pellet index in 0.." + std::to_string(job.scene.model.size() - 1));
-      return std::nullopt;
-    }
-  }
   if (!job.scene.sweep) {
     print_error("sweep", "the scene has no sweep: add one (API.md, \"Sweeps\")");
     return std::nullopt;
   }
-  const auto kind = sweep_plot_kind(o.plot, *job.scene.sweep);
-  if (!kind) {
-    print_error("--plot", std::string("must be ") + kSweepPlotNames);
+  if (!outputs_named(job.outs, {".json", ".csv", ".png", ".svg", ".pdf"},
+                     "OUT.json, OUT.csv, OUT.png, OUT.svg or OUT.pdf"))
     return std::nullopt;
-  }
-  job.plot.view = *kind;
-  job.image = image_format_of_file(job.out);
-  if (!job.out.empty() && !job.out.ends_with(".json") && !job.out.ends_with(".csv") && !job.image) {
-    print_error("-o", "name the output OUT.json, OUT.csv, OUT.png, OUT.svg or OUT.pdf");
-    return std::nullopt;
-  }
   // Before the sweep runs, not after it: a plot of what the sweep does not compute.
-  if (const auto e =
-          job.image ? validate_sweep_plot(job.plot.view, *job.scene.sweep) : std::nullopt) {
-    print_error(e->field, e->message);
-    return std::nullopt;
-  }
-  if (o.resume && job.out.empty()) {
+  const bool draws = std::any_of(job.outs.begin(), job.outs.end(), [](const std::string& out) {
+    return image_format_of_file(out).has_value();
+  });
+  const auto plot = sweep_plot_of(o.plot, job.scene, draws);
+  if (!plot) return std::nullopt;
+  job.plot = *plot;
+  if (o.resume && job.outs.empty()) {
     print_error("--resume", "resumes the sweep of an output file: name it with -o");
     return std::nullopt;
   }
-  if (!root || job.out.empty()) return job;
-  const std::string partial = checkpoint_path(job.out);
+  if (!root || job.outs.empty()) return job;
+  const std::string partial = checkpoint_path(job.checkpointed());
   if (o.resume) {
     auto read = read_checkpoint(partial, job.scene);
     if (auto* why = std::get_if<std::string>(&read)) {
@@ -116,31 +102,34 @@ std::optional<SweepJob> prepare(const SweepOptions& o, bool root, int& code) {
   return job;
 }
 
-// Draws or writes the result to job.out (stdout without it).
+// The result as the output `out` names it: drawn, CSV or JSON ("" : JSON). Empty after printing
+// why when it cannot be drawn.
+std::optional<std::string> result_text(const SweepJob& job, const SweepResult& result,
+                                       const std::string& out) {
+  const SweepSpec& spec = *job.scene.sweep;
+  if (const auto image = image_format_of_file(out))
+    return sweep_image(job.scene, job.plot, result, *image);
+  if (out.ends_with(".csv")) return sweep_result_csv(spec, result);
+  // With its scene, so that `vibro plot` redraws it from this file alone.
+  return sweep_result_json(spec, result, scene_to_json(job.scene)).dump() + "\n";
+}
+
+// Draws or writes the result to every output (stdout without one).
 int write_result(const SweepJob& job, const SweepResult& result) {
-  std::string text;
-  if (job.image) {
-    FigureSpec figure = job.scene.figure;  // its size, and its print size if it has one
-    figure.plots = {job.plot};
-    const RenderResult drawn = render_figure(figure, job.scene.model, RunResult{}, *job.image,
-                                             {nullptr, SweepData{*job.scene.sweep, result}});
-    if (!drawn.ok()) {
-      print_error(drawn.error->field, drawn.error->message);
-      return 1;
-    }
-    text.assign(drawn.bytes.begin(), drawn.bytes.end());
-  } else {
-    text = job.out.ends_with(".csv") ? sweep_result_csv(result)
-                                     : sweep_result_json(*job.scene.sweep, result).dump() + "\n";
-  }
-  if (job.out.empty()) {
-    std::cout << text;  // checked once the command ends (app/main.cpp)
+  if (job.outs.empty()) {
+    const auto text = result_text(job, result, "");
+    std::cout << *text;  // checked once the command ends (app/main.cpp)
     return 0;
   }
-  if (const auto problem = write_whole_file(job.out, text)) {
-    print_error("-o", problem->message + "; it is left as it was, and " + checkpoint_path(job.out) +
-                          " keeps the finished chains for --resume");
-    return 1;
+  for (const std::string& out : job.outs) {
+    const auto text = result_text(job, result, out);
+    if (!text) return 1;
+    if (const auto problem = write_whole_file(out, *text)) {
+      print_error("-o", problem->message + "; it is left as it was, and " +
+                            checkpoint_path(job.checkpointed()) +
+                            " keeps the finished chains for --resume");
+      return 1;
+    }
   }
   return 0;
 }
@@ -176,8 +165,8 @@ int run_job(const SweepOptions& o, bool mpi, int rank) {
   const SweepSpec& spec = *job->scene.sweep;
   std::optional<CheckpointWriter> checkpoint;
   std::vector<char> done_before;
-  if (rank == 0 && !job->out.empty()) {
-    checkpoint.emplace(checkpoint_path(job->out), scene_fingerprint(job->scene),
+  if (rank == 0 && !job->outs.empty()) {
+    checkpoint.emplace(checkpoint_path(job->checkpointed()), scene_fingerprint(job->scene),
                        job->resumed ? &*job->resumed : nullptr);
     if (const auto problem = checkpoint->problem()) {
       print_error("-o", problem->message);
@@ -197,10 +186,10 @@ int run_job(const SweepOptions& o, bool mpi, int rank) {
       bar(static_cast<double>(done) / std::max(total, 1L),
           std::to_string(done) + "/" + std::to_string(total) + " runs");
     };
-  // A CSV is written as the chains finish, the resumed ones first: the runs are not kept.
+  // A CSV alone is written as the chains finish, the resumed ones first: the runs are not kept.
   std::optional<SweepCsvStream> csv;
-  if (checkpoint && job->out.ends_with(".csv")) {
-    csv.emplace(job->out, job->scene.model, spec);
+  if (checkpoint && job->outs.size() == 1 && job->outs.front().ends_with(".csv")) {
+    csv.emplace(job->outs.front(), job->scene.model, spec);
     if (job->resumed)
       for (const ChainRuns& c : job->resumed->chains) csv->add(c.chain, c.runs);
     control.keep_runs = false;
@@ -258,25 +247,12 @@ Command add_sweep_command(CLI::App& vibro) {
       "Run the scene's sweep (a bifurcation diagram, regime map, ...) on every core, or over an "
       "MPI job under mpirun or srun",
       "write OUT.json or OUT.csv instead of JSON on stdout, or draw OUT.png, OUT.svg or OUT.pdf; "
-      "finished chains are kept in OUT.partial until it is written",
+      "finished chains are kept in OUT.partial (of the first OUT) until all are written",
       o->job);
   command->add_option("--threads", o->threads, "worker threads (default: one per core)")
       ->transform(integer_in(1, 1024))
       ->type_name("N");
-  command->add_option("--plot", o->plot, std::string("what to draw: ") + kSweepPlotNames)
-      ->type_name("KIND");
-  command->add_option("--pellet", o->pellet, "the pellet drawn, an index from 0 (default 0)")
-      ->type_name("I");
-  command
-      ->add_option_function<std::string>(
-          "--coordinate",
-          [o](const std::string& v) {
-            o->coordinate = v == "phi" ? SectionCoordinate::phi : SectionCoordinate::dphi;
-          },
-          "the coordinate drawn at each section: dphi (the default) or phi")
-      ->check(accepted_if([](const std::string& v) { return v == "dphi" || v == "phi"; },
-                          "must be \"dphi\" or \"phi\""))
-      ->type_name("C");
+  add_sweep_plot_options(*command, o->plot);
   command->add_flag("--resume", o->resume,
                     "continue the sweep of -o OUT from OUT.partial, left by a run that stopped");
   return {command, [o] { return sweep(*o); }};

@@ -9,7 +9,6 @@
 #include "app/scene_options.h"
 #include "app/usage.h"
 #include "core/analysis/work_precision.h"
-#include "io/whole_file.h"
 #include "io/work_precision_json.h"
 #include "render/figure.h"
 
@@ -24,34 +23,24 @@ struct WorkPrecisionCommandOptions {
 int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
   const auto scene = load_scene(o.job.scene);
   if (!scene) return 2;
-  const std::string& out = o.job.out;
-  if (!out.empty() && !image_format_of_file(out)) {
-    print_error("-o", "name the image OUT.png, OUT.svg or OUT.pdf");
+  if (!outputs_named(o.job.outs, {".png", ".svg", ".pdf"}, "image OUT.png, OUT.svg or OUT.pdf"))
     return 2;
-  }
   const WorkPrecisionReport report = work_precision(scene->model, scene->sim, o.run);
-  if (!out.empty()) {
-    FigureSpec figure = scene->figure;  // its size, and its print size if it has one
-    WorkPrecisionPlot plot;
-    if (!scene->name.empty()) plot.title = "Work-precision, " + scene->name + " scene";
-    figure.plots = {plot};
-    const ImageFormat format = *image_format_of_file(out);
-    const RenderResult image = render_figure(figure, scene->model, RunResult{}, format, {&report});
-    if (!image.ok()) {
-      print_error(image.error->field, image.error->message);
-      return 1;
-    }
-    const std::string_view bytes(reinterpret_cast<const char*>(image.bytes.data()),
-                                 image.bytes.size());
-    if (const auto problem = write_whole_file(out, bytes)) {
-      print_error("-o", problem->message);
-      return 1;
-    }
-    // The diagram was asked for: where it went, not the table it draws (some 400 lines).
-    std::cout << nlohmann::json{{"image", out}, {"bytes", bytes.size()}}.dump() << "\n";
+  if (o.job.outs.empty()) {
+    std::cout << work_precision_to_json(report).dump(2) << "\n";
     return 0;
   }
-  std::cout << work_precision_to_json(report).dump(2) << "\n";
+  FigureSpec figure = scene->figure;  // its size, and its print size if it has one
+  WorkPrecisionPlot plot;
+  if (!scene->name.empty()) plot.title = "Work-precision, " + scene->name + " scene";
+  figure.plots = {plot};
+  for (const std::string& out : o.job.outs) {  // one timing, drawn in every format asked for
+    const auto bytes = drawn_bytes(
+        render_figure(figure, scene->model, RunResult{}, *image_format_of_file(out), {&report}));
+    if (!bytes || !write_output(out, *bytes)) return 1;
+    // The diagram was asked for: where it went, not the table it draws (some 400 lines).
+    std::cout << nlohmann::json{{"image", out}, {"bytes", bytes->size()}}.dump() << "\n";
+  }
   return 0;
 }
 

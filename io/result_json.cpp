@@ -2,6 +2,7 @@
 
 #include <cmath>
 #include <sstream>
+#include <utility>
 
 namespace vibro {
 namespace {
@@ -182,14 +183,14 @@ json result_to_json(const RunResult& run, const Model& model) {
                {"dphi", finite_number(f.dphi)},
                {"state", pellet_state_name(f.state)}};
     if (f.limiter >= 0) fj["limiter"] = f.limiter;
-    finals.push_back(fj);
+    finals.push_back(std::move(fj));
   }
   const Summary& sm = run.summary;
   json summary = {
       {"limiter_impacts", sm.limiter_impacts},     {"collisions", sm.collisions},
       {"chatter_sequences", sm.chatter_sequences}, {"impacts_by_limiter", sm.impacts_by_limiter},
-      {"ends_vibro_impact", sm.ends_vibro_impact}, {"final", finals},
-      {"answer", answer_sentence(run, model)}};
+      {"ends_vibro_impact", sm.ends_vibro_impact}, {"answer", answer_sentence(run, model)}};
+  summary["final"] = std::move(finals);
   summary["last_impact"] = sm.last_impact.index > 0 ? json{{"index", sm.last_impact.index},
                                                            {"t", finite_number(sm.last_impact.t)}}
                                                     : json(nullptr);
@@ -203,7 +204,12 @@ json result_to_json(const RunResult& run, const Model& model) {
                         {"t_begin", finite_number(w.t_begin)},
                         {"t_end", finite_number(w.t_end)}});
   }
-  json j = {{"events", events}, {"summary", summary}, {"stats", stats}, {"warnings", warnings}};
+  // Moved in, not listed in an initializer (which would copy every event); keys sort as before.
+  json j = json::object();
+  j["events"] = std::move(events);
+  j["summary"] = std::move(summary);
+  j["stats"] = std::move(stats);
+  j["warnings"] = std::move(warnings);
   if (run.lyapunov) {
     // −infinity (a direction perturbations die in) is written as null.
     json exponents = json::array();

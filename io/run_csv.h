@@ -6,20 +6,39 @@
 #include <optional>
 #include <string>
 #include <string_view>
+#include <variant>
+#include <vector>
 
 #include "core/run/result.h"
+#include "core/run/validate.h"
 
 namespace vibro {
 
-enum class RunTable { events, trajectory };
+// uniform: the state of every pellet at t = 0, dt, 2·dt, ... (a run with SimOptions::stops set
+// by uniform_times), for an FFT or a comparison with a measured signal.
+enum class RunTable { events, trajectory, uniform };
 
 // "events" or "trajectory"; nothing for another name.
 std::optional<RunTable> run_table_named(std::string_view name);
 
-// events: t,kind,pellets,limiter,phi,dphi_before,dphi_after, one row per event, the lists of an
-// event's pellets and speeds joined by ';' and limiter −1 where none;
+// events: event,t,kind,pellet,limiter,phi,dphi_before,dphi_after, one value per cell: a row for
+// each pellet an event touches (a collision has two, a stuck body's impact one per member), its
+// speeds before and after, the rows of one event sharing its index `event` (from 0), t, kind,
+// limiter (−1 where none) and phi;
 // trajectory: t,pellet,branch,phi,dphi, one row per sample of the recorded branches.
+// uniform: t,pellet,phi,dphi, one row per pellet at each of the run's stops.
 // Numbers to 17 significant digits: they read back as the same doubles.
 std::string run_csv(const RunResult& run, RunTable table);
+
+// The samples a uniform trajectory may hold in all (times × pellets): about 100 bytes each while
+// the run keeps them.
+inline constexpr long kMaxUniformSamples = 1'000'000;
+
+// The times 0, dt, 2·dt, ... up to t_end, where a run sampled at a uniform dt keeps its state
+// (SimOptions::stops: its steps land on them, so each is a step's end, not an interpolation).
+// Refused naming `field`: a dt that is not a positive finite number, or that makes more than
+// `most` samples for `pellets` pellets.
+std::variant<std::vector<double>, FieldError> uniform_times(double dt, double t_end, int pellets,
+                                                            long most, const std::string& field);
 
 }  // namespace vibro

@@ -20,7 +20,7 @@ SweepCsvStream::SweepCsvStream(const std::string& path, const Model& model, cons
     : path_(path),
       classify_(spec.classify_attractor),
       out_(std::make_unique<WholeFileWriter>(path)) {
-  out_->append(sweep_csv_header(classify_));
+  out_->append(sweep_csv_header(spec));
   if (!classify_) return;
   table_.emplace(model);
   rows_path_ = path + ".rows-" + std::to_string(::getpid());

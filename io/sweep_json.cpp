@@ -284,8 +284,8 @@ json sweep_to_json(const SweepSpec& s) {
   return j;
 }
 
-bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
-                             const TextSink& sink) {
+bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, const TextSink& sink,
+                             const json& scene) {
   Pieces out(sink);
   out.text("{");
   if (result.classified) write_attractors(out, result);
@@ -315,7 +315,12 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
   }
   long points = 0;
   for (const SweepRun& run : result.runs) points += static_cast<long>(run.points.size());
-  out.text("},\"section\":");
+  out.text("}");
+  if (!scene.is_null()) {
+    out.text(",\"scene\":");
+    out.text(scene.dump());
+  }
+  out.text(",\"section\":");
   out.string(section_name(spec.section));
   out.text(",\"stats\":{\"cancelled\":");
   out.boolean(result.cancelled);
@@ -331,9 +336,9 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
   return out.finish();
 }
 
-json sweep_result_json(const SweepSpec& spec, const SweepResult& result) {
+json sweep_result_json(const SweepSpec& spec, const SweepResult& result, const json& scene) {
   return json::parse(whole_text(
-      [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink); }));
+      [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink, scene); }));
 }
 
 std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {
@@ -385,13 +390,23 @@ void write_run_rows(Pieces& out, const SweepRun& run, std::optional<int> attract
   }
 }
 
+// A header cell as CSV quotes it: within double quotes, its quotes doubled, when it holds a
+// comma, a quote or a line break (a field path does not, but the header must stay one row).
+std::string csv_cell(const std::string& text) {
+  if (text.find_first_of(",\"\r\n") == std::string::npos) return text;
+  std::string quoted = "\"";
+  for (char c : text) quoted += c == '"' ? std::string("\"\"") : std::string(1, c);
+  return quoted + "\"";
+}
+
 }  // namespace
 
-std::string sweep_csv_header(bool classified) {
-  return std::string(
-             "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
-             "impacts_per_period,lyapunov") +
-         (classified ? ",attractor\n" : "\n");
+std::string sweep_csv_header(const SweepSpec& spec) {
+  return csv_cell(spec.axis.parameter) + "," +
+         (spec.axis2 ? csv_cell(spec.axis2->parameter) : std::string("value2")) +
+         ",start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,impacts_per_period,"
+         "lyapunov" +
+         (spec.classify_attractor ? ",attractor\n" : "\n");
 }
 
 std::string sweep_run_csv(const SweepRun& run, std::optional<int> attractor) {
@@ -402,18 +417,21 @@ std::string sweep_run_csv(const SweepRun& run, std::optional<int> attractor) {
   });
 }
 
-bool write_sweep_result_csv(const SweepResult& result, const TextSink& sink) {
+bool write_sweep_result_csv(const SweepSpec& spec, const SweepResult& result,
+                            const TextSink& sink) {
   Pieces out(sink);
-  out.text(sweep_csv_header(result.classified));
+  out.text(sweep_csv_header(spec));
   for (const SweepRun& run : result.runs) {
     if (!out.ok()) return false;
-    write_run_rows(out, run, result.classified ? std::optional<int>(run.attractor) : std::nullopt);
+    write_run_rows(out, run,
+                   spec.classify_attractor ? std::optional<int>(run.attractor) : std::nullopt);
   }
   return out.finish();
 }
 
-std::string sweep_result_csv(const SweepResult& result) {
-  return whole_text([&](const TextSink& sink) { return write_sweep_result_csv(result, sink); });
+std::string sweep_result_csv(const SweepSpec& spec, const SweepResult& result) {
+  return whole_text(
+      [&](const TextSink& sink) { return write_sweep_result_csv(spec, result, sink); });
 }
 
 }  // namespace vibro

@@ -26,20 +26,25 @@ using TextSink = std::function<bool(std::string_view piece)>;
 // largest Lyapunov exponent (null without one, and for −infinity, which JSON cannot hold). Keys
 // in sorted order, numbers as their shortest text that reads back to the bit.
 // Written to `sink` as it is formatted: memory for one piece, whatever the points. Whether the
-// sink took all of it.
-bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result,
-                             const TextSink& sink);
-nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& result);
+// sink took all of it. With `scene` (the scene's JSON, io/scene_json.h), the result says what made
+// it under "scene", so that `vibro plot` can redraw it alone.
+bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, const TextSink& sink,
+                             const nlohmann::json& scene = nullptr);
+nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& result,
+                                 const nlohmann::json& scene = nullptr);
 // The points as CSV with a header row, one line per point, each run's classification on it; the
 // Lyapunov exponent last, empty without one and "-inf" where every perturbation dies. Numbers
-// to 17 significant digits.
-bool write_sweep_result_csv(const SweepResult& result, const TextSink& sink);
-// The CSV's header row, with the attractor column for a sweep that classifies attractors; and
-// one run's lines, the attractor column holding `attractor` when given (a stream of chains
+// to 17 significant digits. The header names the swept parameters by their field paths
+// (sweep_csv_header): the file says what its first two columns are.
+bool write_sweep_result_csv(const SweepSpec& spec, const SweepResult& result, const TextSink& sink);
+std::string sweep_result_csv(const SweepSpec& spec, const SweepResult& result);
+// The header row: the parameter's path, the second parameter's (or "value2", then always 0, for
+// a sweep of one parameter), start, direction, pellet, t, phi, dphi, phase, limiter, trusted,
+// period, impacts_per_period, lyapunov, and attractor for a sweep that classifies attractors.
+std::string sweep_csv_header(const SweepSpec& spec);
+// One run's lines, the attractor column holding `attractor` when given (a stream of chains
 // writes them as they finish, io/sweep_csv_stream.h).
-std::string sweep_csv_header(bool classified);
 std::string sweep_run_csv(const SweepRun& run, std::optional<int> attractor);
-std::string sweep_result_csv(const SweepResult& result);
 
 // The plot a sweep is drawn as: one of kSweepPlotNames; an empty name picks the regime map for a
 // 2-D sweep and the bifurcation diagram otherwise. Nothing for another name. Whether the sweep

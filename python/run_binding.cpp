@@ -36,7 +36,7 @@ class Run {
   Run(Model model, RunResult run, nlohmann::json parts)
       : model_(std::move(model)), run_(std::move(run)), json_(std::move(parts)) {}
 
-  // One array per column of the events' CSV (t,kind,pellets,limiter,phi,dphi_before,dphi_after);
+  // One array per field of the run's events (t,kind,pellets,limiter,phi,dphi_before,dphi_after);
   // the lists of an event's pellets and speeds as tuples, limiter −1 where none.
   py::dict events() {
     if (events_) return events_.cast<py::dict>();

@@ -128,7 +128,7 @@ class Sweep {
   }
 
   std::string to_json() const { return sweep_result_json(spec(), result_).dump() + "\n"; }
-  std::string to_csv() const { return sweep_result_csv(result_); }
+  std::string to_csv() const { return sweep_result_csv(spec(), result_); }
 
   // As `vibro sweep -o OUT.png --plot PLOT --pellet PELLET --coordinate COORDINATE` draws it.
   py::object render(const std::string& plot, const std::string& format_name, int pellet,

@@ -33,7 +33,7 @@ std::string attractor_label(const Attractor& a) {
   char impacts[32];
   std::snprintf(impacts, sizeof impacts, "%.3g", a.impacts_per_period);
   return std::to_string(a.id) + ": period " + std::to_string(a.period) + ", " + impacts +
-         (a.impacts_per_period == 1.0 ? " impact" : " impacts") + " per period";
+         (a.impacts_per_period == 1.0 ? " impact" : " impacts") + "/period";
 }
 
 // Whether the map's axes are φ0 and φ̇0 of one pellet: the plane the attractors' section points
@@ -49,25 +49,28 @@ int phase_plane_pellet(const SweepSpec& spec) {
   return open == std::string::npos ? -1 : std::atoi(a.c_str() + open + 1);
 }
 
-// Each attractor's section points (the pellet's), where they fall inside the map: a circle in
-// the attractor's colour, edged in ink, with its id beside it.
-void mark_attractors(cairo_t* cr, const CellMap& map, const SweepResult& result, int pellet,
+// Each attractor's section points (the pellet's), where they fall inside the map: a white circle
+// edged in ink (seen on any cell's colour), with its id beside it. Whether any was drawn.
+bool mark_attractors(cairo_t* cr, const CellMap& map, const SweepResult& result, int pellet,
                      int pellets, const Style& style) {
   const Rect& area = map.tr.area();
   set_font(cr, style.note_font());
+  bool marked = false;
   for (const Attractor& a : result.attractors)
     for (std::size_t k = pellet; k < a.section.size(); k += pellets) {
       const Point at = map.tr.to_pixel(a.section[k].first, a.section[k].second);
       if (!area.contains(at)) continue;
       add_marker_path(cr, at, MarkerShape::circle, style.px(5.0));
-      set_colour(cr, attractor_colour(a.id));
+      set_colour(cr, {1.0, 1.0, 1.0, 1.0});
       cairo_fill_preserve(cr);
       set_colour(cr, kInk);
       cairo_set_line_width(cr, style.px(1.2));
       cairo_stroke(cr);
       draw_text_on_backdrop(cr, std::to_string(a.id), {at.x + style.px(8.0), at.y},
                             {HAlign::left, VAlign::middle}, kInk, style.px(2.0));
+      marked = true;
     }
+  return marked;
 }
 
 }  // namespace
@@ -98,8 +101,11 @@ void draw_basins_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const Sweep
     legend.push_back({"other attractors", attractor_colour(kColouredAttractors), Swatch::area});
   if (unsettled) legend.push_back({"not periodic", attractor_colour(-1), Swatch::area});
   if (map.untrusted) legend.push_back({"not trusted", kInk, Swatch::line});
-  if (const int pellet = phase_plane_pellet(sweep.spec); pellet >= 0 && pellet < in.model.size())
-    mark_attractors(cr, map, sweep.result, pellet, in.model.size(), in.style);
+  if (const int pellet = phase_plane_pellet(sweep.spec);
+      pellet >= 0 && pellet < in.model.size() &&
+      mark_attractors(cr, map, sweep.result, pellet, in.model.size(), in.style))
+    legend.push_back(
+        {"attractor at t = kT", {1.0, 1.0, 1.0, 1.0}, Swatch::marker, MarkerShape::circle, kInk});
   draw_frame(cr, map.tr, map.x, map.y, in.style);
   draw_legend(cr, legend, legend_column(in), {}, in.style);
   draw_title(cr, in.layout.title_anchor,

@@ -2,10 +2,13 @@
 // parameter: its state on the stroboscopic section t = kT, stable stretches solid and unstable ones
 // dashed, each bifurcation marked and named. Drawn alone, or over the brute-force bifurcation
 // diagram of the same scene, where the two must agree wherever the motion is stable.
+#include <algorithm>
 #include <cmath>
+#include <sstream>
 #include <string>
 
 #include "render/axes.h"
+#include "render/branch_marks.h"
 #include "render/legend.h"
 #include "render/markers.h"
 #include "render/panel.h"
@@ -26,8 +29,11 @@ struct Mark {
   Colour colour;
 };
 
-Mark mark_of(BifurcationKind kind) {
-  switch (kind) {
+Mark mark_of(const std::optional<BifurcationKind>& kind) {
+  if (!kind)
+    return {"\u221e", "a multiplier through \u221e (a fold and a period doubling at one value)",
+            MarkerShape::circle, series_colour(5)};
+  switch (*kind) {
     case BifurcationKind::fold:
       return {"F", "fold", MarkerShape::diamond, series_colour(2)};
     case BifurcationKind::period_doubling:
@@ -40,29 +46,34 @@ Mark mark_of(BifurcationKind kind) {
   return {"?", "?", MarkerShape::circle, kInk};
 }
 
-}  // namespace
-
-Range branch_range(const OrbitBranch& branch, int pellet, SectionCoordinate coordinate) {
-  Range y;
-  for (const BranchPoint& p : branch.points)
-    if (pellet < static_cast<int>(p.state.size())) y.include(branch_y(coordinate, p.state[pellet]));
-  return y;
+std::string short_number(double x) {
+  std::ostringstream s;
+  s.precision(5);
+  s << x;
+  return s.str();
 }
 
-void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& branch, int pellet,
-                       SectionCoordinate coordinate, const Style& style,
-                       std::vector<LegendEntry>& legend, Obstacles& avoid) {
+// The branch's line, one path per stretch of one stability (a segment takes the stability of its
+// far end), broken before each index of `breaks`, whose two ends get open circles.
+void draw_branch_line(cairo_t* cr, const Transform& tr, const OrbitBranch& branch, int pellet,
+                      SectionCoordinate coordinate, const std::vector<std::size_t>& breaks,
+                      const Style& style, std::vector<LegendEntry>& legend, Obstacles& avoid) {
   const auto& points = branch.points;
-  if (points.empty() || pellet >= static_cast<int>(points.front().state.size())) return;
   const double dash[] = {style.px(6.0), style.px(4.0)};
   bool any_stable = false, any_unstable = false;
-  std::vector<Point> line;
-  // One path per stretch of one stability; a segment takes the stability of its far end.
+  std::vector<Point> line, ends;
+  const auto broken = [&](std::size_t k) {
+    return std::find(breaks.begin(), breaks.end(), k) != breaks.end();
+  };
   for (std::size_t k = 0; k < points.size(); ++k) {
     const Point at = tr.to_pixel(points[k].value, branch_y(coordinate, points[k].state[pellet]));
+    if (k > 0 && broken(k)) {
+      ends.insert(ends.end(), {line.back(), at});
+      line.clear();
+    }
     line.push_back(at);
     const bool last = k + 1 == points.size();
-    if (!last && points[k + 1].stable == points[k].stable && k > 0) continue;
+    if (!last && !broken(k + 1) && points[k + 1].stable == points[k].stable && k > 0) continue;
     if (line.size() >= 2) {
       const bool stable = points[k].stable;
       (stable ? any_stable : any_unstable) = true;
@@ -79,14 +90,45 @@ void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& bran
   }
   if (any_stable) legend.push_back({"stable periodic motion", kInk, Swatch::line});
   if (any_unstable) legend.push_back({"unstable periodic motion", kInk, Swatch::dashed_line});
+  if (ends.empty()) return;
+  draw_markers(cr, ends, MarkerShape::circle, style.px(3.5), kWhite, kInk, style.px(1.0));
+  legend.push_back({"break: an impact crosses t = kT there (\u03c6\u0307 jumps; no bifurcation)",
+                    kWhite, Swatch::marker, MarkerShape::circle, kInk});
+}
+
+}  // namespace
+
+Range branch_range(const OrbitBranch& branch, int pellet, SectionCoordinate coordinate) {
+  Range y;
+  for (const BranchPoint& p : branch.points)
+    if (pellet < static_cast<int>(p.state.size())) y.include(branch_y(coordinate, p.state[pellet]));
+  return y;
+}
+
+void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& branch,
+                       const Model& model, int pellet, SectionCoordinate coordinate,
+                       const Style& style, std::vector<LegendEntry>& legend, Obstacles& avoid) {
+  const auto& points = branch.points;
+  if (points.empty() || pellet >= static_cast<int>(points.front().state.size())) return;
+  // φ is continuous where an impact crosses the section; φ̇ turns over.
+  const std::vector<std::size_t> breaks = coordinate == SectionCoordinate::dphi
+                                              ? section_crossings(branch, model, pellet)
+                                              : std::vector<std::size_t>{};
+  draw_branch_line(cr, tr, branch, pellet, coordinate, breaks, style, legend, avoid);
 
   set_font(cr, style.note_font());
-  bool seen[4] = {false, false, false, false};
+  bool seen[5] = {false, false, false, false, false};
   std::vector<Rect> labels;
-  for (const Bifurcation& b : branch.bifurcations) {
+  for (const MarkedBifurcation& b : marked_bifurcations(branch)) {
     if (pellet >= static_cast<int>(b.state.size())) continue;
     const Mark m = mark_of(b.kind);
     const Point at = tr.to_pixel(b.value, branch_y(coordinate, b.state[pellet]));
+    if (!tr.area().contains(at)) {  // said, not lost: the legend gives where it lies
+      legend.push_back({std::string(m.label) + ": " + m.name + " at " + short_number(b.value) +
+                            ", outside the plot",
+                        m.colour, Swatch::marker, m.shape, kInk});
+      continue;
+    }
     const Point centre[] = {at};
     draw_markers(cr, centre, m.shape, style.px(5.0), m.colour, kInk, style.px(0.8));
     // Beside the mark, stepped down past the labels of bifurcations close to it.
@@ -102,7 +144,7 @@ void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& bran
     draw_text_on_backdrop(cr, m.label, label, align, kInk, style.px(1.5));
     labels.push_back(text_box(cr, m.label, label, align));
     avoid.boxes.push_back(labels.back());
-    const int kind = static_cast<int>(b.kind);
+    const int kind = b.kind ? static_cast<int>(*b.kind) : 4;
     if (!seen[kind])
       legend.push_back(
           {std::string(m.label) + ": " + m.name, m.colour, Swatch::marker, m.shape, kInk});
@@ -133,9 +175,11 @@ void draw_branch_panel(cairo_t* cr, const PanelInput<BranchPlot>& in, const Bran
   clip_to(cr, area);
   std::vector<LegendEntry> legend;
   Obstacles avoid;
-  draw_branch_curve(cr, tr, branch, in.spec.pellet, in.spec.coordinate, style, legend, avoid);
-  draw_legend(cr, legend, area, avoid, style);
+  draw_branch_curve(cr, tr, branch, in.model, in.spec.pellet, in.spec.coordinate, style, legend,
+                    avoid);
   cairo_restore(cr);
+  // Unclipped: with no free corner the legend stands above the plot.
+  draw_legend(cr, legend, area, avoid, style);
   draw_frame(cr, tr, ax, ay, style);
   const std::string title =
       "Periodic motion continued, pellet " + std::to_string(in.spec.pellet + 1);

@@ -50,9 +50,11 @@ void draw_branch_panel(cairo_t* cr, const PanelInput<BranchPlot>& in, const Bran
 
 // The branch into a plot's transform, with its legend entries and what the legend should not
 // hide; and the range of its section coordinate, for one pellet.
-void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& branch, int pellet,
-                       SectionCoordinate coordinate, const Style& style,
-                       std::vector<LegendEntry>& legend, Obstacles& avoid);
+// The line is broken where an impact crosses the section time (render/branch_marks.h), and a
+// bifurcation outside the plot is named in the legend with its value.
+void draw_branch_curve(cairo_t* cr, const Transform& tr, const OrbitBranch& branch,
+                       const Model& model, int pellet, SectionCoordinate coordinate,
+                       const Style& style, std::vector<LegendEntry>& legend, Obstacles& avoid);
 Range branch_range(const OrbitBranch& branch, int pellet, SectionCoordinate coordinate);
 
 // A 2-D sweep's cells coloured by the period of the motion, with a legend of periods.

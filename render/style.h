@@ -33,6 +33,7 @@ inline constexpr Colour kGuide = rgb(0xBBBBBB);     // zero line, velocity jumps
 inline constexpr Colour kGrid = rgb(0xEBEBEB);      // grid lines
 inline constexpr Colour kFrictionZone = rgb(0xDDDDDD, 0.55);
 inline constexpr Colour kOverlay = rgb(0x000000);  // first-integral curve
+inline constexpr Colour kWhite = rgb(0xFFFFFF);    // open markers
 
 inline constexpr const char* kFontFamily = "DejaVu Sans";
 

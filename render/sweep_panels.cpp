@@ -166,7 +166,8 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const
   }
   avoid.lines.push_back(drawn);
   std::vector<LegendEntry> legend;
-  if (branch) draw_branch_curve(cr, tr, *branch, pellet, in.spec.coordinate, style, legend, avoid);
+  if (branch)
+    draw_branch_curve(cr, tr, *branch, in.model, pellet, in.spec.coordinate, style, legend, avoid);
   if (any_backward) {
     legend.push_back({"swept up", series_colour(0), Swatch::marker});
     legend.push_back({"swept down", series_colour(1), Swatch::marker});
@@ -174,8 +175,9 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const
   if (any_untrusted)
     legend.push_back(
         {"not trusted", {1.0, 1.0, 1.0, 1.0}, Swatch::marker, MarkerShape::circle, kInk});
-  draw_legend(cr, legend, area, avoid, style);
   cairo_restore(cr);
+  // Unclipped: with no free corner the legend stands above the plot.
+  draw_legend(cr, legend, area, avoid, style);
   draw_frame(cr, tr, ax, ay, style);
   draw_title(cr, in.layout.title_anchor, in.spec.title.empty() ? cloud.title : in.spec.title,
              style);

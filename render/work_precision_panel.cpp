@@ -31,22 +31,29 @@ std::string plain_label(double value) {
   return s;
 }
 
-// A log axis over whole decades: a tick at each decade (every other one if crowded); when few
-// decades span the axis, also at 2 and 5 times each, in plain decimals (`plain`: e.g. ms).
+// A log axis fitted to the data (a twentieth of its span, at least a tenth of a decade, beyond
+// each end; whole decades would give 0.1 to 100 ms for runs of 0.35 to 12 ms): a tick at each
+// decade inside it (every other one if crowded); when few decades span it, also at 2 and 5 times
+// each, in plain decimals (`plain`: e.g. ms).
 Axis decade_axis(Range r, double length_px, std::string label, bool plain) {
-  const int lo = static_cast<int>(std::floor(r.lo)), hi = static_cast<int>(std::ceil(r.hi));
+  const double pad = std::max(0.05 * (r.hi - r.lo), 0.1);
   Axis axis;
-  axis.range = {static_cast<double>(lo), static_cast<double>(std::max(hi, lo + 1))};
+  axis.range = {r.lo - pad, r.hi + pad};
   axis.label = std::move(label);
+  const int lo = static_cast<int>(std::floor(axis.range.lo));
+  const int hi = static_cast<int>(std::ceil(axis.range.hi));
   const int span = std::max(hi - lo, 1);
   const int every = std::max(1, static_cast<int>(std::ceil(span * 60.0 / length_px)));
   const bool fine = plain && span * 3 * 60.0 <= length_px && lo >= -4 && hi <= 5;
+  const auto tick = [&axis](double at, std::string text) {
+    if (axis.range.contains(at)) axis.ticks.push_back({at, std::move(text)});
+  };
   for (int k = lo; k <= hi; ++k) {
     if ((k - lo) % every != 0) continue;
     const double decade = std::pow(10.0, k);
-    axis.ticks.push_back({static_cast<double>(k), fine ? plain_label(decade) : decade_label(k)});
-    if (!fine || k == hi) continue;
-    for (double m : {2.0, 5.0}) axis.ticks.push_back({k + std::log10(m), plain_label(m * decade)});
+    tick(k, fine ? plain_label(decade) : decade_label(k));
+    if (!fine) continue;
+    for (double m : {2.0, 5.0}) tick(k + std::log10(m), plain_label(m * decade));
   }
   return axis;
 }
@@ -144,7 +151,10 @@ void draw_work_precision_panel(cairo_t* cr, const PanelInput<WorkPrecisionPlot>&
     for (const auto& [at, align] : spots) {
       const Rect box = text_box(cr, end.text, at, align);
       const auto covers = [&](const Rect& b) { return b.overlaps(box); };
-      if (std::any_of(avoid.boxes.begin(), avoid.boxes.end(), covers) ||
+      // Inside the plot, which clips: the last point's label beside it was cut off at the frame.
+      const bool inside = box.x >= area.x && box.right() <= area.right() && box.y >= area.y &&
+                          box.bottom() <= area.bottom();
+      if (!inside || std::any_of(avoid.boxes.begin(), avoid.boxes.end(), covers) ||
           std::any_of(markers.begin(), markers.end(), covers))
         continue;
       draw_text(cr, end.text, at, align, end.colour);

@@ -63,6 +63,34 @@ std::variant<std::optional<RunTable>, ApiError> table_of(const httplib::Request&
   return std::optional<RunTable>(*table);
 }
 
+// A trajectory sampled at a uniform step (dt=, with what=trajectory): sets the scene's stops and
+// the table to read them; else why not, naming dt.
+std::optional<ApiError> sample_uniformly(const httplib::Request& req, const Limits& limits,
+                                         Scene& scene, std::optional<RunTable>& table) {
+  if (!req.has_param("dt")) return std::nullopt;
+  if (table != RunTable::trajectory)
+    return ApiError{400, "dt", "samples the trajectory: ask format=csv&what=trajectory"};
+  const auto dt = parse_number(req.get_param_value("dt"));
+  const long most =
+      limits.samples > 0 ? std::min(limits.samples, kMaxUniformSamples) : kMaxUniformSamples;
+  auto times = uniform_times(dt.value_or(0.0), scene.sim.t_end, scene.model.size(), most, "dt");
+  if (auto* e = std::get_if<FieldError>(&times)) return ApiError::from(*e);
+  scene.sim.stops = std::get<std::vector<double>>(std::move(times));
+  table = RunTable::uniform;
+  return std::nullopt;
+}
+
+std::string table_key(std::optional<RunTable> table, const Scene& scene) {
+  if (!table) return "";
+  if (*table == RunTable::events) return " csv events";
+  if (*table == RunTable::trajectory) return " csv trajectory";
+  std::ostringstream key;  // the grid of times is the scene's t_end and the step
+  key.precision(17);
+  key << " csv uniform " << (scene.sim.stops.size() > 1 ? scene.sim.stops[1] : 0.0) << " "
+      << scene.sim.stops.size();
+  return key.str();
+}
+
 std::string simulate_key(const Scene& scene) { return "simulate " + canonical(scene, false); }
 
 std::string render_key(const Scene& scene, ImageFormat format) {
@@ -147,7 +175,7 @@ void Api::preset(const httplib::Request& req, httplib::Response& res) const {
 }
 
 void Api::simulate_post(const httplib::Request& req, httplib::Response& res) {
-  if (auto e = only_params(req, {"format", "what"})) return send_error(res, *e);
+  if (auto e = only_params(req, {"format", "what", "dt"})) return send_error(res, *e);
   SceneOrApiError scene = scene_from_body(req, config_.limits);
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   simulate(std::get<Scene>(scene), req, res);
@@ -156,7 +184,7 @@ void Api::simulate_post(const httplib::Request& req, httplib::Response& res) {
 void Api::simulate_get(const httplib::Request& req, httplib::Response& res) {
   SceneOrApiError scene = scene_from_query(
       req, config_.limits,
-      {"t_end", "method", "rtol", "atol", "trajectories", "check", "format", "what"});
+      {"t_end", "method", "rtol", "atol", "trajectories", "check", "format", "what", "dt"});
   if (auto* e = std::get_if<ApiError>(&scene)) return send_error(res, *e);
   simulate(std::get<Scene>(scene), req, res);
 }
@@ -218,7 +246,7 @@ void stream_sweep_result(const Job& job, bool csv, httplib::Response& res) {
       AccessLog::streamed(piece.size());
       return sink.write(piece.data(), piece.size());
     };
-    const bool whole = csv ? write_sweep_result_csv(*result, to_sink)
+    const bool whole = csv ? write_sweep_result_csv(spec, *result, to_sink)
                            : write_sweep_result_json(spec, *result, to_sink);
     if (whole) sink.done();
     return whole;  // false: the client went away, the connection ends
@@ -423,12 +451,13 @@ void Api::job_delete(const httplib::Request& req, httplib::Response& res) {
   send_status(res, *status);
 }
 
-void Api::simulate(const Scene& scene, const httplib::Request& req, httplib::Response& res) {
+void Api::simulate(const Scene& asked, const httplib::Request& req, httplib::Response& res) {
   const auto table = table_of(req);
   if (auto* e = std::get_if<ApiError>(&table)) return send_error(res, *e);
-  const std::optional<RunTable> t = std::get<std::optional<RunTable>>(table);
-  const std::string key =
-      simulate_key(scene) + (t ? *t == RunTable::events ? " csv events" : " csv trajectory" : "");
+  std::optional<RunTable> t = std::get<std::optional<RunTable>>(table);
+  Scene scene = asked;
+  if (auto e = sample_uniformly(req, config_.limits, scene, t)) return send_error(res, *e);
+  const std::string key = simulate_key(scene) + table_key(t, scene);
   answer(
       key, [scene, t, this] { return simulate_scene(scene, config_.limits, t); }, req, res);
 }

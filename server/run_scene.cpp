@@ -148,16 +148,21 @@ JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& lim
   return p;
 }
 
+WorkPrecisionOptions server_work_precision_options(const Limits& limits) {
+  WorkPrecisionOptions sweep;
+  sweep.repeats = 3;
+  sweep.deadline_ms = limits.deadline_ms;
+  return sweep;
+}
+
 JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> image,
                                const Limits& limits) {
-  WorkPrecisionOptions sweep;
-  sweep.repeats = 1;
-  // About 42 runs (4 methods × 10 tolerances and 2 references), each given a share of the
-  // deadline and the whole measurement the deadline of one simulation.
+  // About 42 points (4 methods × 10 tolerances and 2 references), each run given a share of
+  // the deadline and the whole measurement the deadline of one simulation.
   SimOptions options = bounded(scene.sim, limits);
   options.deadline_ms = limits.deadline_ms / 16.0;
-  sweep.deadline_ms = limits.deadline_ms;
-  const WorkPrecisionReport report = work_precision(scene.model, options, sweep);
+  const WorkPrecisionReport report =
+      work_precision(scene.model, options, server_work_precision_options(limits));
   if (!image) return Produced{work_precision_to_json(report).dump(), "application/json", {}};
   FigureSpec figure = scene.figure;  // its size, and its print size if it has one
   figure.plots = {WorkPrecisionPlot{}};

@@ -9,6 +9,7 @@
 #include <variant>
 #include <vector>
 
+#include "core/analysis/work_precision.h"
 #include "io/orbit_request.h"
 #include "io/run_csv.h"
 #include "io/scene.h"
@@ -54,7 +55,11 @@ SimOptions bounded_options(const SimOptions& options, const Limits& limits);
 // The scene's plots as one image, computing only what they draw.
 JobResult render_scene(const Scene& scene, ImageFormat format, const Limits& limits);
 
-// The work-precision sweep of the scene (one run per method and tolerance, each within a
+// How the server measures work-precision: each point the median of three runs (one run's time
+// zig-zags with the machine's load), the whole within the deadline of one simulation.
+WorkPrecisionOptions server_work_precision_options(const Limits& limits);
+
+// The work-precision sweep of the scene (runs per method and tolerance as above, each within a
 // share of the deadline): its table as JSON, or its diagram when `image` names a format.
 JobResult work_precision_scene(const Scene& scene, std::optional<ImageFormat> image,
                                const Limits& limits);

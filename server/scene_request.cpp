@@ -10,9 +10,6 @@
 #include "io/scene_json.h"
 
 namespace vibro::server {
-namespace {
-
-using nlohmann::json;
 
 std::optional<double> parse_number(const std::string& text) {
   double x = 0.0;
@@ -20,6 +17,10 @@ std::optional<double> parse_number(const std::string& text) {
   if (ec != std::errc() || end != text.data() + text.size() || !std::isfinite(x)) return {};
   return x;
 }
+
+namespace {
+
+using nlohmann::json;
 
 std::optional<long> parse_integer(const std::string& text) {
   long x = 0;

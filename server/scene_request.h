@@ -2,6 +2,8 @@
 // (GET, so an <img src> or a curl line can ask for it). Errors name the field or the parameter.
 #pragma once
 
+#include <optional>
+#include <string>
 #include <string_view>
 #include <variant>
 #include <vector>
@@ -13,6 +15,9 @@
 namespace vibro::server {
 
 using SceneOrApiError = std::variant<Scene, ApiError>;
+
+// A query parameter's finite number, written whole (std::from_chars); nothing otherwise.
+std::optional<double> parse_number(const std::string& text);
 
 // The body as a scene: 400 naming "scene" for bad JSON, else the field at fault.
 SceneOrApiError scene_from_body(const httplib::Request& req, const vibro::Limits& limits);

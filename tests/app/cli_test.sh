@@ -51,7 +51,7 @@ PY
 }
 
 scene=(SCENE --preset --t-end --method --rtol --atol --deadline-ms --no-check --trajectories)
-help "vibro --help lists the commands" --help -- simulate render work-precision sweep orbit \
+help "vibro --help lists the commands" --help -- simulate render work-precision sweep orbit plot \
   serve presets preset help
 help "vibro help lists the commands" help -- simulate render work-precision sweep orbit serve
 help "simulate --help" simulate --help -- "${scene[@]}" -o --output --what
@@ -61,6 +61,7 @@ help "sweep --help" sweep --help -- "${scene[@]}" -o --output --threads --plot -
   --coordinate --resume
 help "vibro help sweep" help sweep -- "${scene[@]}" --threads --resume
 help "orbit --help" orbit --help -- "${scene[@]}" -o --output
+help "plot --help" plot --help -- RESULT --scene --preset --plot --pellet --coordinate --over -o
 help "serve --help" serve --help -- --host --port --web --threads --queue --connections \
   --read-timeout --write-timeout --keep-alive --cache-mib --quiet --max-body --max-t-end \
   --max-events --max-steps --max-samples --deadline-ms --max-width --max-height --max-pixels \
@@ -228,6 +229,63 @@ if mount -t tmpfs -o size=64k tmpfs small-disk 2> /dev/null; then
   else fail "sweep -o on a full tmpfs keeps the old output (exit $status)"; cat err.txt; ls -A small-disk; fi
   umount small-disk && disk=""
 fi
+
+# One run writes every -o given; `vibro plot` redraws a saved sweep or branch without running
+# anything, as the command that ran it drew it.
+if "$vibro" sweep small.json --threads 2 -o s.csv -o s.json -o s.png -o s.svg 2> err.txt \
+    && [[ -s s.png && -s s.svg ]] && head -1 s.csv | grep -q '^model.pellets\[0\].Omega,value2,start,' \
+    && python3 -c 'import json; assert "sweep" in json.load(open("s.json"))["scene"]'
+then pass "sweep writes several outputs from one run"
+else fail "sweep writes several outputs from one run"; cat err.txt; head -1 s.csv; fi
+if "$vibro" plot s.json -o r.png -o r.pdf > out.txt 2> err.txt && cmp -s r.png s.png \
+    && [[ -s r.pdf ]] && (($(wc -l < out.txt) == 2)) \
+    && "$vibro" plot s.json --plot section --coordinate phi -o sec.png 2>> err.txt && [[ -s sec.png ]]
+then pass "plot redraws a saved sweep, the same image"
+else fail "plot redraws a saved sweep, the same image"; cat err.txt out.txt; fi
+python3 -c '
+import json; j = json.load(open("s.json")); del j["scene"]; json.dump(j, open("bare.json", "w"))'
+usage "plot of a result that does not carry its scene" scene -- plot bare.json -o x.png
+if "$vibro" plot bare.json --scene small.json -o bare.png > /dev/null 2> err.txt \
+    && cmp -s bare.png s.png; then pass "plot with --scene"
+else fail "plot with --scene"; cat err.txt; fi
+usage "plot of a Lyapunov line the sweep did not compute" sweep.lyapunov \
+  -- plot s.json --plot lyapunov -o x.png
+usage "plot of what is no result" RESULT -- plot s.png -o x.png
+usage "plot without -o" -o -- plot s.json
+python3 -c '
+import json; s = json.load(open("small.json"))
+s["periodic_orbit"]["continuation"].update(to=6.0, max_points=30)
+json.dump(s, open("branch.json", "w"))'
+if "$vibro" orbit branch.json -o o.json -o o.png 2> err.txt && [[ -s o.png ]] \
+    && "$vibro" plot o.json --over s.json -o o2.png > /dev/null 2>> err.txt && [[ -s o2.png ]]
+then pass "orbit writes several outputs; plot redraws its branch over a saved sweep"
+else fail "orbit writes several outputs; plot redraws its branch over a saved sweep"; cat err.txt; fi
+if "$vibro" simulate --preset paper --t-end 2 -o run.json -o events.csv 2> err.txt && python3 -c '
+import csv, json
+events = json.load(open("run.json"))["events"]
+rows = list(csv.DictReader(open("events.csv")))
+assert len({r["event"] for r in rows}) == len(events), (len(rows), len(events))'
+then pass "simulate writes JSON and CSV from one run"
+else fail "simulate writes JSON and CSV from one run"; cat err.txt; fi
+if "$vibro" render --preset paper --t-end 1 -o p.png -o p.svg > out.txt 2> err.txt && python3 -c '
+import json; r = json.load(open("out.txt"))
+assert [i["image"] for i in r["images"]] == ["p.png", "p.svg"] and "answer" in r, r'
+then pass "render draws one run in several formats"
+else fail "render draws one run in several formats"; cat err.txt out.txt; fi
+
+# A trajectory at a uniform step: every pellet's state at t = 0, dt, ..., t_end, from its start.
+if "$vibro" simulate --preset paper --t-end 2 --what trajectory --dt 0.01 -o u.csv 2> err.txt \
+    && python3 -c '
+import csv; rows = list(csv.DictReader(open("u.csv")))
+assert list(rows[0]) == ["t", "pellet", "phi", "dphi"], rows[0]
+assert len(rows) == 2 * 201, len(rows)
+assert all(abs(float(r["t"]) - 0.01 * (k // 2)) < 1e-12 for k, r in enumerate(rows))
+assert float(rows[0]["dphi"]) == 50 and float(rows[-1]["t"]) == 2'
+then pass "simulate --dt samples the trajectory at a uniform step"
+else fail "simulate --dt samples the trajectory at a uniform step"; cat err.txt; fi
+usage "--dt 0" --dt -- simulate --preset paper --what trajectory --dt 0 -o u.csv
+usage "--dt making too many samples" --dt -- simulate --preset paper --what trajectory --dt 1e-9 -o u.csv
+usage "--dt without --what trajectory" --dt -- simulate --preset paper --dt 0.1 -o u.csv
 
 # The serve flags reach the config: the limits and workers the server reports.
 "$vibro" serve --port 0 --quiet --threads 3 --max-t-end 50 --deadline-ms 250 --max-pixels 1e6 \

@@ -2,7 +2,11 @@
 """Quotes in the docs stay what the program prints.
 
 - README.md quotes the paper scene's answer: it must be `summary.answer` of
-  `vibro simulate --preset paper`, word for word (the event-time error included).
+  `vibro simulate --preset paper`, word for word (the event-time error included); and the
+  preset's impacts per limiter and pellet where it states how far it is from the paper's run.
+- Preset descriptions say what the preset's run does: high-frequency never sticks or releases
+  (no such event in its run), impact-oscillator is a pendulum forced along its circle, not at its
+  pivot.
 - docs/ACCURACY.md is written by scripts/accuracy_report.py: the script's fixed passages
   (TRUST_TEXT, DIFFERENTIAL_TEXT) must appear in the page as they are, so that an edit of one
   is made in the other; and the tables of the long forced run and of the extremes, remade by the
@@ -30,10 +34,40 @@ def readme_answer():
     return words(re.sub(r"^> ", "", quote, flags=re.M))
 
 
-def printed_answer(vibro):
+def paper_summary(vibro):
     out = subprocess.run([vibro, "simulate", "--preset", "paper"], capture_output=True, text=True,
                          timeout=120, check=True)
-    return words(json.loads(out.stdout)["summary"]["answer"])
+    return json.loads(out.stdout)["summary"]
+
+
+def printed_answer(vibro):
+    return words(paper_summary(vibro)["answer"])
+
+
+def readme_gap(vibro):
+    """The README's `impacts_by_limiter` of the paper preset, and the program's."""
+    text = open(os.path.join(ROOT, "README.md"), encoding="utf-8").read()
+    quoted = re.search(r"`summary\.impacts_by_limiter`, per limiter and pellet: `([^`]*)`", text)
+    return (json.loads(quoted.group(1)) if quoted else None,
+            paper_summary(vibro)["impacts_by_limiter"])
+
+
+def descriptions_true(vibro):
+    """Why a preset's description is not what its run does; empty when all are."""
+    wrong = []
+    def preset(name):
+        return json.loads(subprocess.run([vibro, "preset", name], capture_output=True, text=True,
+                                         timeout=60, check=True).stdout)
+    high = preset("high-frequency")
+    run = json.loads(subprocess.run([vibro, "simulate", "--preset", "high-frequency", "--no-check"],
+                                    capture_output=True, text=True, timeout=120, check=True).stdout)
+    kinds = {e["kind"] for e in run["events"]}
+    if kinds & {"stick", "release"} or "never sticks" not in high["description"]:
+        wrong.append(f"high-frequency: events {sorted(kinds)}, described: {high['description']}")
+    oscillator = preset("impact-oscillator")["description"]
+    if "pivot" in oscillator or "forced pendulum" not in oscillator:
+        wrong.append(f"impact-oscillator: {oscillator}")
+    return wrong
 
 
 def report_passages():
@@ -88,6 +122,19 @@ def main():
         print("PASS README quotes the paper scene's answer")
     else:
         print(f"FAIL README quotes the paper scene's answer\n  README: {quoted}\n  vibro:  {printed}")
+        failures += 1
+    quoted, counted = readme_gap(sys.argv[1])
+    if quoted == counted:
+        print("PASS README states the paper preset's impacts per limiter and pellet")
+    else:
+        print(f"FAIL README states the paper preset's impacts per limiter\n  README: {quoted}\n"
+              f"  vibro:  {counted}")
+        failures += 1
+    wrong = descriptions_true(sys.argv[1])
+    if not wrong:
+        print("PASS preset descriptions say what their runs do")
+    else:
+        print("FAIL preset descriptions:\n  " + "\n  ".join(wrong))
         failures += 1
     page = open(os.path.join(ROOT, "docs", "ACCURACY.md"), encoding="utf-8").read()
     for name, passage in report_passages().items():

@@ -52,7 +52,8 @@ rows = list(csv.DictReader(open(sys.argv[2])))
 p = j["points"]
 assert len(rows) == len(p["phi"]), (len(rows), len(p["phi"]))
 for k, row in enumerate(rows):
-    assert float(row["value"]) == p["value"][k] and float(row["value2"]) == p["value2"][k], k
+    assert float(row["model.pellets[0].phi0"]) == p["value"][k], k
+    assert float(row["model.pellets[0].dphi0"]) == p["value2"][k], k
     assert float(row["phi"]) == p["phi"][k], k
     assert int(row["attractor"]) == p["attractor"][k], (k, row["attractor"], p["attractor"][k])
 assert len(j["attractors"]) >= 2, j["attractors"]

@@ -104,7 +104,7 @@ TEST(Basins, OneThreadAndTwoGiveTheSameOutput) {
   SweepResult two = run(spec, 2);
   one.wall_ms = two.wall_ms = 0.0;
   one.threads = two.threads = 1;
-  EXPECT_EQ(sweep_result_csv(one), sweep_result_csv(two));
+  EXPECT_EQ(sweep_result_csv(spec, one), sweep_result_csv(spec, two));
   EXPECT_EQ(sweep_result_json(spec, one).dump(), sweep_result_json(spec, two).dump());
 }
 
@@ -131,7 +131,7 @@ TEST(Basins, TheResultListsTheAttractorsAndTheColumns) {
   const auto& a = j["attractors"][0];
   for (const char* key : {"id", "period", "impacts_per_period", "section", "cells"})
     EXPECT_TRUE(a.contains(key)) << key;
-  EXPECT_NE(sweep_result_csv(r).find(",lyapunov,attractor\n"), std::string::npos);
+  EXPECT_NE(sweep_result_csv(spec, r).find(",lyapunov,attractor\n"), std::string::npos);
   EXPECT_EQ(read_sweep(sweep_to_json(spec)).classify_attractor, true);
 }
 

@@ -74,12 +74,14 @@ TEST(SweepJson, TheResultsRunsCarryTheExponentOrNull) {
 }
 
 TEST(SweepJson, TheCsvEndsWithTheExponentEmptyOrMinusInf) {
-  std::istringstream csv(sweep_result_csv(three_runs()));
+  SweepSpec spec;
+  spec.axis.parameter = "model.pellets[0].F0";
+  std::istringstream csv(sweep_result_csv(spec, three_runs()));
   std::string header, line;
   std::getline(csv, header);
   EXPECT_EQ(header,
-            "value,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,"
-            "impacts_per_period,lyapunov");
+            "model.pellets[0].F0,value2,start,direction,pellet,t,phi,dphi,phase,limiter,trusted,"
+            "period,impacts_per_period,lyapunov");
   std::vector<std::string> last_cells;
   while (std::getline(csv, line)) last_cells.push_back(line.substr(line.rfind(',') + 1));
   ASSERT_EQ(last_cells.size(), 3u);
@@ -89,6 +91,20 @@ TEST(SweepJson, TheCsvEndsWithTheExponentEmptyOrMinusInf) {
   EXPECT_EQ(last_cells[1], "");
   EXPECT_EQ(last_cells[2], "-inf");
   EXPECT_EQ(std::strtod(last_cells[2].c_str(), nullptr), -std::numeric_limits<double>::infinity());
+}
+
+// The header names what was swept, by the parameters' field paths: a CSV read alone says what its
+// first two columns are (they were "value" and "value2", whatever the sweep).
+TEST(SweepJson, TheCsvHeaderNamesTheSweptParameters) {
+  SweepSpec spec;
+  spec.axis.parameter = "model.forcing.omega";
+  spec.axis2 = SweepAxis{"model.pellets[0].F0", 0.0, 1.0, 2};
+  const std::string csv = sweep_result_csv(spec, three_runs());
+  EXPECT_EQ(csv.substr(0, csv.find('\n')),
+            "model.forcing.omega,model.pellets[0].F0,start,direction,pellet,t,phi,dphi,phase,"
+            "limiter,trusted,period,impacts_per_period,lyapunov");
+  spec.axis.parameter = "odd,\"name\"";  // quoted as CSV, so the header stays 14 cells
+  EXPECT_EQ(sweep_csv_header(spec).substr(0, 15), "\"odd,\"\"name\"\"\",");
 }
 
 // Many points, with numbers JSON cannot hold among them.
@@ -152,17 +168,17 @@ TEST(SweepJson, TheResultIsWrittenInPiecesAndStopsWhenTheReaderGoesAway) {
   EXPECT_EQ(calls, 1);
   calls = 0;
   std::string csv;
-  ASSERT_TRUE(write_sweep_result_csv(result, [&](std::string_view piece) {
+  ASSERT_TRUE(write_sweep_result_csv(spec, result, [&](std::string_view piece) {
     ++calls;
     csv += piece;
     return true;
   }));
   EXPECT_GT(calls, 10);
-  EXPECT_EQ(csv, sweep_result_csv(result));
+  EXPECT_EQ(csv, sweep_result_csv(spec, result));
   EXPECT_EQ(std::count(csv.begin(), csv.end(), '\n'), 1 + 32000);
   calls = 0;
   EXPECT_FALSE(
-      write_sweep_result_csv(result, [&](std::string_view) { return ++calls > 1 && false; }));
+      write_sweep_result_csv(spec, result, [&](std::string_view) { return ++calls > 1 && false; }));
   EXPECT_EQ(calls, 1);
 }
 

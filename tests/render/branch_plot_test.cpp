@@ -4,10 +4,13 @@
 #include <gtest/gtest.h>
 
 #include <string>
+#include <utility>
+#include <vector>
 
 #include "core/analysis/orbit_continuation.h"
 #include "core/analysis/sweep.h"
 #include "png_decode.h"
+#include "render/branch_marks.h"
 #include "render/figure.h"
 #include "svg_check.h"
 #include "tests/core/impact_oscillator.h"
@@ -97,6 +100,72 @@ TEST(BranchPlot, WithoutABranchItIsRefused) {
       render_figure(figure, impact_oscillator(6.0), RunResult{}, ImageFormat::png);
   ASSERT_FALSE(r.ok());
   EXPECT_EQ(r.error->field, "plots[0].kind");
+}
+
+// A branch made by hand: φ̇ at the section along Ω, stable throughout.
+OrbitBranch hand_branch(const std::vector<std::pair<double, PhasePoint>>& points) {
+  OrbitBranch b;
+  for (const auto& [value, state] : points) b.points.push_back({value, {state}, {}, true, 1.0});
+  return b;
+}
+
+std::string svg_of(const OrbitBranch& branch, const ContinuationSpec& spec) {
+  FigureSpec figure;
+  figure.plots = {BranchPlot{}};
+  const RenderResult r = render_figure(figure, impact_oscillator(6.0), RunResult{},
+                                       ImageFormat::svg, {nullptr, std::nullopt, {{branch, spec}}});
+  EXPECT_TRUE(r.ok()) << r.error->message;
+  return std::string(r.bytes.begin(), r.bytes.end());
+}
+
+// Where an impact crosses the section time, the section's φ̇ turns over at the stop (k = 0.8:
+// −2.85 after the impact, +3.56 before it): the line is broken there and the legend says why,
+// not drawn as a vertical stroke a reader takes for a bifurcation. A turn away from the stop, or
+// one that is no rebound, is not a crossing.
+TEST(BranchPlot, TheLineBreaksWhereAnImpactCrossesTheSectionTime) {
+  const OrbitBranch crossing = hand_branch(
+      {{5.0, {0.02, -2.80}}, {5.1, {0.01, -2.85}}, {5.2, {0.01, 3.5625}}, {5.3, {0.03, 3.60}}});
+  EXPECT_EQ(render::section_crossings(crossing, impact_oscillator(6.0), 0),
+            std::vector<std::size_t>{2});
+  const ContinuationSpec spec{"model.pellets[0].Omega", 5.3, 10};
+  const std::string text = svg_of(crossing, spec);
+  EXPECT_EQ(testing::count_of(text, "an impact crosses t = kT there"), 1);
+  const OrbitBranch far = hand_branch({{5.0, {1.5, -2.85}}, {5.1, {1.5, 3.5625}}});
+  EXPECT_TRUE(render::section_crossings(far, impact_oscillator(6.0), 0).empty());
+  const OrbitBranch no_rebound = hand_branch({{5.0, {0.01, -2.85}}, {5.1, {0.01, 9.0}}});
+  EXPECT_TRUE(render::section_crossings(no_rebound, impact_oscillator(6.0), 0).empty());
+  EXPECT_EQ(testing::count_of(svg_of(no_rebound, spec), "an impact crosses"), 0);
+}
+
+// A fold and a period doubling at one value are a multiplier through infinity: one mark, named
+// so. A bifurcation outside the plot's window is named in the legend with its value.
+TEST(BranchPlot, AFoldAndADoublingAtOneValueAreOneMarkAndOnesOutsideTheWindowAreSaid) {
+  OrbitBranch b = hand_branch({{2.0, {0.5, 1.2}}, {2.5, {0.5, 1.0}}, {3.0, {0.5, 0.9}}});
+  b.bifurcations = {{BifurcationKind::fold, 2.000471220735955, {{0.5, 1.2033}}, {}, {}},
+                    {BifurcationKind::period_doubling, 2.0004714393322716, {{0.5, 1.2042}}, {}, {}},
+                    {BifurcationKind::period_doubling, 2.7, {{0.5, 0.95}}, {}, {}}};
+  const auto marked = render::marked_bifurcations(b);
+  ASSERT_EQ(marked.size(), 2u);
+  EXPECT_FALSE(marked[0].kind.has_value());
+  EXPECT_EQ(marked[1].kind, BifurcationKind::period_doubling);
+  const ContinuationSpec spec{"model.pellets[0].Omega", 3.0, 10};
+  std::string text = svg_of(b, spec);
+  EXPECT_EQ(testing::count_of(text, ">F<"), 0);
+  EXPECT_EQ(testing::count_of(text, ">PD<"), 1);
+  EXPECT_EQ(testing::count_of(text, "a multiplier through"), 1);
+
+  // Over a sweep from 2.5: the one at 2.0005 lies left of the window.
+  SweepSpec sweep;
+  sweep.axis = {"model.pellets[0].Omega", 2.5, 3.0, 2};
+  SweepResult none;
+  FigureSpec figure;
+  figure.plots = {SweepPlot{}};
+  const RenderResult over =
+      render_figure(figure, impact_oscillator(6.0), RunResult{}, ImageFormat::svg,
+                    {nullptr, {{sweep, none}}, {{b, spec}}});
+  ASSERT_TRUE(over.ok()) << over.error->message;
+  text.assign(over.bytes.begin(), over.bytes.end());
+  EXPECT_EQ(testing::count_of(text, "at 2.0005, outside the plot"), 1) << text.size();
 }
 
 }  // namespace

@@ -258,7 +258,7 @@ EdgeOutcome sweep_request(const std::string& body, const server::Limits& limits,
       result = run_sweep(scene->model, scene->sim, *scene->sweep, control);
     }
     check_finite(sweep_result_json(*scene->sweep, result), "", out);
-    check_csv(sweep_result_csv(result), out);
+    check_csv(sweep_result_csv(*scene->sweep, result), out);
     check_runs(*scene, result, out);
     return true;
   });

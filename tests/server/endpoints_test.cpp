@@ -4,7 +4,9 @@
 #include <algorithm>
 #include <nlohmann/json.hpp>
 #include <sstream>
+#include <vector>
 
+#include "io/presets.h"
 #include "tests/server/test_server.h"
 
 namespace vibro::testing {
@@ -81,6 +83,43 @@ TEST_F(Endpoints, TrajectoriesOnlyWhenAsked) {
   EXPECT_FALSE(run["trajectories"][0]["branches"].empty());
 }
 
+// A trajectory at a uniform step (dt=): every pellet's state at t = 0, dt, 2 dt, ... to t_end,
+// the first the scene's initial state; a dt that is no positive number, that would make more
+// samples than the server keeps, or that is asked without what=trajectory is refused naming dt.
+TEST_F(Endpoints, SimulateSamplesTheTrajectoryAtAUniformStepOnRequest) {
+  auto res = server->client().Get(
+      "/api/simulate?preset=paper&t_end=1&format=csv&what=trajectory&dt=0.125");
+  ASSERT_TRUE(res);
+  ASSERT_EQ(res->status, 200) << res->body;
+  std::istringstream rows(res->body);
+  std::string line;
+  std::getline(rows, line);
+  EXPECT_EQ(line, "t,pellet,phi,dphi");
+  std::vector<std::string> lines;
+  while (std::getline(rows, line)) lines.push_back(line);
+  ASSERT_EQ(lines.size(), 2u * 9u);  // t = 0, 0.125, ..., 1 for both pellets
+  for (std::size_t k = 0; k < lines.size(); ++k)
+    EXPECT_EQ(std::stod(lines[k].substr(0, lines[k].find(','))), 0.125 * (k / 2)) << lines[k];
+  const json scene = json::parse(*preset_json("paper"));
+  EXPECT_EQ(
+      lines[0], "0,0," + [&] {
+        std::ostringstream s;
+        s.precision(17);
+        s << scene["model"]["pellets"][0]["phi0"].get<double>() << ','
+          << scene["model"]["pellets"][0]["dphi0"].get<double>();
+        return s.str();
+      }());
+  for (const char* bad : {"/api/simulate?preset=paper&format=csv&what=trajectory&dt=0",
+                          "/api/simulate?preset=paper&format=csv&what=trajectory&dt=soon",
+                          "/api/simulate?preset=paper&format=csv&what=trajectory&dt=1e-9",
+                          "/api/simulate?preset=paper&format=csv&dt=0.1"}) {
+    res = server->client().Get(bad);
+    ASSERT_TRUE(res);
+    EXPECT_EQ(res->status, 400) << bad;
+    EXPECT_EQ(json::parse(res->body)["field"], "dt") << bad << " " << res->body;
+  }
+}
+
 // API.md "Exports": the events, or the sampled trajectory, as CSV: a row per event (the same
 // times as the JSON's, to the bit) or per sample; bad choices named.
 TEST_F(Endpoints, SimulateGivesEventsOrTheTrajectoryAsCsv) {
@@ -95,17 +134,26 @@ TEST_F(Endpoints, SimulateGivesEventsOrTheTrajectoryAsCsv) {
   std::istringstream rows(res->body);
   std::string line;
   std::getline(rows, line);
-  EXPECT_EQ(line, "t,kind,pellets,limiter,phi,dphi_before,dphi_after");
-  std::size_t k = 0;
-  for (; std::getline(rows, line); ++k) {
+  EXPECT_EQ(line, "event,t,kind,pellet,limiter,phi,dphi_before,dphi_after");
+  // One value per cell: a row per pellet of an event, the event's index first.
+  std::size_t rows_read = 0, k = 0;
+  for (; std::getline(rows, line); ++rows_read) {
+    EXPECT_EQ(line.find(';'), std::string::npos) << line;
+    std::vector<std::string> cells;
+    for (std::istringstream split(line); std::getline(split, cells.emplace_back(), ',');) {
+    }
+    cells.pop_back();
+    ASSERT_EQ(cells.size(), 8u) << line;
+    k = std::stoul(cells[0]);
     ASSERT_LT(k, events.size());
-    EXPECT_EQ(std::stod(line.substr(0, line.find(','))), events[k]["t"].get<double>());
-    EXPECT_NE(line.find("," + events[k]["kind"].get<std::string>() + ","), std::string::npos)
-        << line;
+    EXPECT_EQ(std::stod(cells[1]), events[k]["t"].get<double>());
+    EXPECT_EQ(cells[2], events[k]["kind"].get<std::string>());
   }
-  EXPECT_EQ(k, events.size());
-  // A collision lists its pellets and their speeds joined by ';', no limiter (−1).
-  EXPECT_NE(res->body.find(",collision,1;0,-1,"), std::string::npos);
+  EXPECT_EQ(k + 1, events.size());
+  EXPECT_GT(rows_read, events.size());  // the collisions take two rows
+  // A collision's pellets on rows of their own, each with its speeds, no limiter (−1).
+  EXPECT_NE(res->body.find(",collision,1,-1,"), std::string::npos);
+  EXPECT_NE(res->body.find(",collision,0,-1,"), std::string::npos);
 
   res = server->client().Get("/api/simulate?preset=paper&t_end=1&format=csv&what=trajectory");
   ASSERT_TRUE(res);

@@ -1,4 +1,5 @@
-// The server's parts alone: the cache's bound, tags, the worker queue's bound, signals.
+// The server's parts alone: the cache's bound, tags, the worker queue's bound, signals, how it
+// measures work-precision.
 #include <gtest/gtest.h>
 
 #include <atomic>
@@ -9,6 +10,7 @@
 
 #include "server/etag.h"
 #include "server/response_cache.h"
+#include "server/run_scene.h"
 #include "server/stop_signals.h"
 #include "server/worker_pool.h"
 
@@ -18,6 +20,16 @@ namespace {
 std::shared_ptr<const CachedResponse> answer(std::size_t bytes) {
   return std::make_shared<const CachedResponse>(
       CachedResponse{std::string(bytes, 'x'), "application/json", "\"t\"", {}});
+}
+
+// Each point of the server's work-precision diagram is a median of runs, not one run's time
+// (which zig-zagged with the machine's load), the whole within one simulation's deadline.
+TEST(WorkPrecisionOptions, TheServerTakesMediansOfThreeRuns) {
+  Limits limits;
+  limits.deadline_ms = 2000.0;
+  const WorkPrecisionOptions o = server_work_precision_options(limits);
+  EXPECT_EQ(o.repeats, 3);
+  EXPECT_EQ(o.deadline_ms, 2000.0);
 }
 
 TEST(ResponseCache, DropsTheLeastRecentlyUsedBeyondItsBytes) {
