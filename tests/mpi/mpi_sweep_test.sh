@@ -68,7 +68,7 @@ s = json.load(sys.stdin)
 s["model"]["pellets"][0]["Omega"] = 6.8
 s["sweep"] = {"parameter": "model.pellets[0].phi0", "from": 0.05, "to": 1.5, "count": 9,
               "parameter2": {"parameter": "model.pellets[0].dphi0", "from": -7, "to": 7, "count": 7},
-              "transient": 40, "record": 4, "classify": "attractor"}
+              "transient": 100, "record": 4, "classify": "attractor"}
 json.dump(s, open("basins.json", "w"))'
 "$vibro" sweep basins.json -o basins.one.csv --threads 1
 "$vibro" sweep basins.json -o basins.one.json --threads 1
