@@ -15,6 +15,7 @@
 #include <thread>
 #include <vector>
 
+#include "core/analysis/attractors.h"
 #include "io/sweep_wire.h"
 
 namespace vibro {
@@ -153,7 +154,8 @@ struct Coordinator {
         if (control.chain_done) control.chain_done(chain.chain, chain.runs);
         done += static_cast<long>(chain.runs.size());
         if (control.progress) control.progress(done, total);
-        for (SweepRun& r : chain.runs) runs.push_back(std::move(r));
+        if (control.keep_runs)
+          for (SweepRun& r : chain.runs) runs.push_back(std::move(r));
       }
       if (!failure.empty()) {
         std::fprintf(stderr, "%s\n", failure.c_str());
@@ -217,6 +219,7 @@ std::optional<SweepResult> run_sweep_mpi(const Model& model, const SimOptions& o
   SweepResult result;
   result.runs = std::move(coordinator.runs);
   order_sweep_runs(result.runs);
+  if (spec.classify_attractor) classify_attractors(model, result);
   result.threads = workers;
   result.wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();

@@ -25,9 +25,11 @@
 #include "app/scene_options.h"
 #include "app/sweep_plot_options.h"
 #include "app/usage.h"
+#include "core/analysis/attractors.h"
 #include "core/analysis/sweep.h"
 #include "io/scene_json.h"
 #include "io/sweep_checkpoint.h"
+#include "io/sweep_csv_stream.h"
 #include "io/sweep_json.h"
 #include "io/whole_file.h"
 #include "render/figure.h"
@@ -141,6 +143,17 @@ int checkpoint_failed(const CheckpointWriter& checkpoint) {
   return 1;
 }
 
+// Puts the streamed CSV in place; the checkpoint goes once it is.
+int finish_csv(SweepCsvStream& csv, CheckpointWriter& checkpoint) {
+  if (const auto problem = csv.finish()) {
+    print_error("-o", problem->message + "; " + checkpoint_path(csv.path()) +
+                          " keeps the finished chains for --resume");
+    return 1;
+  }
+  checkpoint.remove();
+  return 0;
+}
+
 // The sweep on this process's threads, or on every rank's under MPI; rank 0 writes the result.
 int run_job(const SweepOptions& o, bool mpi, int rank) {
   int code = 0;
@@ -173,10 +186,19 @@ int run_job(const SweepOptions& o, bool mpi, int rank) {
       bar(static_cast<double>(done) / std::max(total, 1L),
           std::to_string(done) + "/" + std::to_string(total) + " runs");
     };
+  // A CSV alone is written as the chains finish, the resumed ones first: the runs are not kept.
+  std::optional<SweepCsvStream> csv;
+  if (checkpoint && job->outs.size() == 1 && job->outs.front().ends_with(".csv")) {
+    csv.emplace(job->outs.front(), job->scene.model, spec);
+    if (job->resumed)
+      for (const ChainRuns& c : job->resumed->chains) csv->add(c.chain, c.runs);
+    control.keep_runs = false;
+  }
   if (checkpoint) {
     control.skip = [&done_before](int c) { return done_before[c] != 0; };
-    control.chain_done = [&checkpoint, &stop](int c, const std::vector<SweepRun>& runs) {
+    control.chain_done = [&checkpoint, &csv, &stop](int c, const std::vector<SweepRun>& runs) {
       if (!checkpoint->add({c, runs})) stop = true;
+      if (csv) csv->add(c, runs);
     };
   }
   std::optional<SweepResult> result;
@@ -186,10 +208,13 @@ int run_job(const SweepOptions& o, bool mpi, int rank) {
   if (!mpi) result = run_sweep(job->scene.model, job->scene.sim, spec, control);
   if (rank != 0) return 0;
   if (result->cancelled) return checkpoint_failed(*checkpoint);  // nothing else cancels
+  if (csv) return finish_csv(*csv, *checkpoint);
   if (job->resumed) {
     for (const ChainRuns& c : job->resumed->chains)
       result->runs.insert(result->runs.end(), c.runs.begin(), c.runs.end());
     order_sweep_runs(result->runs);
+    // The resumed runs and the new ones together: ids over the whole sweep.
+    if (spec.classify_attractor) classify_attractors(job->scene.model, *result);
   }
   const int written = write_result(*job, *result);
   if (written == 0 && checkpoint) checkpoint->remove();

@@ -205,8 +205,8 @@ struct PlotWriter {
   }
   // Drawn from a sweep's or an orbit's result, never listed in a scene; written for completeness.
   void operator()(const SweepPlot& p) const {
-    static constexpr const char* kViews[] = {"bifurcation", "section",  "impact_map",
-                                             "regime_map",  "lyapunov", "lyapunov_map"};
+    static constexpr const char* kViews[] = {
+        "bifurcation", "section", "impact_map", "regime_map", "lyapunov", "lyapunov_map", "basins"};
     j["kind"] = kViews[static_cast<int>(p.view)];
     j["pellet"] = p.pellet;
   }

@@ -112,6 +112,32 @@ std::vector<PhasePoint> read_states(const json& list, const std::string& field) 
   return states;
 }
 
+// A basin sweep's attractor table and each run's attractor (runs.attractor, an id of the table
+// or -1).
+void read_attractors(const json& j, SweepResult& result) {
+  const json& list = j["attractors"];
+  if (!list.is_array()) throw FieldException("attractors", "must be a list of attractors");
+  for (std::size_t k = 0; k < list.size(); ++k) {
+    const std::string field = "attractors[" + std::to_string(k) + "]";
+    Fields f(list[k], field);
+    Attractor a;
+    a.id = static_cast<int>(k);
+    a.period = static_cast<int>(f.integer("period").value_or(0));
+    a.impacts_per_period = f.number("impacts_per_period").value_or(0.0);
+    a.cells = f.integer("cells").value_or(0);
+    for (const PhasePoint& s : read_states(required(f, "section"), field + ".section"))
+      a.section.emplace_back(s.phi, s.dphi);
+    f.integer("id");
+    f.done();
+    result.attractors.push_back(std::move(a));
+  }
+  const json& ids = column(j["runs"], "runs", "attractor", static_cast<long>(result.runs.size()));
+  const long last = static_cast<long>(result.attractors.size()) - 1;
+  for (std::size_t k = 0; k < result.runs.size(); ++k)
+    result.runs[k].attractor = static_cast<int>(integer_at(ids, k, "runs.attractor", -1, last));
+  result.classified = true;
+}
+
 std::vector<std::complex<double>> read_multipliers(const json& list, const std::string& field) {
   if (!list.is_array()) throw FieldException(field, "must be a list of {\"re\", \"im\"}");
   std::vector<std::complex<double>> out;
@@ -152,6 +178,7 @@ std::variant<SweepResult, FieldError> read_sweep_result(const json& j) {
     SweepResult result;
     result.runs = read_runs(j["runs"]);
     read_points(j["points"], result.runs);
+    if (j.contains("attractors")) read_attractors(j, result);
     return result;
   });
 }

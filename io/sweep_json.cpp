@@ -114,6 +114,7 @@ struct RunColumn {
 
 // In sorted order, as a JSON object's keys are written.
 constexpr PointColumn kPointColumns[] = {
+    {"attractor", [](Pieces& o, Run r, std::size_t, Point) { o.integer(r.attractor); }},
     {"direction", [](Pieces& o, Run r, std::size_t, Point) { o.integer(r.direction); }},
     {"dphi", [](Pieces& o, Run, std::size_t, Point p) { o.number(p.dphi); }},
     {"limiter", [](Pieces& o, Run, std::size_t, Point p) { o.integer(p.limiter); }},
@@ -130,6 +131,7 @@ constexpr PointColumn kPointColumns[] = {
 
 constexpr RunColumn kRunColumns[] = {
     {"at_rest", [](Pieces& o, Run r) { o.boolean(r.at_rest); }},
+    {"attractor", [](Pieces& o, Run r) { o.integer(r.attractor); }},
     {"direction", [](Pieces& o, Run r) { o.integer(r.direction); }},
     {"error_estimate", [](Pieces& o, Run r) { o.number(r.error_estimate); }},
     {"impacts_per_period", [](Pieces& o, Run r) { o.number(r.impacts_per_period); }},
@@ -146,6 +148,38 @@ constexpr RunColumn kRunColumns[] = {
     {"value", [](Pieces& o, Run r) { o.number(r.value); }},
     {"value2", [](Pieces& o, Run r) { o.number(r.value2); }},
 };
+
+// The attractor columns are written only for a sweep that classifies attractors: other sweeps'
+// results stay as they were.
+bool column_written(const char* name, const SweepResult& result) {
+  return result.classified || std::string_view(name) != "attractor";
+}
+
+// "attractors": [{"cells", "id", "impacts_per_period", "period", "section": [{"dphi", "phi"}]}]
+void write_attractors(Pieces& out, const SweepResult& result) {
+  out.text("\"attractors\":[");
+  for (const Attractor& a : result.attractors) {
+    if (&a != result.attractors.data()) out.text(",");
+    out.text("{\"cells\":");
+    out.integer(a.cells);
+    out.text(",\"id\":");
+    out.integer(a.id);
+    out.text(",\"impacts_per_period\":");
+    out.number(a.impacts_per_period);
+    out.text(",\"period\":");
+    out.integer(a.period);
+    out.text(",\"section\":[");
+    for (std::size_t k = 0; k < a.section.size(); ++k) {
+      out.text(k > 0 ? ",{\"dphi\":" : "{\"dphi\":");
+      out.number(a.section[k].second);
+      out.text(",\"phi\":");
+      out.number(a.section[k].first);
+      out.text("}");
+    }
+    out.text("]}");
+  }
+  out.text("],");
+}
 
 // What `write` writes to a sink, as one string.
 template <class Write>
@@ -224,6 +258,11 @@ SweepSpec read_sweep(const json& j) {
     s.seed = static_cast<std::uint64_t>(*seed);
   }
   s.lyapunov = f.boolean("lyapunov", s.lyapunov);
+  if (auto classify = f.string("classify", 32)) {
+    if (*classify != "attractor")
+      throw FieldException("sweep.classify", "must be \"attractor\", got \"" + *classify + "\"");
+    s.classify_attractor = true;
+  }
   f.done();
   return s;
 }
@@ -241,27 +280,34 @@ json sweep_to_json(const SweepSpec& s) {
   j["initial_states"] = s.initial_states;
   j["seed"] = s.seed;
   j["lyapunov"] = s.lyapunov;
+  if (s.classify_attractor) j["classify"] = "attractor";
   return j;
 }
 
 bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, const TextSink& sink,
                              const json& scene) {
   Pieces out(sink);
-  out.text("{\"parameter\":");
+  out.text("{");
+  if (result.classified) write_attractors(out, result);
+  out.text("\"parameter\":");
   out.string(spec.axis.parameter);
   if (spec.axis2) {
     out.text(",\"parameter2\":");
     out.string(spec.axis2->parameter);
   }
   out.text(",\"points\":{");
+  bool first = true;
   for (const PointColumn& c : kPointColumns) {
-    if (&c != kPointColumns) out.text(",");
+    if (!column_written(c.name, result)) continue;
+    if (!first) out.text(",");
+    first = false;
     out.string(c.name);
     out.text(":");
     if (!write_point_column(out, c, result)) return false;
   }
   out.text("},\"runs\":{");
   for (const RunColumn& c : kRunColumns) {
+    if (!column_written(c.name, result)) continue;
     if (&c != kRunColumns) out.text(",");
     out.string(c.name);
     out.text(":");
@@ -296,6 +342,7 @@ json sweep_result_json(const SweepSpec& spec, const SweepResult& result, const j
 }
 
 std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {
+  if (name.empty() && spec.classify_attractor) return SweepView::basins;
   if (name.empty()) return spec.axis2 ? SweepView::regime_map : SweepView::bifurcation;
   if (name == "bifurcation") return SweepView::bifurcation;
   if (name == "section") return SweepView::section;
@@ -303,10 +350,45 @@ std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpe
   if (name == "regime_map") return SweepView::regime_map;
   if (name == "lyapunov") return SweepView::lyapunov;
   if (name == "lyapunov_map") return SweepView::lyapunov_map;
+  if (name == "basins") return SweepView::basins;
   return std::nullopt;
 }
 
 namespace {
+
+// One line per section point of the run, as in write_sweep_result_csv; `attractor` the value of
+// the last column when it is written (a sweep that classifies attractors).
+void write_run_rows(Pieces& out, const SweepRun& run, std::optional<int> attractor) {
+  for (const SectionPoint& p : run.points) {
+    out.digits17(run.value);
+    out.text(",");
+    out.digits17(run.value2);
+    out.text(",");
+    out.integer(run.start);
+    out.text(",");
+    out.integer(run.direction);
+    out.text(",");
+    out.integer(p.pellet);
+    for (double x : {p.t, p.phi, p.dphi, p.phase}) {
+      out.text(",");
+      out.digits17(x);
+    }
+    out.text(",");
+    out.integer(p.limiter);
+    out.text(p.trusted ? ",1," : ",0,");
+    out.integer(run.period);
+    out.text(",");
+    out.digits17(run.impacts_per_period);
+    // Empty without an exponent, "-inf" where every perturbation dies (strtod reads it).
+    out.text(",");
+    if (run.lyapunov) out.digits17(*run.lyapunov);
+    if (attractor) {
+      out.text(",");
+      out.integer(*attractor);
+    }
+    out.text("\n");
+  }
+}
 
 // A header cell as CSV quotes it: within double quotes, its quotes doubled, when it holds a
 // comma, a quote or a line break (a field path does not, but the header must stay one row).
@@ -327,7 +409,16 @@ std::string sweep_csv_header(const SweepSpec& spec) {
   const std::array<std::string, 2> names = sweep_value_names(spec);
   return csv_cell(names[0]) + "," + csv_cell(names[1]) +
          ",start,direction,pellet,t,phi,dphi,phase,limiter,trusted,period,impacts_per_period,"
-         "lyapunov\n";
+         "lyapunov" +
+         (spec.classify_attractor ? ",attractor\n" : "\n");
+}
+
+std::string sweep_run_csv(const SweepRun& run, std::optional<int> attractor) {
+  return whole_text([&](const TextSink& sink) {
+    Pieces out(sink);
+    write_run_rows(out, run, attractor);
+    return out.finish();
+  });
 }
 
 bool write_sweep_result_csv(const SweepSpec& spec, const SweepResult& result,
@@ -336,31 +427,8 @@ bool write_sweep_result_csv(const SweepSpec& spec, const SweepResult& result,
   out.text(sweep_csv_header(spec));
   for (const SweepRun& run : result.runs) {
     if (!out.ok()) return false;
-    for (const SectionPoint& p : run.points) {
-      out.digits17(run.value);
-      out.text(",");
-      out.digits17(run.value2);
-      out.text(",");
-      out.integer(run.start);
-      out.text(",");
-      out.integer(run.direction);
-      out.text(",");
-      out.integer(p.pellet);
-      for (double x : {p.t, p.phi, p.dphi, p.phase}) {
-        out.text(",");
-        out.digits17(x);
-      }
-      out.text(",");
-      out.integer(p.limiter);
-      out.text(p.trusted ? ",1," : ",0,");
-      out.integer(run.period);
-      out.text(",");
-      out.digits17(run.impacts_per_period);
-      // Empty without an exponent, "-inf" where every perturbation dies (strtod reads it).
-      out.text(",");
-      if (run.lyapunov) out.digits17(*run.lyapunov);
-      out.text("\n");
-    }
+    write_run_rows(out, run,
+                   spec.classify_attractor ? std::optional<int>(run.attractor) : std::nullopt);
   }
   return out.finish();
 }

@@ -41,11 +41,14 @@ bool write_sweep_result_csv(const SweepSpec& spec, const SweepResult& result, co
 std::string sweep_result_csv(const SweepSpec& spec, const SweepResult& result);
 // The header row: the parameter's path, the second parameter's (or "value2", then always 0, for
 // a sweep of one parameter), start, direction, pellet, t, phi, dphi, phase, limiter, trusted,
-// period, impacts_per_period, lyapunov.
+// period, impacts_per_period, lyapunov, and attractor for a sweep that classifies attractors.
 std::string sweep_csv_header(const SweepSpec& spec);
 // The names of the header's first two columns: the parameters' field paths ("value2" for a
 // sweep of one parameter).
 std::array<std::string, 2> sweep_value_names(const SweepSpec& spec);
+// One run's lines, the attractor column holding `attractor` when given (a stream of chains
+// writes them as they finish, io/sweep_csv_stream.h).
+std::string sweep_run_csv(const SweepRun& run, std::optional<int> attractor);
 
 // The plot a sweep is drawn as: one of kSweepPlotNames; an empty name picks the regime map for a
 // 2-D sweep and the bifurcation diagram otherwise. Nothing for another name. Whether the sweep
@@ -53,7 +56,7 @@ std::array<std::string, 2> sweep_value_names(const SweepSpec& spec);
 // (render/figure.h).
 std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpec& spec);
 inline constexpr const char* kSweepPlotNames =
-    "\"bifurcation\", \"section\", \"impact_map\", \"regime_map\", \"lyapunov\" or "
-    "\"lyapunov_map\"";
+    "\"bifurcation\", \"section\", \"impact_map\", \"regime_map\", \"lyapunov\", "
+    "\"lyapunov_map\" or \"basins\"";
 
 }  // namespace vibro

@@ -90,23 +90,48 @@ std::variant<std::string, FileProblem> read_whole_file(const std::string& path) 
   return bytes;
 }
 
-std::optional<FileProblem> write_whole_file(const std::string& path, std::string_view bytes) {
-  const std::string target = file_replaced(path);
-  const std::string temporary = temporary_beside(target);
-  const int fd = ::open(temporary.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
-  if (fd < 0) return problem(path, "cannot be written", errno);
-  struct stat st {};
-  if (::stat(target.c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::fchmod(fd, st.st_mode & 07777);
-  int error = write_all(fd, bytes);
-  if (error == 0 && ::fsync(fd) != 0) error = errno;
-  if (::close(fd) != 0 && error == 0) error = errno;
-  if (error == 0 && ::rename(temporary.c_str(), target.c_str()) != 0) error = errno;
-  if (error != 0) {
-    ::unlink(temporary.c_str());
-    return problem(path, "cannot be written", error);
+WholeFileWriter::WholeFileWriter(const std::string& path)
+    : path_(path), target_(file_replaced(path)), temporary_(temporary_beside(target_)) {
+  fd_ = ::open(temporary_.c_str(), O_WRONLY | O_CREAT | O_EXCL | O_CLOEXEC, 0666);
+  if (fd_ < 0) {
+    error_ = errno;
+    return;
   }
-  sync_directory_of(target);
+  struct stat st {};
+  if (::stat(target_.c_str(), &st) == 0 && S_ISREG(st.st_mode)) ::fchmod(fd_, st.st_mode & 07777);
+}
+
+WholeFileWriter::~WholeFileWriter() {
+  if (fd_ < 0) return;
+  ::close(fd_);
+  ::unlink(temporary_.c_str());
+}
+
+bool WholeFileWriter::append(std::string_view bytes) {
+  if (error_ == 0) error_ = write_all(fd_, bytes);
+  return error_ == 0;
+}
+
+std::optional<FileProblem> WholeFileWriter::commit() {
+  if (fd_ < 0) return problem(path_, "cannot be written", error_);
+  int error = error_;
+  if (error == 0 && ::fsync(fd_) != 0) error = errno;
+  if (::close(fd_) != 0 && error == 0) error = errno;
+  fd_ = -1;
+  if (error == 0 && ::rename(temporary_.c_str(), target_.c_str()) != 0) error = errno;
+  if (error != 0) {
+    ::unlink(temporary_.c_str());
+    error_ = error;
+    return problem(path_, "cannot be written", error);
+  }
+  sync_directory_of(target_);
   return std::nullopt;
+}
+
+std::optional<FileProblem> write_whole_file(const std::string& path, std::string_view bytes) {
+  WholeFileWriter file(path);
+  file.append(bytes);
+  return file.commit();
 }
 
 }  // namespace vibro

@@ -27,6 +27,26 @@ std::variant<std::string, FileProblem> read_whole_file(const std::string& path);
 // umask's.
 std::optional<FileProblem> write_whole_file(const std::string& path, std::string_view bytes);
 
+// A file written whole in pieces, as write_whole_file writes it: the pieces go to a temporary
+// file beside the target, which commit() syncs and renames over it; a writer dropped without a
+// commit (or after a failure) removes its temporary file and leaves the target as it was.
+class WholeFileWriter {
+ public:
+  explicit WholeFileWriter(const std::string& path);
+  ~WholeFileWriter();
+  WholeFileWriter(const WholeFileWriter&) = delete;
+  WholeFileWriter& operator=(const WholeFileWriter&) = delete;
+  // Whether every piece so far was written; after a failure nothing more is.
+  bool append(std::string_view bytes);
+  // Puts the file in place, or says why it could not be written.
+  std::optional<FileProblem> commit();
+
+ private:
+  std::string path_, target_, temporary_;
+  int fd_ = -1;
+  int error_ = 0;
+};
+
 // Writes all of `bytes` to the open descriptor `fd`, through short writes and interruptions;
 // the errno of the failure, or 0.
 int write_all(int fd, std::string_view bytes);

@@ -61,6 +61,8 @@ class Sweep {
     d["impacts_per_period"] =
         column<double>(n, [&](std::size_t k) { return run(k).impacts_per_period; });
     d["lyapunov"] = column<double>(n, [&](std::size_t k) { return lyapunov(run(k)); });
+    if (result_.classified)
+      d["attractor"] = column<std::int64_t>(n, [&](std::size_t k) { return run(k).attractor; });
     d["run"] = column<std::int64_t>(n, [&](std::size_t k) { return where_[k].first; });
     points_ = d;
     return d;
@@ -89,6 +91,8 @@ class Sweep {
     d["termination"] =
         string_column(np, n, [&](std::size_t k) { return termination_name(r[k].termination); });
     d["message"] = string_column(np, n, [&](std::size_t k) { return r[k].message; });
+    if (result_.classified)
+      d["attractor"] = column<std::int64_t>(n, [&](std::size_t k) { return r[k].attractor; });
     runs_ = d;
     return d;
   }
@@ -101,6 +105,29 @@ class Sweep {
     d["threads"] = result_.threads;
     d["wall_ms"] = result_.wall_ms;
     return d;
+  }
+
+  // The JSON's "attractors", a list of dicts; None when the sweep classified none.
+  py::object attractors() const {
+    if (!result_.classified) return py::none();
+    py::list list;
+    for (const Attractor& a : result_.attractors) {
+      py::list section;
+      for (const auto& [phi, dphi] : a.section) {
+        py::dict state;
+        state["phi"] = phi;
+        state["dphi"] = dphi;
+        section.append(state);
+      }
+      py::dict d;
+      d["id"] = a.id;
+      d["period"] = a.period;
+      d["impacts_per_period"] = a.impacts_per_period;
+      d["section"] = section;
+      d["cells"] = a.cells;
+      list.append(d);
+    }
+    return list;
   }
 
   // With its scene, as `vibro sweep` writes it (so that `vibro plot` can redraw it).
@@ -200,10 +227,14 @@ void add_sweep(py::module_& m) {
           "column of `vibro sweep -o OUT.csv` (the swept values under the "
           "parameters' field paths, or value2 for a sweep of one; start, direction, "
           "pellet, t, phi, dphi, phase, limiter, trusted, period, "
-          "impacts_per_period, lyapunov: NaN without one) and run, the index "
-          "of its run in `runs`.")
+          "impacts_per_period, lyapunov: NaN without one; attractor when the "
+          "sweep classifies attractors) and run, the index of its run in `runs`.")
       .def_property_readonly("runs", &Sweep::runs,
                              "One entry per run: a dict of numpy arrays (the JSON's \"runs\").")
+      .def_property_readonly("attractors", &Sweep::attractors,
+                             "With \"classify\": \"attractor\": the attractors the runs settle "
+                             "on, [{id, period, impacts_per_period, section: [{phi, dphi}], "
+                             "cells}] as in the JSON; else None.")
       .def_property_readonly("stats", &Sweep::stats,
                              "cancelled, points, runs, threads, wall_ms, as in the JSON.")
       .def_property_readonly(
@@ -220,8 +251,9 @@ void add_sweep(py::module_& m) {
       .def("render", &Sweep::render, py::arg("plot") = "", py::arg("format") = "png",
            py::arg("pellet") = 0, py::arg("coordinate") = "dphi",
            "Draws the sweep as `vibro sweep -o OUT.png --plot PLOT` does: plot is "
-           "\"bifurcation\", \"section\", \"impact_map\", \"regime_map\", \"lyapunov\" or "
-           "\"lyapunov_map\" (\"\": the regime map of a 2-D sweep, else the bifurcation diagram).")
+           "\"bifurcation\", \"section\", \"impact_map\", \"regime_map\", \"lyapunov\", "
+           "\"lyapunov_map\" or \"basins\" (\"\": the basins of a sweep classifying attractors, "
+           "else the regime map of a 2-D sweep, else the bifurcation diagram).")
       .def("_repr_png_",
            [](const Sweep& s) -> py::object {
              try {

@@ -113,6 +113,8 @@ struct PanelDrawer {
       render::draw_lyapunov_panel(cr, input(plot), sweep);
     else if (plot.view == SweepView::lyapunov_map)
       render::draw_lyapunov_map_panel(cr, input(plot), sweep);
+    else if (plot.view == SweepView::basins)
+      render::draw_basins_panel(cr, input(plot), sweep);
     else
       render::draw_sweep_points_panel(cr, input(plot), sweep,
                                       data.branch ? &*data.branch : nullptr);
@@ -171,7 +173,7 @@ std::optional<FieldError> draw_panel(cairo_t* cr, const FigureSpec& figure, std:
 bool legend_movable(const PlotSpec& plot) {
   if (std::holds_alternative<CylinderPlot>(plot)) return false;
   const auto* sweep = std::get_if<SweepPlot>(&plot);
-  return !sweep || (sweep->view != SweepView::regime_map && sweep->view != SweepView::lyapunov_map);
+  return !sweep || !map_view(sweep->view);
 }
 
 // The same panel with room for its legend beside the plot or above it, whichever leaves the data

@@ -23,6 +23,10 @@ std::optional<FieldError> check_drawable(std::size_t i, const PlotSpec& plot, Im
 }  // namespace
 
 std::optional<FieldError> validate_sweep_plot(SweepView view, const SweepSpec& spec) {
+  if (view == SweepView::basins && !spec.classify_attractor)
+    return FieldError{"sweep.classify",
+                      "must be \"attractor\" for the \"basins\" plot: this sweep labelled no "
+                      "run with an attractor"};
   if (view != SweepView::lyapunov && view != SweepView::lyapunov_map) return std::nullopt;
   const std::string name = view == SweepView::lyapunov ? "\"lyapunov\"" : "\"lyapunov_map\"";
   if (!spec.lyapunov)

@@ -82,10 +82,11 @@ std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
       const int stacked = time && time->show_dphi ? 2 : 1;
       const auto* sweep = std::get_if<SweepPlot>(&plot);
       const auto* curves = std::get_if<BranchPlot>(&plot);
-      const bool map = (sweep && (sweep->view == SweepView::regime_map ||
-                                  sweep->view == SweepView::lyapunov_map)) ||
-                       (curves && curves->curves);
-      layouts.push_back(panel_layout(cells[i], style, stacked, map ? kMapLegendColumn : 0.0));
+      const bool map = (sweep && map_view(sweep->view)) || (curves && curves->curves);
+      const double column = !map ? 0.0
+                            : sweep && sweep->view == SweepView::basins ? kBasinsLegendColumn
+                                                                         : kMapLegendColumn;
+      layouts.push_back(panel_layout(cells[i], style, stacked, column));
     }
   }
   return layouts;

@@ -30,6 +30,8 @@ PanelLayout panel_layout(Rect cell, const Style& style, int stacked, double lege
 // The width (at scale 1) a map of a sweep (regime or Lyapunov map) keeps right of its plot for
 // its legend or colour bar: every cell is data, so no corner of the plot is free for it.
 inline constexpr double kMapLegendColumn = 160.0;
+// The basins' legend names each attractor's period and impacts: a wider column.
+inline constexpr double kBasinsLegendColumn = 250.0;
 
 // The layout of every panel of a figure: 3-D panels and mechanism sketches (no axes) get one plot
 // area, the rest of the cell below the title.

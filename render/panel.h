@@ -74,6 +74,10 @@ void draw_bifurcation_curves(cairo_t* cr, const Transform& tr,
                              const std::vector<BifurcationCurve>& curves, bool swapped,
                              const Style& style, std::vector<LegendEntry>& legend);
 
+// A basin sweep's cells coloured by attractor (SweepRun::attractor), with a legend of the
+// attractors' periods and impacts per period. The sweep classified them (validate_sweep_plot).
+void draw_basins_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData& sweep);
+
 // A sweep's largest Lyapunov exponents against the swept parameter, one line per direction of
 // continuation, with the zero line; and a 2-D sweep's cells coloured by it, with a colour bar.
 // The sweep computed them (validate_sweep_plot).

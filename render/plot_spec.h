@@ -92,7 +92,13 @@ enum class SweepView {
   regime_map,    // a 2-D sweep's cells coloured by the period of the motion
   lyapunov,      // a 1-D sweep's largest Lyapunov exponents against the swept parameter
   lyapunov_map,  // a 2-D sweep's cells coloured by the largest Lyapunov exponent
+  basins,        // a sweep over initial states, its cells coloured by attractor
 };
+
+// Whether the view fills the sweep's cells edge to edge, its legend in a column beside them.
+constexpr bool map_view(SweepView v) {
+  return v == SweepView::regime_map || v == SweepView::lyapunov_map || v == SweepView::basins;
+}
 
 // A sweep drawn (the sweep's result, not the scene's run).
 struct SweepPlot {

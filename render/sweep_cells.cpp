@@ -55,7 +55,8 @@ CellMap draw_cells(cairo_t* cr, const PanelInput<SweepPlot>& in, const SweepData
 
 Rect legend_column(const PanelInput<SweepPlot>& in) {
   const Rect& area = in.layout.plots.front();
-  return {area.right(), area.y, in.style.px(kMapLegendColumn), area.h};
+  const double column = in.spec.view == SweepView::basins ? kBasinsLegendColumn : kMapLegendColumn;
+  return {area.right(), area.y, in.style.px(column), area.h};
 }
 
 }  // namespace vibro::render

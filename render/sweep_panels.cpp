@@ -226,7 +226,7 @@ std::optional<ParameterAxis> parameter_axis(const FigureSpec& figure, const Swee
   const auto* plot = std::get_if<SweepPlot>(&figure.plots.front());
   if (!plot || plot->view == SweepView::section || plot->view == SweepView::impact_map)
     return std::nullopt;
-  const bool map = plot->view == SweepView::regime_map || plot->view == SweepView::lyapunov_map;
+  const bool map = map_view(plot->view);
   const render::Rect area = render::figure_layout(figure).front().plots.front();
   const render::Range x =
       map ? render::cell_range(spec.axis) : render::bifurcation_range(spec.axis);

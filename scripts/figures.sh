@@ -39,6 +39,8 @@ $vibro sweep docs/scenes/impact-oscillator-lyapunov.json --plot lyapunov \
   -o docs/images/lyapunov-impact-oscillator.png
 $vibro sweep docs/scenes/impact-oscillator-lyapunov-map.json --plot lyapunov_map \
   -o docs/images/lyapunov-map-impact-oscillator.png
+# The basins of the impact oscillator's two coexisting period-1 motions (docs/SWEEPS.md).
+$vibro sweep docs/scenes/impact-oscillator-basins.json -o docs/images/basins-impact-oscillator.png
 # docs/PYTHON.md's figures: its Python blocks run in order in docs/images (the module of build/).
 PYTHONPATH="$PWD/build/python" MPLBACKEND=Agg /usr/bin/python3 python/tests/doc_snippets.py docs/PYTHON.md \
   docs/images > /dev/null

@@ -8,6 +8,7 @@
 #include <thread>
 #include <tuple>
 
+#include "core/analysis/attractors.h"
 #include "core/analysis/checked_run.h"
 #include "core/model/parameter.h"
 #include "core/run/deadline.h"
@@ -309,6 +310,7 @@ std::optional<FieldError> validate_sweep(const Model& model, const SweepSpec& sp
                       "the sweep asks for " + shortest_text(total) +
                           " periods (runs × (transient + record)), over the limit of " +
                           shortest_text(limits.sweep_periods)};
+  if (auto e = validate_attractor_sweep(spec)) return e;
   return check_every_value(model, spec, limits);
 }
 
@@ -382,17 +384,19 @@ class SweepWork {
         deadline_(Deadline::in_ms(control.budget_ms)),
         chains_(sweep_chain_count(spec)),
         total_(sweep_runs(spec)),
-        done_chains_(chains_) {}
+        done_chains_(control.keep_runs ? chains_ : 0) {}
 
   // Takes chains until none is left or the sweep halts.
   void work() {
     for (int c = next_++; c < chains_ && look(); c = next_++) {
       if (control_.skip && control_.skip(c)) continue;
-      done_chains_[c] = run_sweep_chain(
+      std::vector<SweepRun> runs = run_sweep_chain(
           model_, options_, spec_, c, &halt_, [this] { run_done(); }, {},
           [this](const SweepRun& run) { return admit(run); });
-      if (halt_) return;  // a chain cut short is not whole: no checkpoint keeps it
-      if (control_.chain_done) control_.chain_done(c, done_chains_[c]);
+      // A chain cut short is not whole: no checkpoint keeps it.
+      if (!halt_ && control_.chain_done) control_.chain_done(c, runs);
+      if (control_.keep_runs) done_chains_[c] = std::move(runs);
+      if (halt_) return;
     }
   }
 
@@ -479,6 +483,7 @@ SweepResult run_sweep(const Model& model, const SimOptions& options, const Sweep
   for (std::thread& t : pool) t.join();
   SweepResult result = sweep.result();
   result.threads = threads;
+  if (spec.classify_attractor) classify_attractors(model, result);
   result.wall_ms =
       std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - t0).count();
   return result;

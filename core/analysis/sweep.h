@@ -10,6 +10,7 @@
 #include <limits>
 #include <optional>
 #include <string>
+#include <utility>
 #include <vector>
 
 #include "core/model/model.h"
@@ -51,6 +52,9 @@ struct SweepSpec {
   std::uint64_t seed = 1;
   // The largest Lyapunov exponent of each run over its record (core/analysis/lyapunov.h).
   bool lyapunov = false;
+  // "classify": "attractor": the axes are initial-state fields, and each run is labelled with
+  // the attractor it settles on (core/analysis/attractors.h).
+  bool classify_attractor = false;
 };
 
 // Why a sweep cannot run, naming the field ("sweep.parameter", "sweep.count", ...), or a model
@@ -110,6 +114,21 @@ struct SweepRun {
   // for, or where the linearisation does not reach (pellets moving together). −infinity: every
   // perturbation dies (all pellets held).
   std::optional<double> lyapunov;
+  // SweepSpec::classify_attractor: the id of the attractor in SweepResult::attractors, −1 when
+  // the run is not periodic within its record (chaotic, or not yet settled).
+  int attractor = -1;
+};
+
+// One attractor of a basin sweep: a periodic motion, told apart from others by its section
+// points, not only by its period.
+struct Attractor {
+  int id = 0;
+  int period = 0;
+  double impacts_per_period = 0.0;
+  // Its `period` stroboscopic states, each with one (phi, dphi) per pellet (phi wrapped to
+  // (−π, π]), starting from the least of them: the order of ids.
+  std::vector<std::pair<double, double>> section;
+  long cells = 0;  // the runs that settle on it
 };
 
 struct SweepResult {
@@ -121,6 +140,10 @@ struct SweepResult {
   // here), naming the field to change: "sweep.record" for the points, "sweep.count" for the
   // wall clock.
   std::optional<FieldError> stopped;
+  // SweepSpec::classify_attractor: every periodic motion the runs settle on, by id (ordered by
+  // period, then section point: the same whatever ran which run).
+  bool classified = false;
+  std::vector<Attractor> attractors;
 };
 
 struct SweepControl {
@@ -132,6 +155,9 @@ struct SweepControl {
   std::function<bool(int chain)> skip;
   // Called after every whole chain, from any thread (a checkpoint keeps them).
   std::function<void(int chain, const std::vector<SweepRun>& runs)> chain_done;
+  // false: each chain's runs go to chain_done only, and the result holds none of them (the
+  // caller writes them out as chains finish: memory that does not grow with the sweep).
+  bool keep_runs = true;
   // The section points the sweep may keep in all, 0: no bound. A run whose points would take
   // the sweep past it is dropped and no new run starts (SweepResult::stopped): memory stays
   // within the bound plus the runs under way.

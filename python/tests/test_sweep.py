@@ -166,3 +166,23 @@ def test_ctrl_c_cancels_cleanly():
         child.kill()
     assert out.startswith("interrupted"), out
     assert child.returncode == 0
+
+
+def test_basins_give_each_run_its_attractor(scene_file, tmp_path):
+    scene = vibro.preset("impact-oscillator")
+    scene["model"]["pellets"][0]["Omega"] = 6.8
+    scene["sweep"] = {"parameter": "model.pellets[0].phi0", "from": 0.05, "to": 1.5, "count": 5,
+                      "parameter2": {"parameter": "model.pellets[0].dphi0", "from": -7.0, "to": 7.0, "count": 5},
+                      "transient": 40, "record": 4, "classify": "attractor"}
+    result = vibro.sweep(scene, threads=2)
+    run_cli("sweep", scene_file(scene), "--threads", "2", "-o", tmp_path / "b.json")
+    expected = json.loads((tmp_path / "b.json").read_text())
+    assert result.attractors == expected["attractors"]
+    assert list(result.points["attractor"]) == expected["points"]["attractor"]
+    assert list(result.runs["attractor"]) == expected["runs"]["attractor"]
+    assert result.render().startswith(b"\x89PNG")  # the basins plot, the default here
+    assert vibro.sweep(small_sweep(count=3)).attractors is None
+    scene["sweep"]["parameter"] = "model.pellets[0].F0"
+    with pytest.raises(vibro.SceneError) as e:
+        vibro.sweep(scene)
+    assert e.value.field == "sweep.parameter"

@@ -60,5 +60,32 @@ check "a rerun does not overwrite the checkpoint" grep -q -- '"field":"-o"' agai
 check "--resume completes it to the one-process output" cmp -s none.one.csv failed.csv
 check "the checkpoint goes once the output is written" test ! -e failed.csv.partial
 
+# A basin sweep (classify attractor): the same attractor ids under MPI as in one process, and
+# after a crash and --resume, in the streamed CSV and in the JSON's table.
+"$vibro" preset impact-oscillator | python3 -c '
+import json, sys
+s = json.load(sys.stdin)
+s["model"]["pellets"][0]["Omega"] = 6.8
+s["sweep"] = {"parameter": "model.pellets[0].phi0", "from": 0.05, "to": 1.5, "count": 9,
+              "parameter2": {"parameter": "model.pellets[0].dphi0", "from": -7, "to": 7, "count": 7},
+              "transient": 100, "record": 4, "classify": "attractor"}
+json.dump(s, open("basins.json", "w"))'
+"$vibro" sweep basins.json -o basins.one.csv --threads 1
+"$vibro" sweep basins.json -o basins.one.json --threads 1
+"${mpi[@]}" -np 3 "$vibro" sweep basins.json -o basins.mpi.csv --threads 2
+"${mpi[@]}" -np 3 "$vibro" sweep basins.json -o basins.mpi.json --threads 2
+check "3 ranks give the one-process basins CSV" cmp -s basins.one.csv basins.mpi.csv
+same_attractors() {
+  python3 -c 'import json, sys; a, b = (json.load(open(f)) for f in sys.argv[1:]);
+assert a["attractors"] == b["attractors"] and len(a["attractors"]) >= 2
+assert a["points"]["attractor"] == b["points"]["attractor"]' "$1" "$2"
+}
+check "3 ranks give the one-process attractors" same_attractors basins.one.json basins.mpi.json
+status=0
+VIBRO_SWEEP_FAIL_RANK=1 "${mpi[@]}" -x VIBRO_SWEEP_FAIL_RANK -np 3 "$vibro" sweep basins.json \
+  -o basins.failed.csv --threads 2 2> /dev/null || status=$?
+"${mpi[@]}" -np 3 "$vibro" sweep basins.json -o basins.failed.csv --threads 2 --resume
+check "--resume gives the one-process basins CSV" cmp -s basins.one.csv basins.failed.csv
+
 echo "$failures failed"
 ((failures == 0))

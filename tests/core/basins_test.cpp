@@ -1,0 +1,139 @@
+// Basins of attraction (core/analysis/attractors.h): the two coexisting period-1 motions of the
+// impact oscillator told apart by their section points, each cell's attractor that of a plain run
+// from its initial state, ids independent of the thread count, and sweeps over other fields
+// refused with the field named.
+#include <gtest/gtest.h>
+
+#include <cmath>
+
+#include "core/analysis/attractors.h"
+#include "core/analysis/checked_run.h"
+#include "io/sweep_json.h"
+#include "tests/core/impact_oscillator.h"
+
+namespace vibro {
+namespace {
+
+using testing::impact_oscillator;
+
+constexpr double kOmega = 6.8;  // inside 5.8 … 7.8 rad/s, where two period-1 motions coexist
+
+SimOptions options() {
+  SimOptions o;
+  o.rtol = 1e-9;
+  o.atol = 1e-12;
+  return o;
+}
+
+SweepSpec basins(int n, int transient = 100, int record = 8) {
+  SweepSpec s;
+  s.axis = {"model.pellets[0].phi0", 0.05, 1.5, n};
+  s.axis2 = SweepAxis{"model.pellets[0].dphi0", -7.0, 7.0, n};
+  s.transient = transient;
+  s.record = record;
+  s.classify_attractor = true;
+  return s;
+}
+
+SweepResult run(const SweepSpec& spec, int threads) {
+  const Model m = impact_oscillator(kOmega);
+  EXPECT_FALSE(validate_sweep(m, spec));
+  SweepControl c;
+  c.threads = threads;
+  return run_sweep(m, options(), spec, c);
+}
+
+// The state of a plain run from (phi0, dphi0) at the end of the sweep's runs.
+std::pair<double, double> plain_run_end(const SweepSpec& spec, double phi0, double dphi0) {
+  Model m = impact_oscillator(kOmega);
+  m.pellets[0].phi0 = phi0;
+  m.pellets[0].dphi0 = dphi0;
+  SimOptions o = options();
+  o.t_end = (spec.transient + spec.record) * 2.0 * M_PI / kOmega;
+  const RunResult r = simulate(m, o);
+  return {wrap_angle(r.summary.final[0].phi), r.summary.final[0].dphi};
+}
+
+TEST(Basins, BothCoexistingPeriodOneMotionsAreFound) {
+  const SweepResult r = run(basins(8), 2);
+  ASSERT_TRUE(r.classified);
+  // The slow and the fast period-1 motion, on the stop's side the pellet starts on (φ > 0),
+  // told apart by their section points, not by their period.
+  std::vector<Attractor> period_one;
+  for (const Attractor& a : r.attractors)
+    if (a.period == 1 && a.cells > 0 && a.section[0].first > 0.0) period_one.push_back(a);
+  ASSERT_EQ(period_one.size(), 2u);
+  EXPECT_GT(std::abs(period_one[0].section[0].second - period_one[1].section[0].second), 1.0);
+  long cells = 0;
+  for (const Attractor& a : r.attractors) cells += a.cells;
+  long labelled = 0;
+  for (const SweepRun& run : r.runs) labelled += run.attractor >= 0 ? 1 : 0;
+  EXPECT_EQ(cells, labelled);
+  for (std::size_t k = 0; k < r.attractors.size(); ++k) EXPECT_EQ(r.attractors[k].id, int(k));
+}
+
+TEST(Basins, EachCellsAttractorIsThatOfAPlainRunFromIt) {
+  const SweepSpec spec = basins(6);
+  const SweepResult r = run(spec, 2);
+  ASSERT_TRUE(r.classified);
+  int checked = 0;
+  for (std::size_t k = 0; k < r.runs.size(); k += 5) {
+    const SweepRun& run = r.runs[k];
+    if (run.attractor < 0) continue;
+    const auto [phi, dphi] = plain_run_end(spec, run.value, run.value2);
+    // The plain run's last state is a state of the cell's attractor, and of no other one.
+    auto distance = [&](const Attractor& a) {
+      double d = 1e300;
+      for (const auto& s : a.section)
+        d = std::min(d, std::abs(s.first - phi) + std::abs(s.second - dphi) / 4.0);
+      return d;
+    };
+    int nearest = 0;
+    for (const Attractor& a : r.attractors)
+      if (distance(a) < distance(r.attractors[nearest])) nearest = a.id;
+    EXPECT_EQ(nearest, run.attractor) << "phi0 " << run.value << " dphi0 " << run.value2;
+    EXPECT_LT(distance(r.attractors[run.attractor]), 1e-3);
+    ++checked;
+  }
+  EXPECT_GE(checked, 5);
+}
+
+TEST(Basins, OneThreadAndTwoGiveTheSameOutput) {
+  const SweepSpec spec = basins(5, 60, 6);
+  SweepResult one = run(spec, 1);
+  SweepResult two = run(spec, 2);
+  one.wall_ms = two.wall_ms = 0.0;
+  one.threads = two.threads = 1;
+  EXPECT_EQ(sweep_result_csv(spec, one), sweep_result_csv(spec, two));
+  EXPECT_EQ(sweep_result_json(spec, one).dump(), sweep_result_json(spec, two).dump());
+}
+
+TEST(Basins, ClassifyingAnotherFieldIsRefusedNamingIt) {
+  SweepSpec spec = basins(3);
+  spec.axis2 = SweepAxis{"model.pellets[0].Omega", 6.0, 7.0, 3};
+  const auto e = validate_sweep(impact_oscillator(kOmega), spec);
+  ASSERT_TRUE(e);
+  EXPECT_EQ(e->field, "sweep.parameter2.parameter");
+  EXPECT_NE(e->message.find("model.pellets[0].Omega"), std::string::npos) << e->message;
+  spec = basins(3);
+  spec.continuation = Continuation::forward;
+  ASSERT_TRUE(validate_sweep(impact_oscillator(kOmega), spec));
+  EXPECT_EQ(validate_sweep(impact_oscillator(kOmega), spec)->field, "sweep.continuation");
+}
+
+TEST(Basins, TheResultListsTheAttractorsAndTheColumns) {
+  const SweepSpec spec = basins(3, 60, 4);
+  const SweepResult r = run(spec, 1);
+  const auto j = sweep_result_json(spec, r);
+  ASSERT_TRUE(j.contains("attractors"));
+  EXPECT_EQ(j["points"]["attractor"].size(), j["points"]["phi"].size());
+  EXPECT_EQ(j["runs"]["attractor"].size(), r.runs.size());
+  const auto& a = j["attractors"][0];
+  for (const char* key : {"id", "period", "impacts_per_period", "section", "cells"})
+    EXPECT_TRUE(a.contains(key)) << key;
+  EXPECT_NE(sweep_result_csv(spec, r).find(",lyapunov,attractor\n"), std::string::npos);
+  EXPECT_EQ(read_sweep(sweep_to_json(spec)).classify_attractor, true);
+}
+
+}  // namespace
+}  // namespace vibro
