@@ -165,7 +165,6 @@ void draw_legend(cairo_t* cr, const std::vector<LegendEntry>& entries, const Rec
     fit->size = {std::max(fit->size.x, size.x), std::max(fit->size.y, size.y)};
     fit->strip = {std::max(fit->strip.x, strip.size.x), std::max(fit->strip.y, strip.size.y)};
   }
-  const double pad = style.px(kPadding);
 
   cairo_rectangle(cr, box.x, box.y, box.w, box.h);
   set_colour(cr, rgb(0xFFFFFF, 0.88));
