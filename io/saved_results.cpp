@@ -47,8 +47,9 @@ bool boolean_at(const json& c, std::size_t k, const std::string& field) {
 }
 
 Termination termination_named(const json& name, const std::string& field) {
-  for (Termination t : {Termination::completed, Termination::event_limit, Termination::step_limit,
-                        Termination::deadline, Termination::numerical_failure})
+  for (Termination t :
+       {Termination::completed, Termination::event_limit, Termination::step_limit,
+        Termination::deadline, Termination::numerical_failure, Termination::cancelled})
     if (name.is_string() && name.get<std::string>() == termination_name(t)) return t;
   throw FieldException(field, "must name how a run ended (\"completed\", \"deadline\", ...)");
 }

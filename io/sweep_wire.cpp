@@ -108,7 +108,7 @@ SweepRun get_run(Reader& in) {
   r.trusted = in.get<std::uint8_t>() != 0;
   r.trusted_until = in.get<double>();
   const auto termination = in.get<std::int32_t>();
-  if (termination < 0 || termination > static_cast<int>(Termination::numerical_failure))
+  if (termination < 0 || termination > static_cast<int>(Termination::cancelled))
     throw std::out_of_range("termination");
   r.termination = static_cast<Termination>(termination);
   r.message = in.get_string();

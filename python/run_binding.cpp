@@ -134,13 +134,23 @@ Run simulate_scene(py::handle scene_value, std::optional<bool> trajectories,
   }
   SimOptions options = scene.sim;
   options.record.assign(scene.model.size(), scene.trajectories);
+  // Ctrl-C stops the run: it runs on this thread, the GIL released, and takes the GIL back now
+  // and then to let Python's signal handlers run (a handler that raises cancels it).
+  options.cancelled = [stop = false]() mutable {
+    if (!stop) {
+      py::gil_scoped_acquire gil;
+      stop = PyErr_CheckSignals() != 0;
+    }
+    return stop;
+  };
   RunResult run;
   nlohmann::json parts;
   {
     py::gil_scoped_release release;
     run = simulate(scene.model, options);
-    parts = json_parts(run, scene.model);
+    if (run.stats.termination != Termination::cancelled) parts = json_parts(run, scene.model);
   }
+  if (run.stats.termination == Termination::cancelled) throw py::error_already_set();
   return Run(std::move(scene.model), std::move(run), std::move(parts));
 }
 

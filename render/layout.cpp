@@ -83,9 +83,9 @@ std::vector<PanelLayout> figure_layout(const FigureSpec& figure) {
       const auto* sweep = std::get_if<SweepPlot>(&plot);
       const auto* curves = std::get_if<BranchPlot>(&plot);
       const bool map = (sweep && map_view(sweep->view)) || (curves && curves->curves);
-      const double column = !map ? 0.0
+      const double column = !map                                        ? 0.0
                             : sweep && sweep->view == SweepView::basins ? kBasinsLegendColumn
-                                                                         : kMapLegendColumn;
+                                                                        : kMapLegendColumn;
       layouts.push_back(panel_layout(cells[i], style, stacked, column));
     }
   }

@@ -46,6 +46,9 @@ std::optional<ApiError> stopped_by_limit(const RunResult& run, const Scene& scen
     case Termination::step_limit:
       why << "the run needs more than the server's limit of " << options.max_steps << " steps";
       break;
+    case Termination::cancelled:  // the server cancels jobs between runs, never a run
+      why << "the run was cancelled";
+      break;
   }
   why << " (stopped at t = " << st.t_reached << " s of t_end = " << options.t_end << " s); ";
   if (st.termination == Termination::event_limit) {

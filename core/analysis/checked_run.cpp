@@ -33,7 +33,7 @@ RunResult run_with_outputs(const Model& model, const SimOptions& options, Steppe
 
 RunResult simulate(const Model& model, const SimOptions& options) {
   RunResult run = run_with_outputs(model, options, *make_stepper(model, options));
-  if (!options.check) {
+  if (!options.check || run.stats.termination == Termination::cancelled) {
     apply_unchecked(model, run);
     return run;
   }

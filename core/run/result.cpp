@@ -26,6 +26,8 @@ std::string_view termination_name(Termination t) {
       return "deadline";
     case Termination::numerical_failure:
       return "numerical_failure";
+    case Termination::cancelled:
+      return "cancelled";
   }
   return "?";
 }

@@ -67,11 +67,12 @@ struct Summary {
 };
 
 enum class Termination {
-  completed,         // reached t_end
-  event_limit,       // more events than allowed
-  step_limit,        // more steps than allowed
-  deadline,          // the wall-clock deadline passed
-  numerical_failure  // step-size underflow, non-finite state, implicit solver failure
+  completed,          // reached t_end
+  event_limit,        // more events than allowed
+  step_limit,         // more steps than allowed
+  deadline,           // the wall-clock deadline passed
+  numerical_failure,  // step-size underflow, non-finite state, implicit solver failure
+  cancelled           // SolverOptions::cancelled said so
 };
 std::string_view termination_name(Termination t);
 

@@ -112,6 +112,9 @@ bool RunState::over_budget(double t) {
     std::ostringstream why;
     why << "the run took longer than its deadline of " << opt_.deadline_ms << " ms";
     fail(t, Termination::deadline, why.str());
+  } else if (opt_.cancelled && ++since_cancel_poll_ >= kCancelPollSteps) {
+    since_cancel_poll_ = 0;
+    if (opt_.cancelled()) fail(t, Termination::cancelled, "the run was cancelled");
   }
   return stopped_;
 }

@@ -63,6 +63,7 @@ class RunState {
   Stats stats_;
   long events_ = 0;  // those counted in the budget: from opt_.keep_events_from on
   int same_instant_ = 0;
+  long since_cancel_poll_ = 0;
   double last_instant_ = -1.0;
   Clock::time_point started_ = Clock::now();
   // The first instant whose impacts' order was decided below the tolerance: the trust ends there.

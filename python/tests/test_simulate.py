@@ -5,12 +5,17 @@ import csv
 import io
 import json
 import math
+import signal
+import subprocess
+import sys
+import textwrap
+import time
 
 import numpy as np
 import pytest
 
 import vibro
-from conftest import run_cli, without_wall_clock
+from conftest import BUILD, HANG, run_cli, without_wall_clock
 
 PRESETS = [p["name"] for p in vibro.presets()]
 
@@ -130,3 +135,38 @@ def test_numpy_values_in_a_scene_read_as_python_ones():
         vibro.simulate(scene).to_json()
     )
     assert math.isfinite(vibro.simulate(ours).stats["error_estimate"])
+
+
+CTRL_C = textwrap.dedent(
+    """
+    import sys, time
+    sys.path.insert(0, sys.argv[1])
+    import vibro
+    scene = vibro.preset("impact-oscillator")
+    scene["t_end"] = 1e6  # hours of running
+    print("started", flush=True)
+    started = time.monotonic()
+    try:
+        vibro.simulate(scene)
+        print("finished")
+    except KeyboardInterrupt:
+        print("interrupted after %.3f s" % (time.monotonic() - started), flush=True)
+    """
+)
+
+
+def test_ctrl_c_stops_a_long_run():
+    child = subprocess.Popen(
+        [sys.executable, "-c", CTRL_C, str(BUILD / "python")],
+        stdout=subprocess.PIPE,
+        text=True,
+    )
+    try:
+        assert child.stdout.readline().startswith("started")
+        time.sleep(0.5)
+        child.send_signal(signal.SIGINT)
+        out, _ = child.communicate(timeout=HANG)
+    finally:
+        child.kill()
+    assert out.startswith("interrupted"), out
+    assert child.returncode == 0

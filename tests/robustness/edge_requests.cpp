@@ -174,12 +174,6 @@ std::optional<Scene> refused(const FieldError& e, EdgeOutcome& out) {
   return std::nullopt;
 }
 
-std::optional<Scene> refused(const server::ApiError& e, EdgeOutcome& out) {
-  out.field = e.field;
-  out.message = e.message;
-  return std::nullopt;
-}
-
 // Api::orbit_post up to the run.
 std::optional<Scene> accepted_orbit(const std::string& body, const server::Limits& limits,
                                     EdgeOutcome& out) {
