@@ -14,7 +14,7 @@ import statistics
 import sys
 
 
-def medians(directory):
+def medians(directory, field):
     out = {}
     for name in sorted(os.listdir(directory)):
         if not name.endswith(".json"):
@@ -23,9 +23,9 @@ def medians(directory):
         for b in json.load(open(os.path.join(directory, name)))["benchmarks"]:
             base = b.get("run_name", b["name"])
             if b.get("aggregate_name") == "median":
-                out[(name[:-5], base)] = b["real_time"]
+                out[(name[:-5], base)] = b[field]
             elif b.get("run_type", "iteration") == "iteration":
-                runs.setdefault(base, []).append(b["real_time"])
+                runs.setdefault(base, []).append(b[field])
         for base, times in runs.items():
             out.setdefault((name[:-5], base), statistics.median(times))
     return out
@@ -36,8 +36,11 @@ def main():
     ap.add_argument("before")
     ap.add_argument("after")
     ap.add_argument("--slower", type=float, default=0.05)
+    ap.add_argument("--time", choices=["real", "cpu"], default="real",
+                    help="cpu: the time the benchmark's thread ran, less touched by other load")
     a = ap.parse_args()
-    before, after = medians(a.before), medians(a.after)
+    field = a.time + "_time"
+    before, after = medians(a.before, field), medians(a.after, field)
     print("| benchmark | before | after | after / before |")
     print("|---|---:|---:|---:|")
     slower = []

@@ -63,7 +63,8 @@ bool varied(const json& request, const std::string& field) {
   return false;
 }
 
-// A refusal names a non-empty field that the request holds (or that it varies).
+// A refusal names a non-empty field that the request holds (or that it varies, or that it lacks
+// and must hold: "is required").
 void check_refusal(const std::string& body, EdgeOutcome& out) {
   if (out.field.empty()) {
     out.findings.push_back("refused without naming a field: " + out.message);
@@ -71,7 +72,8 @@ void check_refusal(const std::string& body, EdgeOutcome& out) {
   }
   const json request = json::parse(body, nullptr, false);
   if (request.is_discarded()) return;  // text no JSON reader takes: "scene" is the field
-  if (!at_path(request, out.field) && !varied(request, out.field))
+  if (!at_path(request, out.field) && !varied(request, out.field) &&
+      !out.message.starts_with("is required"))
     out.findings.push_back("refused naming \"" + out.field +
                            "\", which the request does not hold: " + out.message);
 }

@@ -345,6 +345,154 @@ TEST(EdgeRequests, ModelFieldsAtTheirEdgesUnderOrbitsAndSweeps) {
   }
 }
 
+// The requests added since the fuzzer was written: an orbit with a mobile limiter (its armed
+// states), a basin map (classify: attractor) and a two-parameter curve (follow).
+json mobile_orbit() {
+  json paper = preset("paper");
+  paper["periodic_orbit"] = {{"periods", 1}, {"transient", 20}, {"max_iterations", 40}};
+  return paper;
+}
+
+json basin_sweep() {
+  json io = preset("impact-oscillator");
+  io.erase("periodic_orbit");
+  io["sweep"] = {
+      {"parameter", "model.pellets[0].phi0"},
+      {"from", 0.01},
+      {"to", 1.6},
+      {"count", 3},
+      {"parameter2",
+       {{"parameter", "model.pellets[0].dphi0"}, {"from", -8.0}, {"to", 8.0}, {"count", 3}}},
+      {"transient", 10},
+      {"record", 5},
+      {"continuation", "none"},
+      {"classify", "attractor"}};
+  return io;
+}
+
+json followed_curve() {
+  json io = preset("impact-oscillator");
+  io.erase("sweep");
+  io["model"]["pellets"][0]["Omega"] = 6.0;
+  io["periodic_orbit"] = {
+      {"periods", 1},
+      {"transient", 40},
+      {"max_iterations", 40},
+      {"guess", {{{"phi", 0.15}, {"dphi", 0.1}}}},
+      {"continuation",
+       {{"parameter", "model.pellets[0].Omega"},
+        {"to", 5.0},
+        {"max_points", 4},
+        {"follow", "period_doubling"},
+        {"parameter2", {{"parameter", "model.limiters[0].k"}, {"from", 0.6}, {"to", 0.95}}}}}};
+  return io;
+}
+
+TEST(EdgeRequests, ArmedStatesOfAMobileLimiterOrbit) {
+  Fuzz fuzz("mobile-limiter orbit");
+  const json base = mobile_orbit();
+  for (const json& armed :
+       {json::array(), json{true}, json{false, false}, json{true, true}, json{true, true, true},
+        json{1, 0}, json{"yes", true}, json(true), json::object()}) {
+    json request = base;
+    request["periodic_orbit"]["armed"] = armed;
+    fuzz.add(Kind::orbit, request, {});
+    request["model"]["limiters"][0]["armed"] = false;
+    fuzz.add(Kind::orbit, request, {});
+  }
+  json guessed = base;
+  for (const json& p : base["model"]["pellets"])
+    guessed["periodic_orbit"]["guess"].push_back(
+        {{"phi", p["phi0"]}, {"dphi", p.value("dphi0", 0.0)}});
+  guessed["periodic_orbit"]["armed"] = {false, true};
+  for (const char* g : {"periodic_orbit.guess[0].phi", "periodic_orbit.guess[1].phi"})
+    each_edge(fuzz, Kind::orbit, guessed, g, number_edges(-kMaxStartAngle, kMaxStartAngle));
+  // A guess exactly at each limiter's angle, armed and not.
+  for (const json& limiter : base["model"]["limiters"]) {
+    json request = guessed;
+    request["periodic_orbit"]["guess"][0]["phi"] = limiter["angle"];
+    request["periodic_orbit"]["guess"][0]["dphi"] = 0.0;
+    fuzz.add(Kind::orbit, request, {});
+  }
+  json continued = base;
+  continued["periodic_orbit"]["continuation"] = {
+      {"parameter", "model.pellets[0].F0"}, {"to", 1.3}, {"max_points", 4}};
+  each_edge(fuzz, Kind::orbit, continued, "periodic_orbit.continuation.to",
+            number_edges(-1e12, 1e12));
+}
+
+TEST(EdgeRequests, BasinMapsAtTheirEdges) {
+  Fuzz fuzz("basin maps");
+  const json base = basin_sweep();
+  each_edge(fuzz, Kind::sweep, base, "sweep.count", whole_edges(1, 10000000));
+  each_edge(fuzz, Kind::sweep, base, "sweep.parameter2.count", whole_edges(1, 10000000));
+  each_edge(fuzz, Kind::sweep, base, "sweep.record", whole_edges(1, 1000000));
+  each_pair(fuzz, Kind::sweep, base, "sweep.count", pair_edges(1, 10000000),
+            "sweep.parameter2.count", pair_edges(1, 10000000));
+  each_span(fuzz, Kind::sweep, base, "sweep.from", "sweep.to",
+            {"model.pellets[0].phi0", -kMaxStartAngle, kMaxStartAngle});
+  each_span(fuzz, Kind::sweep, base, "sweep.parameter2.from", "sweep.parameter2.to",
+            {"model.pellets[0].dphi0", -kMaxStartSpeed, kMaxStartSpeed});
+  for (const json& classify : {json("attractor"), json("period"), json(""), json("ATTRACTOR"),
+                               json(1), json(nullptr), json::array()}) {
+    json request = base;
+    request["sweep"]["classify"] = classify;
+    fuzz.add(Kind::sweep, request, {});
+  }
+  // Classifying over a parameter of the model instead of an initial state, over one parameter
+  // alone, and with the other sweep options it may or may not go with.
+  for (const std::string& p : parameter_edges(base["model"])) {
+    json request = base;
+    request["sweep"]["parameter"] = p;
+    fuzz.add(Kind::sweep, request, {});
+  }
+  for (const auto& [path, value] :
+       std::vector<std::pair<std::string, json>>{{"sweep.parameter", "model.pellets[0].F0"},
+                                                 {"sweep.parameter2", nullptr},
+                                                 {"sweep.continuation", "up"},
+                                                 {"sweep.section", "impact"},
+                                                 {"sweep.lyapunov", true},
+                                                 {"sweep.initial_states", 4}}) {
+    json request = base;
+    if (value.is_null())
+      request["sweep"].erase("parameter2");
+    else
+      slot(request, path) = value;
+    fuzz.add(Kind::sweep, request, {});
+  }
+}
+
+TEST(EdgeRequests, FollowedCurvesAtTheirEdges) {
+  Fuzz fuzz("followed curves");
+  const json base = followed_curve();
+  for (const json& kind : {json("fold"), json("period_doubling"), json("grazing"),
+                           json("neimark_sacker"), json(""), json(2), json(nullptr)}) {
+    json request = base;
+    request["periodic_orbit"]["continuation"]["follow"] = kind;
+    fuzz.add(Kind::orbit, request, {});
+  }
+  json alone = base;
+  alone["periodic_orbit"]["continuation"].erase("parameter2");
+  fuzz.add(Kind::orbit, alone, {});
+  each_edge(fuzz, Kind::orbit, base, "periodic_orbit.continuation.max_points",
+            whole_edges(2, 10000));
+  for (const std::string& p : parameter_edges(base["model"])) {
+    json request = base;
+    request["periodic_orbit"]["continuation"]["parameter2"]["parameter"] = p;
+    fuzz.add(Kind::orbit, request, {});
+  }
+  for (const Bounded& f : model_fields(base["model"])) {
+    json request = base;
+    request["periodic_orbit"]["continuation"]["parameter2"]["parameter"] = f.path;
+    each_span(fuzz, Kind::orbit, request, "periodic_orbit.continuation.parameter2.from",
+              "periodic_orbit.continuation.parameter2.to", f);
+  }
+  // The second parameter the same as the first.
+  json same = base;
+  same["periodic_orbit"]["continuation"]["parameter2"]["parameter"] = "model.pellets[0].Omega";
+  fuzz.add(Kind::orbit, same, {});
+}
+
 // Issue 31 item 7 at the edge of a bound: the third value of a sweep from -9999.999999999998 to
 // 10000 (count 3) was 10000.000000000002, past both `to` and phi0's bound of 1e4, and was run
 // (SweepAxis::value: the last value is now `to`, the others kept within [from, to]).
