@@ -386,6 +386,51 @@ try {
     await page.screenshot({ path: join(shots, "animation.png"), fullPage: true });
   });
 
+  await check("the sweep tab maps the impact oscillator's basins on 12 x 12 starts and lists its attractors", async () => {
+    const before = await runCount(page);
+    await page.selectOption("#preset", "impact-oscillator");
+    await waitForRun(page, before);
+    // At Ω = 6.8 rad/s two period-1 motions coexist (docs/SWEEPS.md, "Basins of attraction").
+    await page.fill('[data-field="model.pellets[0].Omega"]', "6.8");
+    const form = "#basins-fields";
+    expect((await page.inputValue(`${form} [data-field="sweep.parameter"]`)) === "model.pellets[0].phi0", "the x axis is not φ₀");
+    expect((await page.inputValue(`${form} [data-field="sweep.parameter2.parameter"]`)) === "model.pellets[0].dphi0", "the y axis is not φ̇₀");
+    const fromLabel = await page.textContent(`${form} label[for="${await page.getAttribute(`${form} [data-field="sweep.parameter2.from"]`, "id")}"]`);
+    expect(fromLabel.includes("rad/s"), `the y range's label is "${fromLabel}"`);
+    for (const [field, value] of [["sweep.from", "0.01"], ["sweep.to", "1.6"], ["sweep.count", "12"], ["sweep.parameter2.from", "-8"], ["sweep.parameter2.to", "8"], ["sweep.parameter2.count", "12"], ["sweep.transient", "100"], ["sweep.record", "8"]])
+      await page.fill(`${form} [data-field="${field}"]`, value);
+    expect(await page.isChecked(`${form} [data-field="sweep.classify"]`), "classify attractors is not checked");
+    await page.click("#basins-run");
+    await page.waitForFunction(() => ["done", "error"].includes(document.getElementById("basins-box").dataset.state), null, { timeout: 60000 });
+    const said = await page.textContent("#basins-status");
+    expect((await page.getAttribute("#basins-box", "data-state")) === "done", `the map ended: ${said}`);
+    const progress = await page.evaluate(() => [document.getElementById("basins-progress").value, document.getElementById("basins-progress").max]);
+    expect(progress[0] === 144 && progress[1] === 144, `progress ${progress}`);
+    const img = await pixelsOf(page, "basins-figure");
+    expect(img.ink > 0.2, `the basins image is mostly blank (${(img.ink * 100).toFixed(1)} % ink)`);
+    const rows = await page.$$eval("table.attractors tbody tr", (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+    const cells = rows.reduce((n, r) => n + Number(r.at(-2)), 0);
+    expect(cells === 144, `the table's cells add up to ${cells}, not 144`);
+    // The slow and the fast motion of the docs, told apart by their section points.
+    const slow = rows.find((r) => r[3].includes("(0.2688, 0.2004)"));
+    const fast = rows.find((r) => r[3].includes("(0.8405, 6.044)"));
+    expect(slow && fast && slow[1] === "1" && fast[1] === "1" && slow[2] === "1", `the attractors: ${JSON.stringify(rows)}`);
+    await page.locator("#basins-panel").scrollIntoViewIfNeeded();
+    await page.screenshot({ path: join(shots, "basins.png"), fullPage: true });
+  });
+
+  await check("a basin map the server refuses shows its error next to the field it names", async () => {
+    const field = '#basins-fields [data-field="sweep.parameter2.count"]';
+    await page.fill(field, "0");
+    await page.click("#basins-run");
+    await page.waitForFunction(() => document.getElementById("basins-box").dataset.state === "error", null, { timeout: 30000 });
+    const e = await errorNextTo(page, "sweep.parameter2.count");
+    expect(e.invalid && e.sameField && e.described, "the y axis's cells are not marked invalid");
+    expect(/1 to 1000000/.test(e.text), `the error next to it reads: ${e.text}`);
+    expect((await page.textContent("#basins-status")).includes("sweep.parameter2.count"), "the status does not name the field");
+    await page.fill(field, "12");
+  });
+
   await check("no script errors on the page", async () => {
     expect(pageErrors.length === 0, pageErrors.join("; "));
   });
