@@ -12,6 +12,7 @@ import { SceneForm } from "./js/scene_form.js";
 import { setPath } from "./js/scene_path.js";
 import { clickedValue, defaultSweep, runSweep, sweepablePaths } from "./js/sweep.js";
 import { attractorTable, fillBasinsForm, readBasinsForm, runBasins } from "./js/basins.js";
+import { describeCurves, fillFollowForm, readFollowForm, runFollow } from "./js/curves.js";
 import { drawMarkers, drawMechanism, parseTrajectory } from "./js/animation.js";
 import { describeOrbit, findOrbit, sceneOnOrbit } from "./js/orbit.js";
 import { showSummary, showWarnings } from "./js/summary.js";
@@ -324,7 +325,9 @@ function fillSweep(scene) {
   sweepUi.record.value = sweep.record ?? 20;
   sweepUi.continuation.value = sweep.continuation ?? "none";
   fillBasinsForm(basinsUi.fields, scene);
+  fillFollowForm(followUi.fields, scene);
   resetPanel(basinsUi, "The basins appear here.");
+  resetPanel(followUi, "The curves appear here.");
 }
 
 // The sweep the panel asks for.
@@ -421,7 +424,7 @@ orbitUi.draw.addEventListener("click", async () => {
   await render();
 });
 
-// [SECTION] jobs from a panel: basins
+// [SECTION] jobs from a panel: basins, two-parameter curves
 
 // A panel's controls, by their ids: PREFIX-fields, -run, -cancel, -progress, -status, -box, -result.
 function panelUi(prefix) {
@@ -525,6 +528,25 @@ basinsUi.run.addEventListener("click", () =>
 );
 basinsUi.cancel.addEventListener("click", () => basinsUi.job?.cancel?.());
 
+const followUi = panelUi("follow");
+
+followUi.run.addEventListener("click", () =>
+  runPanelJob(followUi, {
+    ask: (scene) => {
+      const { request, problems } = readFollowForm(followUi.fields, Number(orbitUi.periods.value), Number(orbitUi.transient.value));
+      return { body: { ...scene, periodic_orbit: request }, problems };
+    },
+    run: runFollow,
+    progressText: (done, total) => `${Math.round((100 * done) / Math.max(total, 1))} % of the way`,
+    show: (done, body, seconds) => {
+      const c = body.periodic_orbit.continuation;
+      showJobImage(followUi, done.image, "follow-figure", `Bifurcation curves: the ${c.follow.replace("_", " ")} followed in ${c.parameter2.parameter} against ${c.parameter}; the table below says where each curve runs and how it ended.`);
+      fill(followUi.result, describeCurves(done.answer, body.periodic_orbit));
+      followUi.status.textContent = `Followed in ${seconds.toFixed(1)} s.`;
+    },
+  }),
+);
+followUi.cancel.addEventListener("click", () => followUi.job?.cancel?.());
 
 // [SECTION] errors and status
 

@@ -431,6 +431,42 @@ try {
     await page.fill(field, "12");
   });
 
+  await check("the periodic-motion panel follows the period doubling in k and draws the curves", async () => {
+    const before = await runCount(page);
+    await page.selectOption("#preset", "impact-oscillator");
+    await waitForRun(page, before);
+    const c = '#follow-fields [data-field="periodic_orbit.continuation';
+    expect((await page.inputValue(`${c}.parameter"]`)) === "model.pellets[0].Omega", "the branch is not continued in Ω");
+    await page.selectOption(`${c}.follow"]`, "period_doubling");
+    await page.selectOption(`${c}.parameter2.parameter"]`, "model.limiters[0].k");
+    await page.fill(`${c}.parameter2.from"]`, "0.75");
+    await page.fill(`${c}.parameter2.to"]`, "0.85");
+    await page.click("#follow-run");
+    await page.waitForFunction(() => ["done", "error"].includes(document.getElementById("follow-box").dataset.state), null, { timeout: 60000 });
+    const said = await page.textContent("#follow-status");
+    expect((await page.getAttribute("#follow-box", "data-state")) === "done", `the follow ended: ${said}`);
+    const img = await pixelsOf(page, "follow-figure");
+    expect(img.ink > 0.005, "the curves' figure is blank");
+    const text = await page.textContent("#follow-result");
+    expect(/period doubling at 5\.5572/.test(text), `the branch's bifurcations: ${text}`);
+    const rows = await page.$$eval("table.curves tbody tr", (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+    expect(rows.length === 1 && rows[0][0] === "period doubling" && Number(rows[0][1]) > 3, `the curves: ${JSON.stringify(rows)}`);
+    expect(rows[0][3] === "0.75 … 0.85" && /^5\.5/.test(rows[0][2]), `the curve's span: ${rows[0]}`);
+    await page.locator("#h-follow").scrollIntoViewIfNeeded();
+    await page.screenshot({ path: join(shots, "curves.png"), fullPage: true });
+  });
+
+  await check("following a curve on the paper scene names its mobile limiter next to that field", async () => {
+    const before = await runCount(page);
+    await page.selectOption("#preset", "paper");
+    await waitForRun(page, before);
+    await page.click("#follow-run");
+    await page.waitForFunction(() => document.getElementById("follow-box").dataset.state === "error", null, { timeout: 30000 });
+    const e = await errorNextTo(page, "model.limiters[0].mobile");
+    expect(e.found && e.invalid && /fixed limiters only/.test(e.text), `next to the mobile limiter: ${JSON.stringify(e)}`);
+    expect(/fixed limiters only/.test(await page.textContent("#follow-status")), "the status does not say why");
+  });
+
   await check("no script errors on the page", async () => {
     expect(pageErrors.length === 0, pageErrors.join("; "));
   });
