@@ -6,12 +6,13 @@ import { curlCommand } from "./js/curl.js";
 import { fill, h } from "./js/dom.js";
 import { showEvents } from "./js/events_table.js";
 import { clearFieldErrors, revealField, showFieldError } from "./js/field_errors.js";
+import { formatValue } from "./js/numbers.js";
 import { readHash, sceneLink } from "./js/permalink.js";
 import { describePreset, fillPicker, sameScene } from "./js/presets.js";
 import { SceneForm } from "./js/scene_form.js";
 import { setPath } from "./js/scene_path.js";
 import { clickedValue, defaultSweep, runSweep, sweepablePaths } from "./js/sweep.js";
-import { attractorTable, fillBasinsForm, readBasinsForm, runBasins } from "./js/basins.js";
+import { attractorTable, clickedStart, fillBasinsForm, readBasinsForm, runBasins } from "./js/basins.js";
 import { describeCurves, fillFollowForm, readFollowForm, runFollow } from "./js/curves.js";
 import { drawMarkers, drawMechanism, parseTrajectory } from "./js/animation.js";
 import { describeOrbit, findOrbit, sceneOnOrbit } from "./js/orbit.js";
@@ -509,6 +510,8 @@ function showJobImage(panel, blob, id, alt) {
 }
 
 const basinsUi = panelUi("basins");
+// The last map's scene, sweep and plot area (for a click on it).
+const basinsState = { scene: null, sweep: null, axis: null };
 
 basinsUi.run.addEventListener("click", () =>
   runPanelJob(basinsUi, {
@@ -518,15 +521,32 @@ basinsUi.run.addEventListener("click", () =>
     },
     run: runBasins,
     progressText: (done, total) => `${done} of ${total} runs`,
-    show: (done, body, seconds) => {
-      const s = body.sweep;
+    show: (done, { sweep: s, ...scene }, seconds) => {
+      Object.assign(basinsState, { scene, sweep: s, axis: done.axis });
       showJobImage(basinsUi, done.image, "basins-figure", `Basins of attraction over ${s.parameter} from ${s.from} to ${s.to} and ${s.parameter2.parameter} from ${s.parameter2.from} to ${s.parameter2.to}${done.attractors ? ", each cell coloured by the attractor it settles on; the table below lists them" : ", each cell coloured by its period"}.`);
       fill(basinsUi.result, done.attractors ? attractorTable(done.attractors, done.cells) : null);
-      basinsUi.status.textContent = `${done.cells} starts in ${seconds.toFixed(1)} s.`;
+      basinsUi.status.textContent = `${done.cells} starts in ${seconds.toFixed(1)} s. Click a cell to render the scene from its start.`;
     },
   }),
 );
 basinsUi.cancel.addEventListener("click", () => basinsUi.job?.cancel?.());
+// A click on a cell: the scene from that cell's start, rendered above.
+basinsUi.box.addEventListener("click", async (e) => {
+  const img = e.target.closest("img");
+  if (!img || !basinsState.scene) return;
+  const rect = img.getBoundingClientRect();
+  const scale = img.naturalWidth / rect.width;
+  const start = clickedStart(basinsState.axis, basinsState.sweep, (e.clientX - rect.left) * scale, (e.clientY - rect.top) * scale);
+  if (!start) return;
+  const { parameter, parameter2 } = basinsState.sweep;
+  const scene = structuredClone(basinsState.scene);
+  setPath(scene, parameter, start.x);
+  setPath(scene, parameter2.parameter, start.y);
+  form.load(scene);
+  edited();
+  basinsUi.status.textContent = `Rendering the scene from ${parameter} = ${formatValue(start.x)}, ${parameter2.parameter} = ${formatValue(start.y)}.`;
+  await render();
+});
 
 const followUi = panelUi("follow");
 

@@ -417,6 +417,27 @@ try {
     expect(slow && fast && slow[1] === "1" && fast[1] === "1" && slow[2] === "1", `the attractors: ${JSON.stringify(rows)}`);
     await page.locator("#basins-panel").scrollIntoViewIfNeeded();
     await page.screenshot({ path: join(shots, "basins.png"), fullPage: true });
+    // A click on the map renders the scene from the start of the cell under it.
+    const picked = await runCount(page);
+    const box = await page.locator("#basins-figure").boundingBox();
+    await page.mouse.click(box.x + box.width * 0.4, box.y + box.height * 0.5);
+    await waitForRun(page, picked);
+    const onGrid = (v, from, to) => {
+      const k = ((v - from) / (to - from)) * 11;
+      return Math.abs(k - Math.round(k)) < 1e-6 && k > -0.5 && k < 11.5;
+    };
+    const phi0 = Number(await page.inputValue('[data-field="model.pellets[0].phi0"]'));
+    const dphi0 = Number(await page.inputValue('[data-field="model.pellets[0].dphi0"]'));
+    expect(onGrid(phi0, 0.01, 1.6) && onGrid(dphi0, -8, 8), `the click started from φ0 = ${phi0}, φ̇0 = ${dphi0}, not a cell's start`);
+    // Cells as the server draws them (render/parameter_range.cpp): count cells across the plot
+    // area, each centred on its value, the second field running up.
+    const under = await page.evaluate(async () => {
+      const { clickedStart } = await import("/js/basins.js");
+      const axis = { left: 100, top: 50, width: 120, height: 60 };
+      const sweep = { from: 0, to: 11, count: 12, parameter2: { from: -1, to: 1, count: 3 } };
+      return [[101, 109], [219, 51], [160, 80], [99, 80], [221, 80], [160, 111]].map(([x, y]) => clickedStart(axis, sweep, x, y));
+    });
+    expect(JSON.stringify(under) === JSON.stringify([{ x: 0, y: -1 }, { x: 11, y: 1 }, { x: 6, y: 0 }, null, null, null]), `cells under clicks: ${JSON.stringify(under)}`);
   });
 
   await check("a basin map the server refuses shows its error next to the field it names", async () => {

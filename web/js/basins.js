@@ -7,7 +7,7 @@ import { checkField, numberField, readFields, selectField } from "./fields.js";
 import { jobImage, jobJson, runJob } from "./jobs.js";
 import { formatState, formatValue } from "./numbers.js";
 import { parameterOptions, showUnitsOf } from "./parameters.js";
-import { forcedPellet, valueAt } from "./sweep.js";
+import { forcedPellet, parameterAxis, valueAt } from "./sweep.js";
 
 // The fields a basin map may sweep: every pellet's φ₀ and φ̇₀.
 export function initialStatePaths(scene) {
@@ -91,14 +91,38 @@ export function readBasinsForm(root) {
   return { sweep, problems };
 }
 
-// Runs the basin sweep as a job (jobs.js, runJob); resolves to {image, attractors, cells} when
-// done (attractors null when not classified), or null when cancelled.
+// Runs the basin sweep as a job (jobs.js, runJob); resolves to {image, axis, attractors, cells}
+// when done (axis: sweep.js, parameterAxis; attractors null when not classified), or null when
+// cancelled.
 export async function runBasins(scene, job, onProgress) {
   const at = await runJob("/api/sweep", scene, job, onProgress);
   if (!at) return null;
-  const { image } = await jobImage(at);
+  const { image, response } = await jobImage(at);
   const attractors = scene.sweep.classify ? (await jobJson(at)).attractors : null;
-  return { image, attractors, cells: scene.sweep.count * scene.sweep.parameter2.count };
+  return { image, axis: parameterAxis(response), attractors, cells: scene.sweep.count * scene.sweep.parameter2.count };
+}
+
+// The value of the cell at `k` of an axis's cells, as the sweep spaces them.
+function cellValue(axis, k) {
+  return axis.count > 1 ? axis.from + (k * (axis.to - axis.from)) / (axis.count - 1) : axis.from;
+}
+
+// The cell's index under `at`, a fraction 0 … 1 of the way across the cells (each cell centred
+// on its value), or null outside them.
+function cellIndex(axis, at) {
+  if (at < 0 || at > 1) return null;
+  return Math.min(axis.count - 1, Math.floor(at * axis.count));
+}
+
+// The start of the cell under a click at (x, y) in the image's own pixels: {x, y} values of
+// the sweep's two fields, or null outside the map. `axis` is where the map lies (the
+// parameter's axis across; the second parameter runs up the same plot area).
+export function clickedStart(axis, sweep, x, y) {
+  if (!axis) return null;
+  const i = cellIndex(sweep, (x - axis.left) / axis.width);
+  const j = cellIndex(sweep.parameter2, (axis.top + axis.height - y) / axis.height);
+  if (i === null || j === null) return null;
+  return { x: cellValue(sweep, i), y: cellValue(sweep.parameter2, j) };
 }
 
 const cell = (tag, text, attrs = {}) => h(tag, attrs, text);

@@ -48,13 +48,16 @@ export async function runSweep(scene, job, onProgress) {
   const at = await runJob("/api/sweep", scene, job, onProgress);
   if (!at) return null;
   const { image, response } = await jobImage(at);
+  return { image, axis: parameterAxis(response), id: at.slice("/api/jobs/".length) };
+}
+
+// Where a sweep image's plot area lies and the parameter's span across it (the server's
+// X-Vibro-Parameter-Axis): {left, top, width, height, from, to} in the image's own pixels, or null.
+export function parameterAxis(response) {
   const header = response.headers.get("X-Vibro-Parameter-Axis");
-  let axis = null;
-  if (header) {
-    const [left, top, width, height, from, to] = header.split(",").map(Number);
-    axis = { left, top, width, height, from, to };
-  }
-  return { image, axis, id: at.slice("/api/jobs/".length) };
+  if (!header) return null;
+  const [left, top, width, height, from, to] = header.split(",").map(Number);
+  return { left, top, width, height, from, to };
 }
 
 // The parameter value under a click at (x, y) in the image's own pixels, or null outside the
