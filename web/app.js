@@ -7,6 +7,7 @@ import { fill, h } from "./js/dom.js";
 import { showEvents } from "./js/events_table.js";
 import { clearFieldErrors, revealField, showFieldError } from "./js/field_errors.js";
 import { formatValue } from "./js/numbers.js";
+import { parameterLabel } from "./js/parameters.js";
 import { readHash, sceneLink } from "./js/permalink.js";
 import { describePreset, fillPicker, sameScene } from "./js/presets.js";
 import { SceneForm } from "./js/scene_form.js";
@@ -317,7 +318,7 @@ const sweepState = { scene: null, axis: null, parameter: null };
 // The panel's fields from a scene: its own sweep, or a first one around its forcing.
 function fillSweep(scene) {
   const sweep = defaultSweep(scene);
-  sweepUi.parameter.replaceChildren(...sweepablePaths(scene).map((path) => new Option(path, path)));
+  sweepUi.parameter.replaceChildren(...sweepablePaths(scene).map((path) => new Option(parameterLabel(path), path)));
   sweepUi.parameter.value = sweep.parameter;
   sweepUi.from.value = sweep.from;
   sweepUi.to.value = sweep.to;

@@ -450,6 +450,20 @@ try {
     expect(/1 to 1000000/.test(e.text), `the error next to it reads: ${e.text}`);
     expect((await page.textContent("#basins-status")).includes("sweep.parameter2.count"), "the status does not name the field");
     await page.fill(field, "12");
+    // A field the form has no input for (the section, refused for a scene without forcing): the
+    // error goes under the form as a whole.
+    const before = await runCount(page);
+    await page.selectOption("#preset", "chatter");
+    await waitForRun(page, before);
+    await page.click("#basins-run");
+    await page.waitForFunction(() => document.getElementById("basins-box").dataset.state === "error", null, { timeout: 30000 });
+    const whole = await page.evaluate(() => {
+      const root = document.getElementById("basins-fields");
+      const slot = root.querySelector(":scope > .field-error");
+      return { invalid: root.getAttribute("aria-invalid") === "true", text: slot.hidden ? "" : slot.textContent };
+    });
+    expect(whole.invalid && /forced pellet/.test(whole.text), `under the form: ${JSON.stringify(whole)}`);
+    expect(/^Not done — Basin map: .*\(sweep\.section\)\.$/.test(await page.textContent("#basins-status")), "the status does not name the form and field");
   });
 
   await check("the periodic-motion panel follows the period doubling in k and draws the curves", async () => {

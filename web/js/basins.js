@@ -69,6 +69,8 @@ export function fillBasinsForm(root, scene) {
   const b = defaultBasins(scene);
   root.dataset.field = "sweep";
   root.dataset.kind = "group";
+  root.setAttribute("role", "group");
+  root.setAttribute("aria-label", "Basin map");
   root.replaceChildren(
     h(
       "div",
@@ -127,8 +129,16 @@ export function clickedStart(axis, sweep, x, y) {
 
 const cell = (tag, text, attrs = {}) => h(tag, attrs, text);
 
-function sectionText(section) {
-  return section.map((s) => `(${formatState(s.phi, 4)}, ${formatState(s.dphi, 4)})`).join(", ");
+// The attractor's states on the section, one "(φ, φ̇)" per period, "(φ₁, φ̇₁; φ₂, φ̇₂)" with two
+// pellets (the section lists each period's state pellet by pellet).
+function sectionText(a) {
+  const pellets = Math.max(1, Math.round(a.section.length / Math.max(1, a.period)));
+  const states = [];
+  for (let k = 0; k < a.section.length; k += pellets) {
+    const state = a.section.slice(k, k + pellets).map((s) => `${formatState(s.phi, 4)}, ${formatState(s.dphi, 4)}`);
+    states.push(`(${state.join("; ")})`);
+  }
+  return states.join(", ");
 }
 
 // The attractors as a table: id (as in the image's legend), period, impacts per period, section
@@ -142,7 +152,7 @@ export function attractorTable(attractors, cells) {
       cell("th", String(a.id), { scope: "row" }),
       cell("td", String(a.period)),
       cell("td", formatValue(a.impacts_per_period, 3)),
-      cell("td", sectionText(a.section)),
+      cell("td", sectionText(a)),
       cell("td", String(a.cells)),
       cell("td", percent(a.cells)),
     ),
@@ -150,7 +160,7 @@ export function attractorTable(attractors, cells) {
   const settled = attractors.reduce((n, a) => n + a.cells, 0);
   if (settled < cells)
     rows.push(h("tr", { class: "none" }, cell("th", "—", { scope: "row" }), h("td", { colspan: 3 }, "not periodic within the record"), cell("td", String(cells - settled)), cell("td", percent(cells - settled))));
-  return h(
+  const table = h(
     "table",
     { class: "attractors" },
     h("caption", {}, `${attractors.length} ${attractors.length === 1 ? "attractor" : "attractors"} over ${cells} starts`),
@@ -160,9 +170,11 @@ export function attractorTable(attractors, cells) {
       h(
         "tr",
         {},
-        ["attractor", "period (T)", "impacts per period", "section (φ rad, φ̇ rad/s) at t = kT", "cells", "share"].map((t) => cell("th", t, { scope: "col" })),
+        ["attractor", "period (T)", "impacts per period", "section at t = kT: (φ rad, φ̇ rad/s) per pellet", "cells", "share"].map((t) => cell("th", t, { scope: "col" })),
       ),
     ),
     h("tbody", {}, rows),
   );
+  // A long list (rest states of a pellet friction holds anywhere, say) scrolls in its own box.
+  return rows.length > 12 ? h("div", { class: "scroll" }, table) : table;
 }

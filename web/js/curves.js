@@ -59,6 +59,8 @@ export function fillFollowForm(root, scene) {
   showUnitsOf(second.querySelector("select"), from2, to2);
   root.dataset.field = "periodic_orbit";
   root.dataset.kind = "group";
+  root.setAttribute("role", "group");
+  root.setAttribute("aria-label", "Two-parameter curves");
   root.replaceChildren(
     h(
       "div",
