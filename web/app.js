@@ -472,10 +472,14 @@ async function runPanelJob(panel, { ask, run, show, progressText }) {
   const started = performance.now();
   try {
     const done = await run(asked.body, job, ({ done, total }) => {
+      if (panel.job !== job) return;
       panel.progress.max = Math.max(total, 1);
       panel.progress.value = done;
       panel.status.textContent = progressText(done, total);
     });
+    // A new scene reset the panel (resetPanel): this job, of the old scene, is not shown even
+    // if it finished before its cancel arrived.
+    if (panel.job !== job) return;
     if (!done) {
       panel.status.textContent = "Cancelled.";
       panel.box.dataset.state = "cancelled";
@@ -484,6 +488,7 @@ async function runPanelJob(panel, { ask, run, show, progressText }) {
     show(done, asked.body, (performance.now() - started) / 1000);
     panel.box.dataset.state = "done";
   } catch (e) {
+    if (panel.job !== job) return;
     panel.box.dataset.state = "error";
     panel.status.textContent = placeJobError(e, panel);
   } finally {
@@ -496,6 +501,7 @@ async function runPanelJob(panel, { ask, run, show, progressText }) {
 // A panel for a new scene: its job (of the old one) cancelled, its result gone.
 function resetPanel(panel, placeholder) {
   panel.job?.cancel?.();
+  panel.job = null;
   fill(panel.box, h("p", { class: "muted" }, placeholder));
   fill(panel.result);
   panel.box.dataset.state = "idle";

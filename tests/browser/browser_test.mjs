@@ -502,6 +502,24 @@ try {
     expect(/fixed limiters only/.test(await page.textContent("#follow-status")), "the status does not say why");
   });
 
+  await check("a new scene clears the basins and cancels their job", async () => {
+    let before = await runCount(page);
+    await page.selectOption("#preset", "impact-oscillator");
+    await waitForRun(page, before);
+    await page.fill('#basins-fields [data-field="sweep.count"]', "60");
+    await page.fill('#basins-fields [data-field="sweep.parameter2.count"]', "60");
+    const cancelled = page.waitForRequest((r) => r.method() === "DELETE" && /\/api\/jobs\//.test(r.url()), { timeout: 30000 });
+    await page.click("#basins-run");
+    await page.waitForFunction(() => document.getElementById("basins-progress").value > 0, null, { timeout: 30000 });
+    before = await runCount(page);
+    await page.selectOption("#preset", "grazing");
+    await waitForRun(page, before);
+    await cancelled;
+    await page.waitForFunction(() => !document.getElementById("basins-run").disabled, null, { timeout: 30000 });
+    const shown = await page.evaluate(() => [document.getElementById("basins-box").dataset.state, document.getElementById("basins-box").textContent, document.getElementById("basins-status").textContent]);
+    expect(shown[0] === "idle" && /appear here/.test(shown[1]) && shown[2] === "", `after the new scene: ${JSON.stringify(shown)}`);
+  });
+
   await check("no script errors on the page", async () => {
     expect(pageErrors.length === 0, pageErrors.join("; "));
   });
