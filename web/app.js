@@ -3,14 +3,18 @@
 
 import { ApiError, clickedState, getPreset, listPresets, renderFigure, renderImage, simulate } from "./js/api.js";
 import { curlCommand } from "./js/curl.js";
-import { fill } from "./js/dom.js";
+import { fill, h } from "./js/dom.js";
 import { showEvents } from "./js/events_table.js";
 import { clearFieldErrors, revealField, showFieldError } from "./js/field_errors.js";
+import { formatValue } from "./js/numbers.js";
+import { parameterLabel } from "./js/parameters.js";
 import { readHash, sceneLink } from "./js/permalink.js";
 import { describePreset, fillPicker, sameScene } from "./js/presets.js";
 import { SceneForm } from "./js/scene_form.js";
 import { setPath } from "./js/scene_path.js";
 import { clickedValue, defaultSweep, runSweep, sweepablePaths } from "./js/sweep.js";
+import { attractorTable, clickedStart, fillBasinsForm, readBasinsForm, runBasins } from "./js/basins.js";
+import { describeCurves, fillFollowForm, readFollowForm, runFollow } from "./js/curves.js";
 import { drawMarkers, drawMechanism, parseTrajectory } from "./js/animation.js";
 import { describeOrbit, findOrbit, sceneOnOrbit } from "./js/orbit.js";
 import { showSummary, showWarnings } from "./js/summary.js";
@@ -305,13 +309,16 @@ const sweepUi = {
   progress: $("sweep-progress"),
   status: $("sweep-status"),
   box: $("sweep-box"),
+  fields: $("sweep-fields"),
+  job: null,
 };
-const sweepState = { job: null, scene: null, axis: null, url: null };
+// The last diagram's scene, and where its parameter lies on the image (for a click on it).
+const sweepState = { scene: null, axis: null, parameter: null };
 
 // The panel's fields from a scene: its own sweep, or a first one around its forcing.
 function fillSweep(scene) {
   const sweep = defaultSweep(scene);
-  sweepUi.parameter.replaceChildren(...sweepablePaths(scene).map((path) => new Option(path, path)));
+  sweepUi.parameter.replaceChildren(...sweepablePaths(scene).map((path) => new Option(parameterLabel(path), path)));
   sweepUi.parameter.value = sweep.parameter;
   sweepUi.from.value = sweep.from;
   sweepUi.to.value = sweep.to;
@@ -319,15 +326,15 @@ function fillSweep(scene) {
   sweepUi.transient.value = sweep.transient ?? 50;
   sweepUi.record.value = sweep.record ?? 20;
   sweepUi.continuation.value = sweep.continuation ?? "none";
+  fillBasinsForm(basinsUi.fields, scene);
+  fillFollowForm(followUi.fields, scene);
+  resetPanel(basinsUi, "The basins appear here.");
+  resetPanel(followUi, "The curves appear here.");
 }
 
-async function startSweep() {
-  const { scene, problems } = form.read();
-  if (problems.length) {
-    sweepUi.status.textContent = "Fix the scene's fields first.";
-    return;
-  }
-  const sweep = {
+// The sweep the panel asks for.
+function readSweep() {
+  return {
     parameter: sweepUi.parameter.value,
     from: Number(sweepUi.from.value),
     to: Number(sweepUi.to.value),
@@ -337,49 +344,25 @@ async function startSweep() {
     section: "stroboscopic",
     continuation: sweepUi.continuation.value,
   };
-  const job = {};
-  sweepState.job = job;
-  sweepUi.run.disabled = true;
-  sweepUi.cancel.disabled = false;
-  sweepUi.box.dataset.state = "busy";
-  sweepUi.progress.value = 0;
-  sweepUi.status.textContent = "Queued…";
-  const started = performance.now();
-  try {
-    const done = await runSweep({ ...scene, sweep }, job, ({ done, total }) => {
-      sweepUi.progress.max = Math.max(total, 1);
-      sweepUi.progress.value = done;
-      sweepUi.status.textContent = `${done} of ${total} runs`;
-    });
-    if (!done) {
-      sweepUi.status.textContent = "Cancelled.";
-      sweepUi.box.dataset.state = "cancelled";
-      return;
-    }
-    if (sweepState.url) URL.revokeObjectURL(sweepState.url);
-    sweepState.url = URL.createObjectURL(done.image);
-    sweepState.scene = scene;
-    sweepState.axis = done.axis;
-    sweepState.parameter = sweep.parameter;
-    const img = new Image();
-    img.src = sweepState.url;
-    img.id = "sweep-figure";
-    img.alt = `Bifurcation diagram: the stroboscopic section against ${sweep.parameter} from ${sweep.from} to ${sweep.to}. Click to render the scene at a value.`;
-    fill(sweepUi.box, img);
-    sweepUi.box.dataset.state = "done";
-    sweepUi.status.textContent = `${sweep.count} values in ${((performance.now() - started) / 1000).toFixed(1)} s. Click the diagram to render a value.`;
-  } catch (e) {
-    sweepUi.box.dataset.state = "error";
-    sweepUi.status.textContent = e instanceof ApiError && e.field ? `${e.field}: ${e.message}` : e.message;
-  } finally {
-    if (sweepState.job === job) sweepState.job = null;
-    sweepUi.run.disabled = false;
-    sweepUi.cancel.disabled = true;
-  }
+}
+
+function startSweep() {
+  return runPanelJob(sweepUi, {
+    ask: (scene) => ({ body: { ...scene, sweep: readSweep() }, problems: [] }),
+    run: runSweep,
+    progressText: (done, total) => `${done} of ${total} runs`,
+    show: (done, { sweep, ...scene }, seconds) => {
+      sweepState.scene = scene;
+      sweepState.axis = done.axis;
+      sweepState.parameter = sweep.parameter;
+      showJobImage(sweepUi, done.image, "sweep-figure", `Bifurcation diagram: the stroboscopic section against ${sweep.parameter} from ${sweep.from} to ${sweep.to}. Click to render the scene at a value.`);
+      sweepUi.status.textContent = `${sweep.count} values in ${seconds.toFixed(1)} s. Click the diagram to render a value.`;
+    },
+  });
 }
 
 sweepUi.run.addEventListener("click", startSweep);
-sweepUi.cancel.addEventListener("click", () => sweepState.job?.cancel?.());
+sweepUi.cancel.addEventListener("click", () => sweepUi.job?.cancel?.());
 // A click on the diagram: the scene at that parameter value, rendered above.
 sweepUi.box.addEventListener("click", async (e) => {
   const img = e.target.closest("img");
@@ -442,6 +425,155 @@ orbitUi.draw.addEventListener("click", async () => {
   edited();
   await render();
 });
+
+// [SECTION] jobs from a panel: basins, two-parameter curves
+
+// A panel's controls, by their ids: PREFIX-fields, -run, -cancel, -progress, -status, -box, -result.
+function panelUi(prefix) {
+  const at = (name) => $(`${prefix}-${name}`);
+  return { fields: at("fields"), run: at("run"), cancel: at("cancel"), progress: at("progress"), status: at("status"), box: at("box"), result: at("result"), job: null };
+}
+
+// Puts a refusal next to the field it names, in the panel's form or else in the scene's, and
+// returns the status line's text.
+function placeJobError(e, panel) {
+  if (!(e instanceof ApiError) || !e.field) return e.message;
+  const own = showFieldError(panel.fields, e.field, e.message);
+  const el = own ?? showFieldError(ui.fields, e.field, e.message);
+  if (!el) return `${e.field}: ${e.message}`;
+  revealField(el);
+  return `Not done — ${fieldName(el)}: ${e.message} (${e.field}).`;
+}
+
+// Runs a panel's job: `ask(scene)` gives {body, problems} from the scene and the panel's form,
+// `run(body, job, onProgress)` runs it (null when cancelled), `show(done, body, seconds)` shows
+// what it gave; `progressText(done, total)` says how far it is.
+async function runPanelJob(panel, { ask, run, show, progressText }) {
+  clearFieldErrors(panel.fields);
+  clearFieldErrors(ui.fields);
+  const { scene, problems } = form.read();
+  if (problems.length) {
+    panel.status.textContent = "Fix the scene's fields first.";
+    return;
+  }
+  const asked = ask(scene);
+  if (asked.problems.length) {
+    asked.problems.forEach((p) => showFieldError(panel.fields, p.field, p.message));
+    panel.status.textContent = "Not sent: a field needs a valid value.";
+    return;
+  }
+  const job = {};
+  panel.job = job;
+  panel.run.disabled = true;
+  panel.cancel.disabled = false;
+  panel.box.dataset.state = "busy";
+  panel.progress.value = 0;
+  panel.status.textContent = "Queued…";
+  const started = performance.now();
+  try {
+    const done = await run(asked.body, job, ({ done, total }) => {
+      if (panel.job !== job) return;
+      panel.progress.max = Math.max(total, 1);
+      panel.progress.value = done;
+      panel.status.textContent = progressText(done, total);
+    });
+    // A new scene reset the panel (resetPanel): this job, of the old scene, is not shown even
+    // if it finished before its cancel arrived.
+    if (panel.job !== job) return;
+    if (!done) {
+      panel.status.textContent = "Cancelled.";
+      panel.box.dataset.state = "cancelled";
+      return;
+    }
+    show(done, asked.body, (performance.now() - started) / 1000);
+    panel.box.dataset.state = "done";
+  } catch (e) {
+    if (panel.job !== job) return;
+    panel.box.dataset.state = "error";
+    panel.status.textContent = placeJobError(e, panel);
+  } finally {
+    if (panel.job === job) panel.job = null;
+    panel.run.disabled = false;
+    panel.cancel.disabled = true;
+  }
+}
+
+// A panel for a new scene: its job (of the old one) cancelled, its result gone.
+function resetPanel(panel, placeholder) {
+  panel.job?.cancel?.();
+  panel.job = null;
+  fill(panel.box, h("p", { class: "muted" }, placeholder));
+  fill(panel.result);
+  panel.box.dataset.state = "idle";
+  panel.progress.value = 0;
+  panel.status.textContent = "";
+}
+
+// An image from a job, shown in its panel's box in place of the last one.
+function showJobImage(panel, blob, id, alt) {
+  if (panel.url) URL.revokeObjectURL(panel.url);
+  panel.url = URL.createObjectURL(blob);
+  fill(panel.box, Object.assign(new Image(), { src: panel.url, id, alt }));
+}
+
+const basinsUi = panelUi("basins");
+// The last map's scene, sweep and plot area (for a click on it).
+const basinsState = { scene: null, sweep: null, axis: null };
+
+basinsUi.run.addEventListener("click", () =>
+  runPanelJob(basinsUi, {
+    ask: (scene) => {
+      const { sweep, problems } = readBasinsForm(basinsUi.fields);
+      return { body: { ...scene, sweep }, problems };
+    },
+    run: runBasins,
+    progressText: (done, total) => `${done} of ${total} runs`,
+    show: (done, { sweep: s, ...scene }, seconds) => {
+      Object.assign(basinsState, { scene, sweep: s, axis: done.axis });
+      showJobImage(basinsUi, done.image, "basins-figure", `Basins of attraction over ${s.parameter} from ${s.from} to ${s.to} and ${s.parameter2.parameter} from ${s.parameter2.from} to ${s.parameter2.to}${done.attractors ? ", each cell coloured by the attractor it settles on; the table below lists them" : ", each cell coloured by its period"}.`);
+      fill(basinsUi.result, done.attractors ? attractorTable(done.attractors, done.cells) : null);
+      basinsUi.status.textContent = `${done.cells} starts in ${seconds.toFixed(1)} s. Click a cell to render the scene from its start.`;
+    },
+  }),
+);
+basinsUi.cancel.addEventListener("click", () => basinsUi.job?.cancel?.());
+// A click on a cell: the scene from that cell's start, rendered above.
+basinsUi.box.addEventListener("click", async (e) => {
+  const img = e.target.closest("img");
+  if (!img || !basinsState.scene) return;
+  const rect = img.getBoundingClientRect();
+  const scale = img.naturalWidth / rect.width;
+  const start = clickedStart(basinsState.axis, basinsState.sweep, (e.clientX - rect.left) * scale, (e.clientY - rect.top) * scale);
+  if (!start) return;
+  const { parameter, parameter2 } = basinsState.sweep;
+  const scene = structuredClone(basinsState.scene);
+  setPath(scene, parameter, start.x);
+  setPath(scene, parameter2.parameter, start.y);
+  form.load(scene);
+  edited();
+  basinsUi.status.textContent = `Rendering the scene from ${parameter} = ${formatValue(start.x)}, ${parameter2.parameter} = ${formatValue(start.y)}.`;
+  await render();
+});
+
+const followUi = panelUi("follow");
+
+followUi.run.addEventListener("click", () =>
+  runPanelJob(followUi, {
+    ask: (scene) => {
+      const { request, problems } = readFollowForm(followUi.fields, Number(orbitUi.periods.value), Number(orbitUi.transient.value));
+      return { body: { ...scene, periodic_orbit: request }, problems };
+    },
+    run: runFollow,
+    progressText: (done, total) => `${Math.round((100 * done) / Math.max(total, 1))} % of the way`,
+    show: (done, body, seconds) => {
+      const c = body.periodic_orbit.continuation;
+      showJobImage(followUi, done.image, "follow-figure", `Bifurcation curves: the ${c.follow.replace("_", " ")} followed in ${c.parameter2.parameter} against ${c.parameter}; the table below says where each curve runs and how it ended.`);
+      fill(followUi.result, describeCurves(done.answer, body.periodic_orbit));
+      followUi.status.textContent = `Followed in ${seconds.toFixed(1)} s.`;
+    },
+  }),
+);
+followUi.cancel.addEventListener("click", () => followUi.job?.cancel?.());
 
 // [SECTION] errors and status
 

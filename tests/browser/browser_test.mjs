@@ -386,6 +386,140 @@ try {
     await page.screenshot({ path: join(shots, "animation.png"), fullPage: true });
   });
 
+  await check("the sweep tab maps the impact oscillator's basins on 12 x 12 starts and lists its attractors", async () => {
+    const before = await runCount(page);
+    await page.selectOption("#preset", "impact-oscillator");
+    await waitForRun(page, before);
+    // At Ω = 6.8 rad/s two period-1 motions coexist (docs/SWEEPS.md, "Basins of attraction").
+    await page.fill('[data-field="model.pellets[0].Omega"]', "6.8");
+    const form = "#basins-fields";
+    expect((await page.inputValue(`${form} [data-field="sweep.parameter"]`)) === "model.pellets[0].phi0", "the x axis is not φ₀");
+    expect((await page.inputValue(`${form} [data-field="sweep.parameter2.parameter"]`)) === "model.pellets[0].dphi0", "the y axis is not φ̇₀");
+    const fromLabel = await page.textContent(`${form} label[for="${await page.getAttribute(`${form} [data-field="sweep.parameter2.from"]`, "id")}"]`);
+    expect(fromLabel.includes("rad/s"), `the y range's label is "${fromLabel}"`);
+    for (const [field, value] of [["sweep.from", "0.01"], ["sweep.to", "1.6"], ["sweep.count", "12"], ["sweep.parameter2.from", "-8"], ["sweep.parameter2.to", "8"], ["sweep.parameter2.count", "12"], ["sweep.transient", "100"], ["sweep.record", "8"]])
+      await page.fill(`${form} [data-field="${field}"]`, value);
+    expect(await page.isChecked(`${form} [data-field="sweep.classify"]`), "classify attractors is not checked");
+    await page.click("#basins-run");
+    await page.waitForFunction(() => ["done", "error"].includes(document.getElementById("basins-box").dataset.state), null, { timeout: 60000 });
+    const said = await page.textContent("#basins-status");
+    expect((await page.getAttribute("#basins-box", "data-state")) === "done", `the map ended: ${said}`);
+    const progress = await page.evaluate(() => [document.getElementById("basins-progress").value, document.getElementById("basins-progress").max]);
+    expect(progress[0] === 144 && progress[1] === 144, `progress ${progress}`);
+    const img = await pixelsOf(page, "basins-figure");
+    expect(img.ink > 0.2, `the basins image is mostly blank (${(img.ink * 100).toFixed(1)} % ink)`);
+    const rows = await page.$$eval("table.attractors tbody tr", (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+    const cells = rows.reduce((n, r) => n + Number(r.at(-2)), 0);
+    expect(cells === 144, `the table's cells add up to ${cells}, not 144`);
+    // The slow and the fast motion of the docs, told apart by their section points.
+    const slow = rows.find((r) => r[3].includes("(0.2688, 0.2004)"));
+    const fast = rows.find((r) => r[3].includes("(0.8405, 6.044)"));
+    expect(slow && fast && slow[1] === "1" && fast[1] === "1" && slow[2] === "1", `the attractors: ${JSON.stringify(rows)}`);
+    await page.locator("#basins-panel").scrollIntoViewIfNeeded();
+    await page.screenshot({ path: join(shots, "basins.png"), fullPage: true });
+    // A click on the map renders the scene from the start of the cell under it.
+    const picked = await runCount(page);
+    const box = await page.locator("#basins-figure").boundingBox();
+    await page.mouse.click(box.x + box.width * 0.4, box.y + box.height * 0.5);
+    await waitForRun(page, picked);
+    const onGrid = (v, from, to) => {
+      const k = ((v - from) / (to - from)) * 11;
+      return Math.abs(k - Math.round(k)) < 1e-6 && k > -0.5 && k < 11.5;
+    };
+    const phi0 = Number(await page.inputValue('[data-field="model.pellets[0].phi0"]'));
+    const dphi0 = Number(await page.inputValue('[data-field="model.pellets[0].dphi0"]'));
+    expect(onGrid(phi0, 0.01, 1.6) && onGrid(dphi0, -8, 8), `the click started from φ0 = ${phi0}, φ̇0 = ${dphi0}, not a cell's start`);
+    // Cells as the server draws them (render/parameter_range.cpp): count cells across the plot
+    // area, each centred on its value, the second field running up.
+    const under = await page.evaluate(async () => {
+      const { clickedStart } = await import("/js/basins.js");
+      const axis = { left: 100, top: 50, width: 120, height: 60 };
+      const sweep = { from: 0, to: 11, count: 12, parameter2: { from: -1, to: 1, count: 3 } };
+      return [[101, 109], [219, 51], [160, 80], [99, 80], [221, 80], [160, 111]].map(([x, y]) => clickedStart(axis, sweep, x, y));
+    });
+    expect(JSON.stringify(under) === JSON.stringify([{ x: 0, y: -1 }, { x: 11, y: 1 }, { x: 6, y: 0 }, null, null, null]), `cells under clicks: ${JSON.stringify(under)}`);
+  });
+
+  await check("a basin map the server refuses shows its error next to the field it names", async () => {
+    const field = '#basins-fields [data-field="sweep.parameter2.count"]';
+    await page.fill(field, "0");
+    await page.click("#basins-run");
+    await page.waitForFunction(() => document.getElementById("basins-box").dataset.state === "error", null, { timeout: 30000 });
+    const e = await errorNextTo(page, "sweep.parameter2.count");
+    expect(e.invalid && e.sameField && e.described, "the y axis's cells are not marked invalid");
+    expect(/1 to 1000000/.test(e.text), `the error next to it reads: ${e.text}`);
+    expect((await page.textContent("#basins-status")).includes("sweep.parameter2.count"), "the status does not name the field");
+    await page.fill(field, "12");
+    // A field the form has no input for (the section, refused for a scene without forcing): the
+    // error goes under the form as a whole.
+    const before = await runCount(page);
+    await page.selectOption("#preset", "chatter");
+    await waitForRun(page, before);
+    await page.click("#basins-run");
+    await page.waitForFunction(() => document.getElementById("basins-box").dataset.state === "error", null, { timeout: 30000 });
+    const whole = await page.evaluate(() => {
+      const root = document.getElementById("basins-fields");
+      const slot = root.querySelector(":scope > .field-error");
+      return { invalid: root.getAttribute("aria-invalid") === "true", text: slot.hidden ? "" : slot.textContent };
+    });
+    expect(whole.invalid && /forced pellet/.test(whole.text), `under the form: ${JSON.stringify(whole)}`);
+    expect(/^Not done — Basin map: .*\(sweep\.section\)\.$/.test(await page.textContent("#basins-status")), "the status does not name the form and field");
+  });
+
+  await check("the periodic-motion panel follows the period doubling in k and draws the curves", async () => {
+    const before = await runCount(page);
+    await page.selectOption("#preset", "impact-oscillator");
+    await waitForRun(page, before);
+    const c = '#follow-fields [data-field="periodic_orbit.continuation';
+    expect((await page.inputValue(`${c}.parameter"]`)) === "model.pellets[0].Omega", "the branch is not continued in Ω");
+    await page.selectOption(`${c}.follow"]`, "period_doubling");
+    await page.selectOption(`${c}.parameter2.parameter"]`, "model.limiters[0].k");
+    await page.fill(`${c}.parameter2.from"]`, "0.75");
+    await page.fill(`${c}.parameter2.to"]`, "0.85");
+    await page.click("#follow-run");
+    await page.waitForFunction(() => ["done", "error"].includes(document.getElementById("follow-box").dataset.state), null, { timeout: 60000 });
+    const said = await page.textContent("#follow-status");
+    expect((await page.getAttribute("#follow-box", "data-state")) === "done", `the follow ended: ${said}`);
+    const img = await pixelsOf(page, "follow-figure");
+    expect(img.ink > 0.005, "the curves' figure is blank");
+    const text = await page.textContent("#follow-result");
+    expect(/period doubling at 5\.5572/.test(text), `the branch's bifurcations: ${text}`);
+    const rows = await page.$$eval("table.curves tbody tr", (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
+    expect(rows.length === 1 && rows[0][0] === "period doubling" && Number(rows[0][1]) > 3, `the curves: ${JSON.stringify(rows)}`);
+    expect(rows[0][3] === "0.75 … 0.85" && /^5\.5/.test(rows[0][2]), `the curve's span: ${rows[0]}`);
+    await page.locator("#h-follow").scrollIntoViewIfNeeded();
+    await page.screenshot({ path: join(shots, "curves.png"), fullPage: true });
+  });
+
+  await check("following a curve on the paper scene names its mobile limiter next to that field", async () => {
+    const before = await runCount(page);
+    await page.selectOption("#preset", "paper");
+    await waitForRun(page, before);
+    await page.click("#follow-run");
+    await page.waitForFunction(() => document.getElementById("follow-box").dataset.state === "error", null, { timeout: 30000 });
+    const e = await errorNextTo(page, "model.limiters[0].mobile");
+    expect(e.found && e.invalid && /fixed limiters only/.test(e.text), `next to the mobile limiter: ${JSON.stringify(e)}`);
+    expect(/fixed limiters only/.test(await page.textContent("#follow-status")), "the status does not say why");
+  });
+
+  await check("a new scene clears the basins and cancels their job", async () => {
+    let before = await runCount(page);
+    await page.selectOption("#preset", "impact-oscillator");
+    await waitForRun(page, before);
+    await page.fill('#basins-fields [data-field="sweep.count"]', "60");
+    await page.fill('#basins-fields [data-field="sweep.parameter2.count"]', "60");
+    const cancelled = page.waitForRequest((r) => r.method() === "DELETE" && /\/api\/jobs\//.test(r.url()), { timeout: 30000 });
+    await page.click("#basins-run");
+    await page.waitForFunction(() => document.getElementById("basins-progress").value > 0, null, { timeout: 30000 });
+    before = await runCount(page);
+    await page.selectOption("#preset", "grazing");
+    await waitForRun(page, before);
+    await cancelled;
+    await page.waitForFunction(() => !document.getElementById("basins-run").disabled, null, { timeout: 30000 });
+    const shown = await page.evaluate(() => [document.getElementById("basins-box").dataset.state, document.getElementById("basins-box").textContent, document.getElementById("basins-status").textContent]);
+    expect(shown[0] === "idle" && /appear here/.test(shown[1]) && shown[2] === "", `after the new scene: ${JSON.stringify(shown)}`);
+  });
+
   await check("no script errors on the page", async () => {
     expect(pageErrors.length === 0, pageErrors.join("; "));
   });

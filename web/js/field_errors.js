@@ -6,8 +6,10 @@
 
 import { parentPath } from "./scene_path.js";
 
+// The element under root (or root itself) whose data-field is path.
 function byField(root, path) {
-  return root.querySelector(`[data-field="${CSS.escape(path)}"]`);
+  const selector = `[data-field="${CSS.escape(path)}"]`;
+  return root.matches(selector) ? root : root.querySelector(selector);
 }
 
 // The element for `path`, or null.

@@ -3,7 +3,8 @@
 // reading the form and placing an error next to its field both go through these two attributes.
 
 import { h, uniqueId } from "./dom.js";
-import { formatInput } from "./numbers.js";
+import { formatInput, parseNumber } from "./numbers.js";
+import { setPath } from "./scene_path.js";
 
 function wrap(input, labelText, { hint, unit, wide } = {}) {
   const errorId = uniqueId("err");
@@ -109,4 +110,46 @@ export function pelletChecks({ path, legend, count, selected = [], hint }) {
 
 export function pelletOptions(count) {
   return Array.from({ length: count }, (_, i) => ({ value: i, label: `pellet ${i + 1}` }));
+}
+
+// Reads the inputs under `root` into `into` by their data-field paths: { scene, problems:
+// [{field, message}] }. Document order, so keys come out in the order a person reads them; a
+// card (data-item) stands for its list element even when all its inputs are empty. A value that
+// is not a number is kept as its text, so that rebuilding a form keeps what was typed; such a
+// scene must not be sent.
+export function readFields(root, into = {}) {
+  const scene = into;
+  const problems = [];
+  for (const el of root.querySelectorAll("[data-field], [data-item]")) {
+    const { field, kind, item } = el.dataset;
+    if (item) setPath(scene, item, {});
+    if (el.disabled || !field || kind === "group") continue;
+    const text = el.value?.trim();
+    if (kind === "bool") {
+      if (el.checked) setPath(scene, field, true);
+    } else if (kind === "bool-on") {
+      if (!el.checked) setPath(scene, field, false);
+    } else if (kind === "index-list") {
+      const picked = [...el.querySelectorAll("input:checked")].map((c) => Number(c.value));
+      if (picked.length) setPath(scene, field, picked);
+    } else if (text === "") {
+      continue; // an omitted key takes the server's documented default
+    } else if (kind === "number") {
+      const v = parseNumber(text);
+      if (v === null) problems.push({ field, message: "is not a number (examples: 0.2, 1e-10, π/12, -pi/2)" });
+      setPath(scene, field, v ?? text);
+    } else if (kind === "int" || kind === "int-optional") {
+      setPath(scene, field, Number(text));
+    } else if (kind === "int-list") {
+      const items = text.split(/[\s,;]+/).filter(Boolean);
+      const values = items.map(Number);
+      if (values.some((v) => !Number.isInteger(v))) {
+        problems.push({ field, message: "must list whole numbers separated by commas, e.g. 2, 3" });
+        setPath(scene, field, text);
+      } else setPath(scene, field, values);
+    } else {
+      setPath(scene, field, text);
+    }
+  }
+  return { scene, problems };
 }

@@ -4,9 +4,7 @@
 // the DOM never holds state the scene object does not.
 
 import { fill, h } from "./dom.js";
-import { checkField, intListField, numberField, pelletChecks, pelletOptions, selectField, textField } from "./fields.js";
-import { parseNumber } from "./numbers.js";
-import { setPath } from "./scene_path.js";
+import { checkField, intListField, numberField, pelletChecks, pelletOptions, readFields, selectField, textField } from "./fields.js";
 
 export const MAX_PELLETS = 8;
 const MAX_LIMITERS = 16;
@@ -56,46 +54,9 @@ export class SceneForm {
     );
   }
 
-  // { scene, problems: [{field, message}] }. A value that is not a number is kept as its text,
-  // so that rebuilding the form keeps what was typed; such a scene must not be sent.
+  // { scene, problems: [{field, message}] } (fields.js, readFields).
   read() {
-    const scene = {};
-    if (this.name) scene.name = this.name;
-    const problems = [];
-    // Document order, so keys come out in the order a person reads them; a card (data-item)
-    // stands for its list element even when all its inputs are empty.
-    for (const el of this.root.querySelectorAll("[data-field], [data-item]")) {
-      const { field, kind, item } = el.dataset;
-      if (item) setPath(scene, item, {});
-      if (el.disabled || !field || kind === "group") continue;
-      const text = el.value?.trim();
-      if (kind === "bool") {
-        if (el.checked) setPath(scene, field, true);
-      } else if (kind === "bool-on") {
-        if (!el.checked) setPath(scene, field, false);
-      } else if (kind === "index-list") {
-        const picked = [...el.querySelectorAll("input:checked")].map((c) => Number(c.value));
-        if (picked.length) setPath(scene, field, picked);
-      } else if (text === "") {
-        continue; // an omitted key takes the server's documented default
-      } else if (kind === "number") {
-        const v = parseNumber(text);
-        if (v === null) problems.push({ field, message: "is not a number (examples: 0.2, 1e-10, π/12, -pi/2)" });
-        setPath(scene, field, v ?? text);
-      } else if (kind === "int" || kind === "int-optional") {
-        setPath(scene, field, Number(text));
-      } else if (kind === "int-list") {
-        const items = text.split(/[\s,;]+/).filter(Boolean);
-        const values = items.map(Number);
-        if (values.some((v) => !Number.isInteger(v))) {
-          problems.push({ field, message: "must list whole numbers separated by commas, e.g. 2, 3" });
-          setPath(scene, field, text);
-        } else setPath(scene, field, values);
-      } else {
-        setPath(scene, field, text);
-      }
-    }
-    return { scene, problems };
+    return readFields(this.root, this.name ? { name: this.name } : {});
   }
 
   // Rebuilds the form after `edit` changes the scene, then focuses `focusPath` if given.

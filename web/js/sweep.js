@@ -1,7 +1,8 @@
 // The sweep panel: a parameter of the scene swept over a range as a server job (API.md,
 // "Sweeps"), its progress, cancel, the diagram, and the parameter value under a click on it.
 
-import { ApiError } from "./api.js";
+import { jobImage, runJob } from "./jobs.js";
+import { tidy } from "./parameters.js";
 import { parsePath } from "./scene_path.js";
 
 // The numeric fields of a scene that a sweep can vary, as paths.
@@ -24,66 +25,39 @@ export function valueAt(scene, path) {
   return typeof node === "number" ? node : undefined;
 }
 
+// The index of the first forced pellet (Ω > 0 and F0 ≠ 0), or 0 when none is.
+export function forcedPellet(scene) {
+  const pellets = scene.model?.pellets ?? [];
+  return Math.max(0, pellets.findIndex((p) => (p.Omega ?? 0) > 0 && (p.F0 ?? 0) !== 0));
+}
+
 // A first sweep for a scene: its own, or the first forced pellet's Ω around its value.
 export function defaultSweep(scene) {
   if (scene.sweep) return { ...scene.sweep };
   const pellets = scene.model?.pellets ?? [];
-  const i = Math.max(0, pellets.findIndex((p) => (p.Omega ?? 0) > 0 && (p.F0 ?? 0) !== 0));
+  const i = forcedPellet(scene);
   const parameter = pellets[i] && (pellets[i].Omega ?? 0) > 0 ? `model.pellets[${i}].Omega` : `model.pellets[0].F0`;
   const v = valueAt(scene, parameter) ?? 1;
-  // To 12 significant digits: 1.5 · 3.3 is 4.949999999999999 in binary, and the form shows it.
-  const tidy = (x) => Number(x.toPrecision(12));
   return { parameter, from: tidy(v / 2), to: tidy(v * 1.5), count: 100, transient: 50, record: 20, section: "stroboscopic", continuation: "none" };
-}
-
-async function json(response) {
-  let body = null;
-  try {
-    body = await response.json();
-  } catch {
-    // not JSON: the status alone
-  }
-  if (!response.ok) {
-    throw new ApiError(body?.error ?? `${response.status} ${response.statusText}`, { status: response.status, field: body?.field ?? null });
-  }
-  return body;
 }
 
 // Runs the sweep as a job: onProgress({done, total}) while it runs; resolves to
 // {image: Blob, axis: {left, top, width, height, from, to} | null, id} when done, or null when
 // cancelled through `job.cancel()` (job: an object this fills with cancel()).
 export async function runSweep(scene, job, onProgress) {
-  const started = await json(await fetch("/api/sweep", {
-    method: "POST",
-    headers: { "Content-Type": "application/json" },
-    body: JSON.stringify(scene),
-  }));
-  const at = `/api/jobs/${started.id}`;
-  let cancelled = false;
-  job.cancel = async () => {
-    cancelled = true;
-    await fetch(at, { method: "DELETE" });
-  };
-  for (;;) {
-    const status = await json(await fetch(at));
-    onProgress(status.progress);
-    if (status.status === "done") break;
-    if (status.status === "cancelled" || cancelled) return null;
-    if (status.status === "failed") {
-      // The server says why (a budget, a value a run refused) and names the field it concerns.
-      throw new ApiError(status.error ?? "the sweep failed on the server", { status: 200, field: status.field ?? null });
-    }
-    await new Promise((r) => setTimeout(r, 250));
-  }
-  const response = await fetch(`${at}/result?format=png`);
-  if (!response.ok) await json(response);
+  const at = await runJob("/api/sweep", scene, job, onProgress);
+  if (!at) return null;
+  const { image, response } = await jobImage(at);
+  return { image, axis: parameterAxis(response), id: at.slice("/api/jobs/".length) };
+}
+
+// Where a sweep image's plot area lies and the parameter's span across it (the server's
+// X-Vibro-Parameter-Axis): {left, top, width, height, from, to} in the image's own pixels, or null.
+export function parameterAxis(response) {
   const header = response.headers.get("X-Vibro-Parameter-Axis");
-  let axis = null;
-  if (header) {
-    const [left, top, width, height, from, to] = header.split(",").map(Number);
-    axis = { left, top, width, height, from, to };
-  }
-  return { image: await response.blob(), axis, id: started.id };
+  if (!header) return null;
+  const [left, top, width, height, from, to] = header.split(",").map(Number);
+  return { left, top, width, height, from, to };
 }
 
 // The parameter value under a click at (x, y) in the image's own pixels, or null outside the
