@@ -33,7 +33,7 @@ import json, os, sys
 out, binaries = sys.argv[1], sys.argv[2:]
 for side in ("base", "cur"):
     for b in binaries:
-        rounds = sorted(os.listdir(os.path.join(out, side)))
+        rounds = sorted(r for r in os.listdir(os.path.join(out, side)) if r.isdigit())
         runs = [x for r in rounds for x in json.load(open(os.path.join(out, side, r, b + ".json")))["benchmarks"]]
         json.dump({"benchmarks": runs}, open(os.path.join(out, side, b + ".json"), "w"))
 PY

@@ -16,6 +16,7 @@ namespace vibro {
 // The recorded pellets' branches (RunResult::tracks) and the negative-normal-force warnings.
 class Recording : public RunObserver {
  public:
+  PerStep per_step() const override { return per_step_of<Recording>(); }
   // record, record_until, max_samples: SimOptions'.
   Recording(const Model& model, const std::vector<bool>& record, double record_until,
             long max_samples)
@@ -36,6 +37,7 @@ class Recording : public RunObserver {
 // The state at given times (RunResult::stops): a stroboscopic section whose times steps land on.
 class SectionStops : public RunObserver {
  public:
+  PerStep per_step() const override { return per_step_of<SectionStops>(); }
   explicit SectionStops(const Model& model, std::vector<double> times)
       : model_(model), times_(std::move(times)) {}
 
@@ -54,6 +56,7 @@ class SectionStops : public RunObserver {
 // `limit` of them.
 class PathKeeper : public RunObserver {
  public:
+  PerStep per_step() const override { return per_step_of<PathKeeper>(); }
   PathKeeper(double t_end, double from, std::size_t limit)
       : t_end_(t_end), from_(from), limit_(limit) {}
 
@@ -72,6 +75,7 @@ class PathKeeper : public RunObserver {
 // summary built from them.
 class EventLog : public RunObserver {
  public:
+  PerStep per_step() const override { return per_step_of<EventLog>(); }
   EventLog(const Model& model, double t_end, double from)
       : model_(model), t_end_(t_end), from_(from) {}
 
@@ -88,6 +92,7 @@ class EventLog : public RunObserver {
 // first_integral_residual, error_estimate): the run's consistency, which does not see event times.
 class EnergyCheck : public RunObserver {
  public:
+  PerStep per_step() const override { return per_step_of<EnergyCheck>(); }
   explicit EnergyCheck(const Model& model) : model_(model) {}
 
   void on_start(const Vec& y0) override { balance_.emplace(model_, y0); }

@@ -54,11 +54,19 @@ RunState::RunState(const Model& model, const SolverOptions& options, Stepper& st
       neighbours_(model.size() >= 2 ? circular_neighbours(y_, model.size())
                                     : std::vector<Neighbours>{}),
       times_(std::max(options.samples_per_step, 2) + 1),
-      states_(times_.size(), Vec(y_.size())) {}
+      states_(times_.size(), Vec(y_.size())) {
+  for (RunObserver* o : observers) {
+    const RunObserver::PerStep takes = o->per_step();
+    if (takes.landing) landing_.push_back(o);
+    if (takes.step) on_step_.push_back(o);
+    if (takes.step_end) on_step_end_.push_back(o);
+    if (takes.settled) on_settled_.push_back(o);
+  }
+}
 
 bool RunState::take_step(double& t) {
   double limit = opt_.t_end;
-  for (const RunObserver* o : observers_) limit = std::min(limit, o->landing());
+  for (const RunObserver* o : landing_) limit = std::min(limit, o->landing());
   const StepStatus status = stepper_.step(limit);
   if (status == StepStatus::ok) return true;
   t = stepper_.t();
@@ -70,7 +78,7 @@ bool RunState::take_step(double& t) {
 }
 
 void RunState::settled(double t, const std::vector<Body>& bodies) {
-  for (RunObserver* o : observers_) o->on_settled(t, y_, bodies);
+  for (RunObserver* o : on_settled_) o->on_settled(t, y_, bodies);
 }
 
 void RunState::note_instant(double t, const InstantOutcome& out) {

@@ -51,6 +51,8 @@ class RunState {
   const EventTolerances start_tol_;
   Stepper& stepper_;
   const std::span<RunObserver* const> observers_;
+  // Those that take each per-step call (RunObserver::per_step).
+  std::vector<RunObserver*> landing_, on_step_, on_step_end_, on_settled_;
   Vec y_;
   std::vector<bool> armed_;
   const std::vector<Neighbours> neighbours_;

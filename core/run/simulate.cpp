@@ -92,7 +92,7 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     const bool event = !found.empty();
     const double first_event = event ? found.front().t : std::numeric_limits<double>::infinity();
     const StepSamples step{a, b, y_, times_, states_, first, first_event, stepper_};
-    for (RunObserver* o : observers_) o->on_step(step);
+    for (RunObserver* o : on_step_) o->on_step(step);
     t = event ? found.front().t : b;
     if (event) {
       stepper_.dense(t, y_);
@@ -100,7 +100,7 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     } else {
       y_ = stepper_.y();
     }
-    for (RunObserver* o : observers_) o->on_step_end(t, y_, in, event);
+    for (RunObserver* o : on_step_end_) o->on_step_end(t, y_, in, event);
     if (!event) settled(t, in.bodies());
     if (!std::isfinite(y_.sum())) {
       fail(t, Termination::numerical_failure, "the state became non-finite");

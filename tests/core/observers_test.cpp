@@ -4,6 +4,7 @@
 
 #include <gtest/gtest.h>
 
+#include <array>
 #include <cmath>
 #include <limits>
 #include <string>
@@ -179,6 +180,21 @@ TEST(Observers, TheEnergyCheckReportsTheRunsConsistency) {
   EXPECT_EQ(run.stats.error_estimate,
             std::max(run.stats.energy_defect, run.stats.first_integral_residual));
   EXPECT_EQ(run.stats.energy_defect, simulate(scene.model, scene.sim).stats.energy_defect);
+}
+
+// The driver makes the per-step calls to the observers that override them alone: what each
+// standard observer takes is read from its declarations, and one that does not say takes all.
+TEST(Observers, PerStepCallsGoWhereTheyAreOverridden) {
+  const auto takes = [](RunObserver::PerStep p) {
+    return std::array<bool, 4>{p.landing, p.step, p.step_end, p.settled};
+  };
+  using A = std::array<bool, 4>;
+  EXPECT_EQ(takes(per_step_of<Recording>()), (A{false, true, true, false}));
+  EXPECT_EQ(takes(per_step_of<SectionStops>()), (A{true, false, false, true}));
+  EXPECT_EQ(takes(per_step_of<PathKeeper>()), (A{false, false, false, false}));
+  EXPECT_EQ(takes(per_step_of<EventLog>()), (A{false, false, false, false}));
+  EXPECT_EQ(takes(per_step_of<EnergyCheck>()), (A{false, false, true, false}));
+  EXPECT_EQ(takes(HookLog().per_step()), (A{true, true, true, true}));
 }
 
 }  // namespace
