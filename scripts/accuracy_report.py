@@ -235,7 +235,7 @@ def extremes():
         cases.append((f"Omega = {Om:g} rad/s, F0 = 20 N", sc))
     lines = ["| case | outcome | events | steps | wall ms | error estimate |", "|---|---|---|---|---|---|"]
     for label, scene in cases:
-        r = simulate(scene, ["--deadline-ms", "10000"])
+        r = simulate(scene, ["--deadline-ms", "60000"])
         if "error" in r:
             lines.append(f"| {label} | refused: `{r['error']['field']}` {r['error']['error']} | | | | |")
             continue
