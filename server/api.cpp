@@ -13,6 +13,7 @@
 #include "io/scene_json.h"
 #include "io/sweep_json.h"
 #include "render/figure.h"
+#include "render/orbit_figure.h"
 #include "server/access_log.h"
 #include "server/api_error.h"
 #include "server/etag.h"
@@ -307,7 +308,12 @@ void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
       return send_error(res, ApiError::from(*e));
   }
   scene.sim = bounded_options(scene.sim, config_.limits);
-  if (scene.periodic_orbit->continuation) return submit(JobKind::orbit, std::move(scene), res);
+  if (scene.periodic_orbit->continuation) {
+    auto beneath = sweep_beneath_options(scene);
+    if (auto* e = std::get_if<ApiError>(&beneath)) return send_error(res, *e);
+    return submit(JobKind::orbit, std::move(scene), res,
+                  std::get<std::optional<SimOptions>>(std::move(beneath)));
+  }
   auto produced =
       run_on_worker([scene = std::move(scene), image] { return orbit_scene(scene, image); }, res);
   if (!produced) return;
@@ -318,8 +324,24 @@ void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
   res.set_content(std::move(p.body), p.content_type);
 }
 
-void Api::submit(JobKind kind, Scene scene, httplib::Response& res) {
-  const auto status = jobs_.submit(kind, std::move(scene));
+std::variant<std::optional<SimOptions>, ApiError> Api::sweep_beneath_options(
+    const Scene& scene) const {
+  const OrbitRequest& request = *scene.periodic_orbit;
+  if (!scene.sweep || !sweep_may_lie_beneath(*scene.sweep, *request.continuation,
+                                             request.follow ? &*request.follow : nullptr))
+    return std::nullopt;
+  if (auto e = check_sweep_cost(scene, config_.limits, config_.sweep_threads)) return *e;
+  SimOptions options = scene.sim;  // bounded already
+  options.check = false;           // as `vibro orbit` runs it
+  options.deadline_ms =
+      std::min(options.deadline_ms,
+               sweep_run_deadline_ms(*scene.sweep, config_.limits, config_.sweep_threads));
+  return options;
+}
+
+void Api::submit(JobKind kind, Scene scene, httplib::Response& res,
+                 std::optional<SimOptions> beneath) {
+  const auto status = jobs_.submit(kind, std::move(scene), std::move(beneath));
   if (!status) {
     res.set_header("Retry-After", "10");
     return send_error(res, {503, "server", "the job queue is full; try again later"});
@@ -367,7 +389,10 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   // Drawn on a worker, not the connection's thread: a branch without points is drawn as one
   // return of the motion, which is a simulation.
   auto produced = run_on_worker(
-      [job, format = *image_format] { return orbit_image(job->scene, *job->orbit, format); }, res);
+      [job, format = *image_format] {
+        return orbit_image(job->scene, *job->orbit, format, job->sweep.get());
+      },
+      res);
   if (!produced) return;
   if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
   Produced& p = std::get<Produced>(*produced);
