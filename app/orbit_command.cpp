@@ -29,15 +29,22 @@
 namespace vibro {
 namespace {
 
-// The scene's sweep, when it draws beneath the branch: the same parameter, one axis.
+// The figure of the result, as the scene's plots and its continuation ask (render/orbit_figure.h),
+// with the sweep beneath it when one was run.
+OrbitFigure figure_of(const Scene& scene, const OrbitRequest& request, const OrbitResult& result,
+                      const SweepResult* sweep) {
+  return {&result.branch,
+          request.continuation ? &*request.continuation : nullptr,
+          scene.sweep ? &*scene.sweep : nullptr,
+          sweep,
+          &result.curves,
+          request.follow ? &*request.follow : nullptr};
+}
+
+// The scene's sweep, when the figure draws it beneath the branch or the curves.
 std::optional<SweepResult> sweep_beneath(const Scene& scene, const OrbitRequest& request,
-                                         ProgressBar& bar) {
-  if (!request.continuation || !scene.sweep) return std::nullopt;
-  const bool one_axis =
-      !scene.sweep->axis2 && scene.sweep->axis.parameter == request.continuation->parameter;
-  const bool curves =
-      request.follow && sweep_of_curves(*scene.sweep, *request.continuation, *request.follow);
-  if (!one_axis && !curves) return std::nullopt;
+                                         const OrbitResult& result, ProgressBar& bar) {
+  if (!draws_sweep_beneath(figure_of(scene, request, result, nullptr))) return std::nullopt;
   SweepControl control;
   control.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
   if (isatty(STDERR_FILENO))
@@ -50,18 +57,13 @@ std::optional<SweepResult> sweep_beneath(const Scene& scene, const OrbitRequest&
   return run_sweep(scene.model, options, *scene.sweep, control);
 }
 
-// The figure of the result, as the scene's plots and its continuation ask: the branch (over the
-// sweep beneath it), or one return of the motion. Empty after printing why it cannot be drawn.
+// The figure of the result: the branch (over the sweep beneath it), or one return of the motion.
+// Empty after printing why it cannot be drawn.
 std::optional<std::string> orbit_image(const Scene& scene, const OrbitRequest& request,
                                        const OrbitResult& result,
                                        const std::optional<SweepResult>& sweep,
                                        ImageFormat format) {
-  const OrbitFigure figure{&result.branch,
-                           request.continuation ? &*request.continuation : nullptr,
-                           sweep ? &*scene.sweep : nullptr,
-                           sweep ? &*sweep : nullptr,
-                           &result.curves,
-                           request.follow ? &*request.follow : nullptr};
+  const OrbitFigure figure = figure_of(scene, request, result, sweep ? &*sweep : nullptr);
   return drawn_bytes(draws_branch(figure)
                          ? render_branch_figure(scene.figure, scene.model, figure, format)
                          : server::draw_orbit_return(scene, result.orbit, format));
@@ -92,7 +94,7 @@ int orbit(const SceneOutput& o) {
   });
   // Run once for every image that draws it.
   const std::optional<SweepResult> sweep =
-      draws ? sweep_beneath(scene, request, bar) : std::nullopt;
+      draws ? sweep_beneath(scene, request, result, bar) : std::nullopt;
   // With its scene, so that `vibro plot` redraws it from this output alone.
   nlohmann::json saved = orbit_result_json(result);
   saved["scene"] = scene_to_json(scene);

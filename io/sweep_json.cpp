@@ -284,9 +284,10 @@ json sweep_to_json(const SweepSpec& s) {
   return j;
 }
 
-bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, const TextSink& sink,
-                             const json& scene) {
-  Pieces out(sink);
+namespace {
+
+// The result's keys before its columns: the attractors (when classified) and the parameters.
+void write_head(Pieces& out, const SweepSpec& spec, const SweepResult& result) {
   out.text("{");
   if (result.classified) write_attractors(out, result);
   out.text("\"parameter\":");
@@ -295,6 +296,10 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, c
     out.text(",\"parameter2\":");
     out.string(spec.axis2->parameter);
   }
+}
+
+// The point and run columns, each key preceded by a comma.
+bool write_columns(Pieces& out, const SweepResult& result) {
   out.text(",\"points\":{");
   bool first = true;
   for (const PointColumn& c : kPointColumns) {
@@ -313,9 +318,14 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, c
     out.text(":");
     if (!write_run_column(out, c, result)) return false;
   }
+  out.text("}");
+  return true;
+}
+
+// The keys after the columns: the scene (when given), the section and the stats; then the end.
+bool write_tail(Pieces& out, const SweepSpec& spec, const SweepResult& result, const json& scene) {
   long points = 0;
   for (const SweepRun& run : result.runs) points += static_cast<long>(run.points.size());
-  out.text("}");
   if (!scene.is_null()) {
     out.text(",\"scene\":");
     out.text(scene.dump());
@@ -334,6 +344,23 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, c
   out.number(result.wall_ms);
   out.text("}}");
   return out.finish();
+}
+
+}  // namespace
+
+bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, const TextSink& sink,
+                             const json& scene) {
+  Pieces out(sink);
+  write_head(out, spec, result);
+  if (!write_columns(out, result)) return false;
+  return write_tail(out, spec, result, scene);
+}
+
+bool write_sweep_summary_json(const SweepSpec& spec, const SweepResult& result,
+                              const TextSink& sink) {
+  Pieces out(sink);
+  write_head(out, spec, result);
+  return write_tail(out, spec, result, nullptr);
 }
 
 json sweep_result_json(const SweepSpec& spec, const SweepResult& result, const json& scene) {

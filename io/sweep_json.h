@@ -33,6 +33,11 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, c
                              const nlohmann::json& scene = nullptr);
 nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& result,
                                  const nlohmann::json& scene = nullptr);
+// The result without its "points" and "runs" columns, whose size grows with the runs: the
+// attractors (a sweep that classifies them), the parameters, the section and the stats, as
+// write_sweep_result_json writes them.
+bool write_sweep_summary_json(const SweepSpec& spec, const SweepResult& result,
+                              const TextSink& sink);
 // The points as CSV with a header row, one line per point, each run's classification on it; the
 // Lyapunov exponent last, empty without one and "-inf" where every perturbation dies. Numbers
 // to 17 significant digits. The header names the swept parameters by their field paths

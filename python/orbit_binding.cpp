@@ -7,6 +7,8 @@
 #include <atomic>
 #include <complex>
 #include <nlohmann/json.hpp>
+#include <optional>
+#include <thread>
 
 #include "io/orbit_json.h"
 #include "io/scene_json.h"
@@ -51,17 +53,19 @@ class PeriodicOrbitResult {
     return saved.dump(2) + "\n";
   }
 
-  // The continued branch as `vibro orbit -o OUT.png` draws it (without the sweep beneath);
-  // None when there is no branch to draw.
-  py::object branch_image(const std::string& format_name) const {
+  // The continued branch (or its curves) as `vibro orbit -o OUT.png` draws it, over the scene's
+  // sweep when the figure draws one (run here once, on every core, interruptible); None when
+  // there is no branch to draw.
+  py::object branch_image(const std::string& format_name) {
     const ImageFormat format = image_format(format_name);
     const OrbitRequest& request = *scene_.periodic_orbit;
-    const OrbitFigure figure{
-        .branch = &result_.branch,
-        .continuation = request.continuation ? &*request.continuation : nullptr,
-        .curves = &result_.curves,
-        .follow = request.follow ? &*request.follow : nullptr};
+    OrbitFigure figure{.branch = &result_.branch,
+                       .continuation = request.continuation ? &*request.continuation : nullptr,
+                       .sweep_spec = scene_.sweep ? &*scene_.sweep : nullptr,
+                       .curves = &result_.curves,
+                       .follow = request.follow ? &*request.follow : nullptr};
     if (!draws_branch(figure)) return py::none();
+    if (draws_sweep_beneath(figure)) figure.sweep = &sweep_beneath();
     RenderResult image;
     {
       py::gil_scoped_release release;
@@ -71,8 +75,24 @@ class PeriodicOrbitResult {
   }
 
  private:
+  // The scene's sweep as `vibro orbit` runs it beneath the figure, run on the first call.
+  const SweepResult& sweep_beneath() {
+    if (sweep_) return *sweep_;
+    SweepControl control;
+    control.threads = static_cast<int>(std::max(1u, std::thread::hardware_concurrency()));
+    std::atomic<bool> cancel{false};
+    control.cancel = &cancel;
+    SimOptions options = scene_.sim;
+    options.check = false;
+    SweepResult result;
+    run_interruptible([&] { result = run_sweep(scene_.model, options, *scene_.sweep, control); },
+                      cancel, {});
+    return sweep_.emplace(std::move(result));
+  }
+
   Scene scene_;
   OrbitResult result_;
+  std::optional<SweepResult> sweep_;
   nlohmann::json json_;
   py::dict data_;
 };
@@ -120,9 +140,10 @@ void add_periodic_orbit(py::module_& m) {
       .def("to_json", &PeriodicOrbitResult::to_json,
            "The result as `vibro orbit` prints it for the same scene (API.md's JSON).")
       .def("render", &PeriodicOrbitResult::branch_image, py::arg("format") = "png",
-           "The continued branch drawn as `vibro orbit -o OUT.png` draws it (without a sweep "
-           "beneath); None without a branch.")
-      .def("_repr_png_", [](const PeriodicOrbitResult& o) { return o.branch_image("png"); })
+           "The continued branch, or the curves followed from it, drawn as `vibro orbit -o "
+           "OUT.png` draws them: over the scene's sweep when it is of the same parameter(s), "
+           "run on the first call on every core (Ctrl-C stops it). None without a branch.")
+      .def("_repr_png_", [](PeriodicOrbitResult& o) { return o.branch_image("png"); })
       .def("__repr__", [](const PeriodicOrbitResult& o) {
         const py::dict orbit = o.data()["orbit"];
         return "<vibro.PeriodicOrbit: converged=" +

@@ -14,23 +14,43 @@ bool sweep_of_curves(const SweepSpec& sweep, const ContinuationSpec& continuatio
          (b == continuation.parameter && a == follow.parameter2);
 }
 
+namespace {
+
+bool draws_curves(const OrbitFigure& in) { return in.curves && in.follow && !in.curves->empty(); }
+
+bool one_axis_of(const SweepSpec& sweep, const ContinuationSpec& continuation) {
+  return !sweep.axis2 && sweep.axis.parameter == continuation.parameter;
+}
+
+}  // namespace
+
+bool sweep_may_lie_beneath(const SweepSpec& sweep, const ContinuationSpec& continuation,
+                           const FollowSpec* follow) {
+  return one_axis_of(sweep, continuation) ||
+         (follow && sweep_of_curves(sweep, continuation, *follow));
+}
+
+bool draws_sweep_beneath(const OrbitFigure& in) {
+  if (!draws_branch(in) || !in.sweep_spec) return false;
+  if (draws_curves(in)) return sweep_of_curves(*in.sweep_spec, *in.continuation, *in.follow);
+  return one_axis_of(*in.sweep_spec, *in.continuation);
+}
+
 RenderResult render_branch_figure(const FigureSpec& figure, const Model& model,
                                   const OrbitFigure& in, ImageFormat format) {
-  if (in.curves && in.follow && !in.curves->empty()) {
+  const bool beneath = in.sweep && draws_sweep_beneath(in);
+  if (draws_curves(in)) {
     FigureSpec curves = figure;
     BranchPlot plot;
     plot.curves = true;
     curves.plots = {plot};
     PanelData data{nullptr, std::nullopt,
                    BranchData{*in.branch, *in.continuation, in.curves, in.follow}};
-    if (in.sweep && in.sweep_spec && sweep_of_curves(*in.sweep_spec, *in.continuation, *in.follow))
-      data.sweep.emplace(SweepData{*in.sweep_spec, *in.sweep});
+    if (beneath) data.sweep.emplace(SweepData{*in.sweep_spec, *in.sweep});
     return render_figure(curves, model, RunResult{}, format, data);
   }
   FigureSpec branch = figure;
   branch.plots = {BranchPlot{}};
-  const bool beneath = in.sweep && in.sweep_spec && !in.sweep_spec->axis2 &&
-                       in.sweep_spec->axis.parameter == in.continuation->parameter;
   PanelData data{nullptr, std::nullopt, BranchData{*in.branch, *in.continuation}};
   if (beneath) data.sweep.emplace(SweepData{*in.sweep_spec, *in.sweep});
   return render_figure(branch, model, RunResult{}, format, data);

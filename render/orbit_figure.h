@@ -28,9 +28,20 @@ struct OrbitFigure {
 bool sweep_of_curves(const SweepSpec& sweep, const ContinuationSpec& continuation,
                      const FollowSpec& follow);
 
+// Whether the scene's sweep may be drawn beneath an orbit's branch, known before the orbit is
+// sought: one axis over the continued parameter, or two spanning the followed curves' (`follow`
+// may be null).
+bool sweep_may_lie_beneath(const SweepSpec& sweep, const ContinuationSpec& continuation,
+                           const FollowSpec* follow);
+
 // Whether the figure is the continued branch (a continuation with points); else it is one
 // return of the motion.
 bool draws_branch(const OrbitFigure& orbit);
+
+// Whether the figure draws its sweep_spec's sweep beneath the branch or the curves: the sweep a
+// caller runs (every caller the same, so that `vibro orbit`, the server and Python draw one
+// figure) before render_branch_figure. Needs the branch and curves, not the sweep.
+bool draws_sweep_beneath(const OrbitFigure& orbit);
 
 // The continued branch (or its curves) in one panel; `figure` is the scene's (its size). Call when
 // draws_branch.

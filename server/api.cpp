@@ -13,6 +13,7 @@
 #include "io/scene_json.h"
 #include "io/sweep_json.h"
 #include "render/figure.h"
+#include "render/orbit_figure.h"
 #include "server/access_log.h"
 #include "server/api_error.h"
 #include "server/etag.h"
@@ -237,21 +238,41 @@ void Api::static_file(const httplib::Request& req, httplib::Response& res) const
 
 namespace {
 
+// How much of a sweep's result is written: all of it, as JSON or CSV, or its JSON summary
+// (part=summary: the attractors and stats without the columns that grow with the runs).
+enum class SweepPart { json, csv, summary };
+
+// Which part a result query asks for (format=json|csv, part=all|summary); else why not, naming
+// the parameter. Nothing for an image format.
+std::optional<std::variant<SweepPart, ApiError>> sweep_part_of(const httplib::Request& req) {
+  const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
+  const std::string part = req.has_param("part") ? req.get_param_value("part") : "all";
+  if (part != "all" && part != "summary")
+    return ApiError{400, "part", "must be \"all\" or \"summary\", got \"" + part + "\""};
+  if (part == "summary" && format != "json")
+    return ApiError{400, "part", "part=summary applies to format=json only"};
+  if (format == "csv") return SweepPart::csv;
+  if (format == "json") return part == "summary" ? SweepPart::summary : SweepPart::json;
+  return std::nullopt;
+}
+
 // A sweep's points, written to the connection as they are formatted (chunked): memory for one
 // piece at a time, not the document. The result lives as long as the writing.
-void stream_sweep_result(const Job& job, bool csv, httplib::Response& res) {
-  auto write = [result = job.sweep, spec = *job.scene.sweep, csv](std::size_t,
-                                                                  httplib::DataSink& sink) {
+void stream_sweep_result(const Job& job, SweepPart part, httplib::Response& res) {
+  auto write = [result = job.sweep, spec = *job.scene.sweep, part](std::size_t,
+                                                                   httplib::DataSink& sink) {
     const TextSink to_sink = [&sink](std::string_view piece) {
       AccessLog::streamed(piece.size());
       return sink.write(piece.data(), piece.size());
     };
-    const bool whole = csv ? write_sweep_result_csv(spec, *result, to_sink)
-                           : write_sweep_result_json(spec, *result, to_sink);
+    const bool whole = part == SweepPart::csv    ? write_sweep_result_csv(spec, *result, to_sink)
+                       : part == SweepPart::json ? write_sweep_result_json(spec, *result, to_sink)
+                                                 : write_sweep_summary_json(spec, *result, to_sink);
     if (whole) sink.done();
     return whole;  // false: the client went away, the connection ends
   };
-  res.set_chunked_content_provider(csv ? "text/csv" : "application/json", std::move(write));
+  res.set_chunked_content_provider(part == SweepPart::csv ? "text/csv" : "application/json",
+                                   std::move(write));
 }
 
 json job_json(const JobStatus& s) {
@@ -307,7 +328,12 @@ void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
       return send_error(res, ApiError::from(*e));
   }
   scene.sim = bounded_options(scene.sim, config_.limits);
-  if (scene.periodic_orbit->continuation) return submit(JobKind::orbit, std::move(scene), res);
+  if (scene.periodic_orbit->continuation) {
+    auto beneath = sweep_beneath_options(scene);
+    if (auto* e = std::get_if<ApiError>(&beneath)) return send_error(res, *e);
+    return submit(JobKind::orbit, std::move(scene), res,
+                  std::get<std::optional<SimOptions>>(std::move(beneath)));
+  }
   auto produced =
       run_on_worker([scene = std::move(scene), image] { return orbit_scene(scene, image); }, res);
   if (!produced) return;
@@ -318,8 +344,24 @@ void Api::orbit_post(const httplib::Request& req, httplib::Response& res) {
   res.set_content(std::move(p.body), p.content_type);
 }
 
-void Api::submit(JobKind kind, Scene scene, httplib::Response& res) {
-  const auto status = jobs_.submit(kind, std::move(scene));
+std::variant<std::optional<SimOptions>, ApiError> Api::sweep_beneath_options(
+    const Scene& scene) const {
+  const OrbitRequest& request = *scene.periodic_orbit;
+  if (!scene.sweep || !sweep_may_lie_beneath(*scene.sweep, *request.continuation,
+                                             request.follow ? &*request.follow : nullptr))
+    return std::nullopt;
+  if (auto e = check_sweep_cost(scene, config_.limits, config_.sweep_threads)) return *e;
+  SimOptions options = scene.sim;  // bounded already
+  options.check = false;           // as `vibro orbit` runs it
+  options.deadline_ms =
+      std::min(options.deadline_ms,
+               sweep_run_deadline_ms(*scene.sweep, config_.limits, config_.sweep_threads));
+  return options;
+}
+
+void Api::submit(JobKind kind, Scene scene, httplib::Response& res,
+                 std::optional<SimOptions> beneath) {
+  const auto status = jobs_.submit(kind, std::move(scene), std::move(beneath));
   if (!status) {
     res.set_header("Retry-After", "10");
     return send_error(res, {503, "server", "the job queue is full; try again later"});
@@ -367,7 +409,10 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
   // Drawn on a worker, not the connection's thread: a branch without points is drawn as one
   // return of the motion, which is a simulation.
   auto produced = run_on_worker(
-      [job, format = *image_format] { return orbit_image(job->scene, *job->orbit, format); }, res);
+      [job, format = *image_format] {
+        return orbit_image(job->scene, *job->orbit, format, job->sweep.get());
+      },
+      res);
   if (!produced) return;
   if (auto* e = std::get_if<ApiError>(&*produced)) return send_error(res, *e);
   Produced& p = std::get<Produced>(*produced);
@@ -375,12 +420,15 @@ void Api::job_get(const httplib::Request& req, httplib::Response& res) {
 }
 
 void Api::sweep_result(const Job& job, const httplib::Request& req, httplib::Response& res) {
-  if (auto e = only_params(req, {"format", "plot", "pellet", "coordinate"}))
+  if (auto e = only_params(req, {"format", "part", "plot", "pellet", "coordinate"}))
     return send_error(res, *e);
   const SweepSpec& spec = *job.scene.sweep;
   const std::string format = req.has_param("format") ? req.get_param_value("format") : "json";
+  const auto part = sweep_part_of(req);
+  if (part && std::holds_alternative<ApiError>(*part))
+    return send_error(res, std::get<ApiError>(*part));
   res.set_header("Cache-Control", "no-store");
-  if (format == "json" || format == "csv") return stream_sweep_result(job, format == "csv", res);
+  if (part) return stream_sweep_result(job, std::get<SweepPart>(*part), res);
   const auto image_format = image_format_named(format);
   if (!image_format)
     return send_error(

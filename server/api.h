@@ -51,7 +51,12 @@ class Api {
   void simulate(const Scene& scene, const httplib::Request& req, httplib::Response& res);
   void render(const Scene& scene, const httplib::Request& req, httplib::Response& res);
   // Queues the job: 202 with its status and Location, or 503 when the queue is full.
-  void submit(JobKind kind, Scene scene, httplib::Response& res);
+  void submit(JobKind kind, Scene scene, httplib::Response& res,
+              std::optional<SimOptions> beneath = std::nullopt);
+  // The options of the scene's sweep when it may be drawn beneath its continued orbit (run in the
+  // orbit's job, each run's deadline its share of the budget); nothing without one; refused, naming
+  // the field, past the server's limits (check_sweep_cost).
+  std::variant<std::optional<SimOptions>, ApiError> sweep_beneath_options(const Scene& scene) const;
   // A done sweep's points or diagram, as the query asks.
   void sweep_result(const Job& job, const httplib::Request& req, httplib::Response& res);
   // Answers from the cache, or runs `job` on a worker and caches what it produces.

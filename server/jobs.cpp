@@ -6,6 +6,8 @@
 #include <cstdio>
 #include <random>
 
+#include "render/orbit_figure.h"
+
 namespace vibro::server {
 
 std::string_view job_state_name(JobState state) {
@@ -46,7 +48,8 @@ JobStatus Jobs::snapshot(const Job& job) const {
   return {job.id, job.state, job.done.load(), job.total, failed ? job.error : std::nullopt};
 }
 
-std::optional<JobStatus> Jobs::submit(JobKind kind, Scene scene) {
+std::optional<JobStatus> Jobs::submit(JobKind kind, Scene scene,
+                                      std::optional<SimOptions> beneath) {
   const std::lock_guard lock(mutex_);
   forget_old();
   if (waiting_.size() >= options_.queue) return std::nullopt;
@@ -58,6 +61,8 @@ std::optional<JobStatus> Jobs::submit(JobKind kind, Scene scene) {
   job->id = options_.id_prefix + id;
   job->kind = kind;
   job->total = kind == JobKind::sweep ? sweep_runs(*scene.sweep) : 1000;
+  if (kind == JobKind::orbit && beneath) job->total += sweep_runs(*scene.sweep);
+  job->beneath = std::move(beneath);
   job->scene = std::move(scene);
   jobs_[job->id] = job;
   waiting_.push_back(job);
@@ -114,30 +119,65 @@ void Jobs::forget_old() {
   }
 }
 
+JobState Jobs::run_orbit(Job& job) const {
+  const Scene& scene = job.scene;
+  // A continuation answers to the job's wall-clock budget as a sweep does: past it, the
+  // branch stops after the point in hand and the job fails, saying so.
+  const auto started = std::chrono::steady_clock::now();
+  auto spent_ms = [&started] {
+    return std::chrono::duration<double, std::milli>(std::chrono::steady_clock::now() - started)
+        .count();
+  };
+  bool over_budget = false;
+  auto progress = [&](double done) {
+    job.done = std::lround(1000.0 * done);
+    if (spent_ms() > options_.budget_ms && !job.cancel) over_budget = job.cancel = true;
+  };
+  job.orbit = std::make_shared<OrbitResult>(
+      run_orbit_request(scene.model, scene.sim, *scene.periodic_orbit, progress, &job.cancel));
+  if (over_budget) {
+    job.error = FieldError{"periodic_orbit.continuation.max_points",
+                           "the continuation took longer than the job's budget of " +
+                               std::to_string(std::lround(options_.budget_ms / 1000.0)) +
+                               " s: ask fewer points or a shorter range"};
+    return JobState::failed;
+  }
+  if (job.cancel) return JobState::cancelled;
+  return run_sweep_beneath(job, spent_ms());
+}
+
+JobState Jobs::run_sweep_beneath(Job& job, double spent_ms) const {
+  const Scene& scene = job.scene;
+  const OrbitRequest& request = *scene.periodic_orbit;
+  const OrbitFigure figure{&job.orbit->branch, &*request.continuation,
+                           &*scene.sweep,      nullptr,
+                           &job.orbit->curves, request.follow ? &*request.follow : nullptr};
+  job.done = 1000;
+  if (!job.beneath || !draws_sweep_beneath(figure)) {
+    job.done = job.total;
+    return JobState::done;
+  }
+  SweepControl control;
+  control.threads = options_.threads;
+  control.cancel = &job.cancel;
+  control.progress = [&job](long done, long) { job.done = 1000 + done; };
+  control.max_points = options_.max_points;
+  control.budget_ms = std::max(0.0, options_.budget_ms - spent_ms);
+  auto result =
+      std::make_shared<SweepResult>(run_sweep(scene.model, *job.beneath, *scene.sweep, control));
+  if (result->cancelled) return JobState::cancelled;
+  if (result->stopped) {
+    job.error = result->stopped;
+    return JobState::failed;
+  }
+  for (const SweepRun& r : result->runs) job.points += static_cast<long>(r.points.size());
+  job.sweep = std::move(result);
+  return JobState::done;
+}
+
 JobState Jobs::run(Job& job) const {
   const Scene& scene = job.scene;
-  if (job.kind == JobKind::orbit) {
-    // A continuation answers to the job's wall-clock budget as a sweep does: past it, the
-    // branch stops after the point in hand and the job fails, saying so.
-    const auto started = std::chrono::steady_clock::now();
-    bool over_budget = false;
-    auto progress = [&](double done) {
-      job.done = std::lround(1000.0 * done);
-      const std::chrono::duration<double, std::milli> spent =
-          std::chrono::steady_clock::now() - started;
-      if (spent.count() > options_.budget_ms && !job.cancel) over_budget = job.cancel = true;
-    };
-    job.orbit = std::make_shared<OrbitResult>(
-        run_orbit_request(scene.model, scene.sim, *scene.periodic_orbit, progress, &job.cancel));
-    if (over_budget) {
-      job.error = FieldError{"periodic_orbit.continuation.max_points",
-                             "the continuation took longer than the job's budget of " +
-                                 std::to_string(std::lround(options_.budget_ms / 1000.0)) +
-                                 " s: ask fewer points or a shorter range"};
-      return JobState::failed;
-    }
-    return job.cancel ? JobState::cancelled : JobState::done;
-  }
+  if (job.kind == JobKind::orbit) return run_orbit(job);
   SweepControl control;
   control.threads = options_.threads;
   control.cancel = &job.cancel;

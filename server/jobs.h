@@ -34,12 +34,16 @@ struct Job {
   std::string id;
   JobKind kind = JobKind::sweep;
   Scene scene;  // with what the job runs, its options bounded by the server's limits
-  // Progress: a sweep counts its runs; an orbit its way along the parameter, in thousandths.
+  // An orbit's: the options of the scene's sweep when it may be drawn beneath the branch or its
+  // curves (render/orbit_figure.h, sweep_may_lie_beneath); the job then runs that sweep too.
+  std::optional<SimOptions> beneath;
+  // Progress: a sweep counts its runs; an orbit its way along the parameter, in thousandths,
+  // then the runs of the sweep beneath it.
   long total = 0;
   std::atomic<long> done{0};
   std::atomic<bool> cancel{false};
   // Written by the job's thread before its state ends, read only once it has (finished()):
-  std::shared_ptr<const SweepResult> sweep;  // a sweep's
+  std::shared_ptr<const SweepResult> sweep;  // a sweep's, or the sweep beneath an orbit's figure
   std::shared_ptr<const OrbitResult> orbit;  // an orbit's
   long points = 0;                           // the section points the sweep holds
   std::optional<FieldError> error;           // why it failed, naming the field to change
@@ -80,9 +84,11 @@ class Jobs {
   Jobs(const Jobs&) = delete;
   Jobs& operator=(const Jobs&) = delete;
 
-  // Queues the scene's sweep, or its periodic_orbit with a continuation: its status, or nothing
-  // when the queue is full.
-  std::optional<JobStatus> submit(JobKind kind, Scene scene);
+  // Queues the scene's sweep, or its periodic_orbit with a continuation (and, given `beneath`,
+  // the scene's sweep to draw beneath it, run with those options): its status, or nothing when
+  // the queue is full.
+  std::optional<JobStatus> submit(JobKind kind, Scene scene,
+                                  std::optional<SimOptions> beneath = std::nullopt);
   std::optional<JobStatus> status(const std::string& id);
   // The finished job (its scene and result), or nothing while it runs or when unknown.
   std::shared_ptr<const Job> finished(const std::string& id);
@@ -93,6 +99,10 @@ class Jobs {
   void work();
   // Runs the job to its end and keeps its result; the state it ended in.
   JobState run(Job& job) const;
+  JobState run_orbit(Job& job) const;
+  // The sweep beneath an orbit's figure, when the figure draws it, within what is left of the
+  // job's budget.
+  JobState run_sweep_beneath(Job& job, double spent_ms) const;
   // Forgets finished jobs past their time, their number or the points they hold (oldest
   // first). Under mutex_.
   void forget_old();

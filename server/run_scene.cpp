@@ -106,11 +106,14 @@ RenderResult draw_orbit_return(const Scene& scene, const PeriodicOrbit& orbit, I
   return render_figure(scene.figure, r.model, simulate(r.model, plan.options), format);
 }
 
-JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format) {
+JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format,
+                      const SweepResult* sweep) {
   const auto& continuation = scene.periodic_orbit->continuation;
   const auto& follow = scene.periodic_orbit->follow;
   const OrbitFigure figure{.branch = &result.branch,
                            .continuation = continuation ? &*continuation : nullptr,
+                           .sweep_spec = sweep && scene.sweep ? &*scene.sweep : nullptr,
+                           .sweep = sweep,
                            .curves = &result.curves,
                            .follow = follow ? &*follow : nullptr};
   const RenderResult image = draws_branch(figure)

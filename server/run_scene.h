@@ -45,9 +45,11 @@ JobResult orbit_scene(const Scene& scene, std::optional<ImageFormat> image = std
 // "periodic_orbit". Simulates and draws: the server calls it on a worker, `vibro orbit` too.
 RenderResult draw_orbit_return(const Scene& scene, const PeriodicOrbit& orbit, ImageFormat format);
 
-// An orbit's result drawn: its continued branch (render/orbit_figure.h), or else one return of
-// the motion, run here, in the scene's plots. Simulates and draws: call it on a worker.
-JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format);
+// An orbit's result drawn: its continued branch (render/orbit_figure.h) or its curves, over the
+// scene's `sweep` when given and the figure draws it, or else one return of the motion, run here,
+// in the scene's plots. Simulates and draws: call it on a worker.
+JobResult orbit_image(const Scene& scene, const OrbitResult& result, ImageFormat format,
+                      const SweepResult* sweep = nullptr);
 
 // The scene's run options within the server's limits (events, steps, deadline per run).
 SimOptions bounded_options(const SimOptions& options, const Limits& limits);

@@ -6,7 +6,7 @@ import numpy as np
 import pytest
 
 import vibro
-from conftest import run_cli, without_wall_clock
+from conftest import ROOT, run_cli, without_wall_clock
 
 
 @pytest.fixture(scope="module")
@@ -81,3 +81,17 @@ def test_a_followed_period_doubling_gives_its_curve():
     with pytest.raises(vibro.SceneError) as e:
         vibro.periodic_orbit(scene)
     assert e.value.field == "periodic_orbit.continuation.parameter2"
+
+
+def test_curves_are_drawn_over_the_regime_map_as_the_command_line_draws_them(tmp_path):
+    path = ROOT / "docs" / "scenes" / "impact-oscillator-pd-curve.json"
+    found = vibro.periodic_orbit(json.loads(path.read_text()))
+    out = tmp_path / "curves.png"
+    run_cli("orbit", path, "-o", out)
+    image = found.render()
+    assert image == out.read_bytes()
+    assert found._repr_png_() == image  # the sweep kept, not run again
+    # Without the sweep the figure is the curves alone: another image.
+    scene = json.loads(path.read_text())
+    del scene["sweep"]
+    assert vibro.periodic_orbit(scene).render() != image

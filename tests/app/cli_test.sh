@@ -4,6 +4,7 @@
 # the serve flags reach the server's config. Usage: cli_test.sh path/to/vibro
 set -uo pipefail
 vibro="$1"
+root="$(cd "$(dirname "$0")/../.." && pwd)"
 work="$(mktemp -d)"
 server=""
 disk=""
@@ -306,6 +307,36 @@ assert limits["pixels"] == 1000000, limits
 assert health["workers"] == 3, health
 PY
   fail "serve flags set the config"; cat serve.out serve.err; fi
+
+# The server draws a continuation's curves as `vibro orbit` does: over the regime map of the same
+# two parameters, the sweep run in the orbit's job and counted in its progress.
+kill "$server" 2> /dev/null && wait "$server" 2> /dev/null
+curves="$root/docs/scenes/impact-oscillator-pd-curve.json"
+"$vibro" orbit "$curves" -o cli-curves.png > /dev/null 2> err.txt || fail "vibro orbit draws the curves"
+"$vibro" serve --port 0 --quiet > serve.out 2> serve.err &
+server=$!
+if python3 - "$curves" << 'PY'; then pass "the server draws the curves over the regime map as vibro orbit does"; else
+import json, re, sys, time, urllib.request
+for _ in range(300):
+    m = re.search(r"http://127\.0\.0\.1:(\d+)/", open("serve.out").read())
+    if m:
+        break
+    time.sleep(0.1)
+base = "http://127.0.0.1:%s" % m.group(1)
+post = urllib.request.Request(base + "/api/periodic-orbit", open(sys.argv[1], "rb").read(),
+                              {"Content-Type": "application/json"})
+job = json.load(urllib.request.urlopen(post))
+assert job["progress"]["total"] == 1000 + 40 * 25, job  # the way along Ω, then the map's runs
+for _ in range(3000):  # a hang fails after 300 s
+    status = json.load(urllib.request.urlopen(base + "/api/jobs/" + job["id"]))
+    if status["status"] not in ("queued", "running"):
+        break
+    time.sleep(0.1)
+assert status["status"] == "done" and status["progress"]["done"] == 2000, status
+png = urllib.request.urlopen(base + "/api/jobs/" + job["id"] + "/result?format=png").read()
+assert png == open("cli-curves.png", "rb").read(), "the images differ"
+PY
+  fail "the server draws the curves over the regime map as vibro orbit does"; cat serve.err; fi
 
 echo "$failures failed"
 ((failures == 0))

@@ -400,6 +400,10 @@ try {
     for (const [field, value] of [["sweep.from", "0.01"], ["sweep.to", "1.6"], ["sweep.count", "12"], ["sweep.parameter2.from", "-8"], ["sweep.parameter2.to", "8"], ["sweep.parameter2.count", "12"], ["sweep.transient", "100"], ["sweep.record", "8"]])
       await page.fill(`${form} [data-field="${field}"]`, value);
     expect(await page.isChecked(`${form} [data-field="sweep.classify"]`), "classify attractors is not checked");
+    // The table needs the attractors only: the page asks the result's summary, not every point.
+    const results = [];
+    const onRequest = (r) => r.url().includes("/result?format=json") && results.push(r.url());
+    page.on("request", onRequest);
     await page.click("#basins-run");
     await page.waitForFunction(() => ["done", "error"].includes(document.getElementById("basins-box").dataset.state), null, { timeout: 60000 });
     const said = await page.textContent("#basins-status");
@@ -411,6 +415,8 @@ try {
     const rows = await page.$$eval("table.attractors tbody tr", (trs) => trs.map((tr) => [...tr.children].map((c) => c.textContent)));
     const cells = rows.reduce((n, r) => n + Number(r.at(-2)), 0);
     expect(cells === 144, `the table's cells add up to ${cells}, not 144`);
+    page.off("request", onRequest);
+    expect(results.length === 1 && results[0].endsWith("&part=summary"), `the JSON results asked: ${results}`);
     // The slow and the fast motion of the docs, told apart by their section points.
     const slow = rows.find((r) => r[3].includes("(0.2688, 0.2004)"));
     const fast = rows.find((r) => r[3].includes("(0.8405, 6.044)"));

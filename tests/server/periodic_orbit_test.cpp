@@ -48,6 +48,32 @@ std::string continuation_job(httplib::Client& c) {
   return res->get_header_value("Location");
 }
 
+// The impact oscillator's period doubling followed in k from Ω = 6 (as
+// docs/scenes/impact-oscillator-pd-curve.json), with a regime map of (Ω, k) of count × count2
+// runs to draw beneath the curve.
+json curves_over_a_map(int count, int count2) {
+  json s = impact_oscillator_orbit();
+  s["model"]["pellets"][0]["Omega"] = 6.0;
+  s["periodic_orbit"]["guess"] = {{{"phi", 0.15}, {"dphi", 0.1}}};
+  s["periodic_orbit"]["continuation"] = {
+      {"parameter", "model.pellets[0].Omega"},
+      {"to", 5.0},
+      {"max_points", 30},
+      {"follow", "period_doubling"},
+      {"parameter2", {{"parameter", "model.limiters[0].k"}, {"from", 0.6}, {"to", 0.95}}}};
+  s["sweep"] = {
+      {"parameter", "model.pellets[0].Omega"},
+      {"from", 5.0},
+      {"to", 6.0},
+      {"count", count},
+      {"parameter2",
+       {{"parameter", "model.limiters[0].k"}, {"from", 0.6}, {"to", 0.95}, {"count", count2}}},
+      {"transient", 20},
+      {"record", 4},
+      {"continuation", "none"}};
+  return s;
+}
+
 class PeriodicOrbitApi : public SharedServerTest {};
 
 TEST_F(PeriodicOrbitApi, TheImpactOscillatorsPeriodOneMotionIsStable) {
@@ -197,6 +223,78 @@ TEST_F(PeriodicOrbitApi, AFollowedPeriodDoublingGivesItsCurve) {
   res = post(c, s);
   ASSERT_EQ(res->status, 400) << res->body;
   EXPECT_EQ(json::parse(res->body)["field"], "periodic_orbit.continuation.parameter2");
+}
+
+// The curves are drawn over the scene's regime map of the same two parameters, as `vibro orbit`
+// draws them (tests/app/cli_test.sh compares the bytes): the job runs the map after the branch,
+// its runs counted in the progress; a sweep of other parameters is not run.
+TEST_F(PeriodicOrbitApi, TheCurvesAreDrawnOverTheRegimeMapRunInTheJob) {
+  auto c = server->client();
+  auto res = post(c, curves_over_a_map(4, 3));
+  ASSERT_EQ(res->status, 202) << res->body;
+  EXPECT_EQ(json::parse(res->body)["progress"]["total"], 1000 + 12);
+  const std::string location = res->get_header_value("Location");
+  const json status = status_when_ended(c, location, 1200);
+  ASSERT_EQ(status["status"], "done") << status.dump();
+  EXPECT_EQ(status["progress"]["done"], 1012);
+  auto svg = c.Get((location + "/result?format=svg").c_str());
+  ASSERT_EQ(svg->status, 200) << svg->body;
+
+  json other = curves_over_a_map(4, 3);
+  other["sweep"]["parameter2"]["parameter"] = "model.pellets[0].F0";
+  other["sweep"]["parameter2"]["from"] = 0.2;
+  other["sweep"]["parameter2"]["to"] = 0.4;
+  res = post(c, other);
+  ASSERT_EQ(res->status, 202) << res->body;
+  EXPECT_EQ(json::parse(res->body)["progress"]["total"], 1000);
+  const std::string alone = res->get_header_value("Location");
+  ASSERT_EQ(status_when_ended(c, alone, 1200)["status"], "done");
+  auto bare = c.Get((alone + "/result?format=svg").c_str());
+  ASSERT_EQ(bare->status, 200) << bare->body;
+  // The map adds a cell per run (and its legend) to the same curves.
+  EXPECT_GT(svg->body.size(), bare->body.size() + 1000);
+}
+
+}  // namespace
+}  // namespace vibro::testing
+
+namespace vibro::testing {
+namespace {
+
+// A map beneath the curves past the server's limits is refused up front, naming the field, as a
+// sweep job is (server/sweep_limits.h).
+TEST(PeriodicOrbitJobs, AMapBeneathTheCurvesIsBoundedAsASweepIs) {
+  server::ServerConfig config;
+  config.limits.sweep_points = 100;  // 12 runs × (record + 1) = 60 points pass; 40 × 25 × 5 not
+  TestServer server(config);
+  auto c = server.client();
+  auto res = post(c, curves_over_a_map(40, 25));
+  ASSERT_EQ(res->status, 400) << res->body;
+  EXPECT_EQ(json::parse(res->body)["field"], "sweep.record");
+  EXPECT_EQ(post(c, curves_over_a_map(4, 3))->status, 202);
+}
+
+// The map beneath the curves is cancelled with its job, between its runs.
+TEST(PeriodicOrbitJobs, AMapBeneathTheCurvesIsCancelledWithItsJob) {
+  TestServer server;
+  auto c = server.client();
+  json s = curves_over_a_map(60, 60);  // 3600 × 204 periods, within the limit of 10^6
+  s["sweep"]["transient"] = 200;
+  auto res = post(c, s);
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  json status;
+  for (int k = 0; k < 1200; ++k) {  // until the map runs
+    status = json::parse(c.Get(location.c_str())->body);
+    const bool waits = status["status"] == "queued";
+    if (!waits && (status["progress"]["done"] > 1000 || status["status"] != "running")) break;
+    std::this_thread::sleep_for(std::chrono::milliseconds(50));
+  }
+  ASSERT_EQ(status["status"], "running") << status.dump();
+  ASSERT_EQ(c.Delete(location.c_str())->status, 200);
+  status = status_when_ended(c, location, 1200);
+  EXPECT_EQ(status["status"], "cancelled") << status.dump();
+  EXPECT_LT(status["progress"]["done"], 1000 + 60 * 60);
 }
 
 }  // namespace

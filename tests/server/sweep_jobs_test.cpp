@@ -355,5 +355,45 @@ TEST(SweepJobs, EveryValueOfASweepIsChecked) {
   EXPECT_NE(e["error"].get<std::string>().find("= 0.1"), std::string::npos) << e.dump();
 }
 
+// A basin map's summary (part=summary) is its attractors and stats without the points and runs,
+// whose size grows with the cells; another part, or a summary as CSV, is refused naming "part".
+TEST(SweepJobs, ABasinMapsSummaryHasItsAttractorsWithoutThePoints) {
+  TestServer server;
+  auto c = server.client();
+  json s = json::parse(std::string(*preset_json("impact-oscillator")));
+  s["model"]["pellets"][0]["Omega"] = 6.8;  // two period-1 motions coexist (docs/SWEEPS.md)
+  s["sweep"] = {{"parameter", "model.pellets[0].phi0"},
+                {"from", 0.01},
+                {"to", 1.6},
+                {"count", 4},
+                {"parameter2",
+                 {{"parameter", "model.pellets[0].dphi0"}, {"from", -8}, {"to", 8}, {"count", 4}}},
+                {"transient", 100},
+                {"record", 8},
+                {"classify", "attractor"}};
+  auto res = c.Post("/api/sweep", s.dump(), "application/json");
+  ASSERT_EQ(res->status, 202) << res->body;
+  const std::string location = res->get_header_value("Location");
+  ASSERT_EQ(wait_until_ended(c, location)["status"], "done");
+
+  const json whole = json::parse(c.Get((location + "/result?format=json").c_str())->body);
+  auto summary = c.Get((location + "/result?format=json&part=summary").c_str());
+  ASSERT_EQ(summary->status, 200) << summary->body;
+  EXPECT_EQ(summary->get_header_value("Content-Type"), "application/json");
+  json expected = whole;
+  expected.erase("points");
+  expected.erase("runs");
+  EXPECT_EQ(json::parse(summary->body), expected);
+  EXPECT_FALSE(expected["attractors"].empty());
+  EXPECT_EQ(json::parse(c.Get((location + "/result?format=json&part=all").c_str())->body), whole);
+
+  for (const char* query : {"?format=json&part=points", "?format=csv&part=summary",
+                            "?format=png&part=summary", "?part=attractors"}) {
+    auto bad = c.Get((location + "/result" + query).c_str());
+    ASSERT_EQ(bad->status, 400) << query;
+    EXPECT_EQ(json::parse(bad->body)["field"], "part") << query;
+  }
+}
+
 }  // namespace
 }  // namespace vibro::testing

@@ -100,7 +100,7 @@ export async function runBasins(scene, job, onProgress) {
   const at = await runJob("/api/sweep", scene, job, onProgress);
   if (!at) return null;
   const { image, response } = await jobImage(at);
-  const attractors = scene.sweep.classify ? (await jobJson(at)).attractors : null;
+  const attractors = scene.sweep.classify ? (await jobJson(at, "&part=summary")).attractors : null;
   return { image, axis: parameterAxis(response), attractors, cells: scene.sweep.count * scene.sweep.parameter2.count };
 }
 

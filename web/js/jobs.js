@@ -54,6 +54,8 @@ export async function jobImage(at, query = "") {
   return { image: await response.blob(), response };
 }
 
-export async function jobJson(at) {
-  return jsonOf(await fetch(`${at}/result?format=json`));
+// The result of a finished job as JSON; query "&part=summary" asks a sweep's without its points
+// and runs (docs/SERVER.md): its attractors and stats, whatever the number of cells.
+export async function jobJson(at, query = "") {
+  return jsonOf(await fetch(`${at}/result?format=json${query}`));
 }
