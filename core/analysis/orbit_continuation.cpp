@@ -624,12 +624,7 @@ bool Continuation::cross_grazing() {
   }
   const std::vector<BranchPoint> nearer = walk_back(across->first, across->second, way);
   branch_.points.insert(branch_.points.end(), nearer.rbegin(), nearer.rend());
-  here_ = std::move(across->first);
-  t_ = tangent(here_, way * along_parameter());
-  keep_clear();
-  sig_ = signature(here_, t_, map_.band());
-  branch_.points.push_back(branch_point(map_, here_));
-  ds_ = 1e-3;
+  restart_at(std::move(across->first));
   return true;
 }
 
