@@ -145,6 +145,9 @@ json bifurcations_json(const std::vector<Bifurcation>& bifurcations) {
     if (b.doubled_value)
       j["doubled"] = {{"value", finite_number(*b.doubled_value)},
                       {"state", states_json(b.doubled_state)}};
+    // A grazing says which side the branch came from.
+    if (b.approached_impacting)
+      j["approached_from"] = *b.approached_impacting ? "impacting" : "non_impacting";
     list.push_back(std::move(j));
   }
   return list;

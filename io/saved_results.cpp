@@ -210,6 +210,8 @@ std::variant<OrbitBranch, FieldError> read_orbit_branch(const json& j) {
       b.value = f.required_number("value");
       b.kind = bifurcation_named(f.string("kind", 32).value_or(""), field + ".kind");
       if (const json* state = f.value("state")) b.state = read_states(*state, field + ".state");
+      if (const std::optional<std::string> side = f.string("approached_from", 32))
+        b.approached_impacting = *side == "impacting";
       branch.bifurcations.push_back(std::move(b));
     }
     branch.reached = j.value("reached", false);

@@ -28,6 +28,8 @@ $vibro orbit --preset impact-oscillator -o docs/images/orbit-branch-impact-oscil
 # A period doubling followed in (Omega, k), over the regime map of the same two (docs/ORBITS.md).
 $vibro orbit docs/scenes/impact-oscillator-pd-curve.json -o docs/images/orbit-curves-impact-oscillator.png
 $vibro orbit docs/scenes/paper-period6.json -o docs/images/orbit-paper-period6.png
+# A branch that crosses a grazing from the non-impacting side (docs/ORBITS.md).
+$vibro orbit docs/scenes/stop-grazing-crossing.json -o docs/images/orbit-grazing-crossing.png
 # Bifurcation diagrams, regime and impact maps (docs/SWEEPS.md).
 $vibro sweep --preset impact-oscillator -o docs/images/bifurcation-impact-oscillator.png
 $vibro sweep --preset paper-bifurcation -o docs/images/bifurcation-paper.png

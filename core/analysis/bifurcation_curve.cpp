@@ -122,23 +122,10 @@ class Augmented {
         longest = times[k] - times[k - 1];
         middle = 0.5 * (times[k] + times[k - 1]);
       }
-    Model m = *at(p1);
-    for (int i = 0; i < m.size(); ++i) {
-      m.pellets[i].phi0 = x[2 * i];
-      m.pellets[i].dphi0 = x[2 * i + 1];
-    }
-    SimOptions o = options_;
-    o.t_end = middle;
-    o.check = false;
-    o.record.clear();
-    o.stops.clear();
-    const RunResult run = simulate(m, o);
-    if (run.stats.termination != Termination::completed) return x;
-    Vec y(x.size());
-    for (int i = 0; i < m.size(); ++i)
-      y.segment(2 * i, 2) << run.summary.final[i].phi, run.summary.final[i].dphi;
+    const std::optional<Vec> y = run_from(*at(p1), options_, x, middle);
+    if (!y) return x;
     phase_ += middle;
-    return y;
+    return *y;
   }
 
   // The test function's derivative from its values at −h, 0 and +h: central, but for a grazing

@@ -8,6 +8,7 @@
 #include <utility>
 
 #include "core/analysis/checked_run.h"
+#include "core/analysis/grazing_orbit.h"
 #include "core/model/parameter.h"
 
 namespace vibro {
@@ -107,22 +108,7 @@ class ScaledMap {
   Vec advance(const Vec& x, double p, double dt, std::vector<bool>& armed) const {
     armed = armed_;
     if (!(dt > 0.0)) return x;
-    Model m = at(p);
-    for (int i = 0; i < m.size(); ++i) {
-      m.pellets[i].phi0 = x[2 * i];
-      m.pellets[i].dphi0 = x[2 * i + 1];
-    }
-    SimOptions o = options_;
-    o.t_end = dt;
-    o.check = false;
-    o.record.clear();
-    o.stops.clear();
-    const RunResult run = simulate(m, o);
-    armed = run.summary.armed;
-    Vec y(size());
-    for (int i = 0; i < m.size(); ++i)
-      y.segment(2 * i, 2) << run.summary.final[i].phi, run.summary.final[i].dphi;
-    return y;
+    return run_from(at(p), options_, x, dt, &armed).value_or(x);
   }
 
   // Moves the section `dt` later; returns the point's state there.
@@ -295,13 +281,18 @@ double grazing_distance(const Model& model, const RunResult& run, const Vec& x) 
   return d;
 }
 
-BranchPoint branch_point(const ScaledMap& map, const Point& pt) {
+// Limiter impacts and collisions over one return of the map.
+int impacts_per_return(const Point& pt) {
   int impacts = 0;
   for (const Event& e : pt.map.run.events)
     impacts += e.kind == EventKind::limiter || e.kind == EventKind::collision;
+  return impacts;
+}
+
+BranchPoint branch_point(const ScaledMap& map, const Point& pt) {
   return {map.value(pt.v), map.section_state(pt.v), pt.multipliers,
           inside_unit_circle(pt.multipliers, map.band()),
-          static_cast<double>(impacts) / map.periods()};
+          static_cast<double>(impacts_per_return(pt)) / map.periods()};
 }
 
 // Whether the located point is what its kind says: a multiplier at −1 for a period doubling, a
@@ -376,9 +367,7 @@ void find_doubled(const ScaledMap& map, const Point& at, double past, double spa
 }
 
 // The limiter impact a branch's motion makes slowest, whose speed vanishes at a grazing.
-struct SlowImpact {
-  int pellet = -1, limiter = -1;
-  double side = 0.0;  // +1: the pellet strikes it moving up (the limiter above it)
+struct SlowImpact : GrazingImpact {
   double speed = INFINITY;
 };
 
@@ -386,38 +375,53 @@ SlowImpact slowest_impact(const RunResult& run) {
   SlowImpact s;
   for (const Event& e : run.events)
     if (e.kind == EventKind::limiter && std::abs(e.dphi_before[0]) < s.speed)
-      s = {e.pellets[0], e.limiter, e.dphi_before[0] > 0.0 ? 1.0 : -1.0,
+      s = {{e.pellets[0], e.limiter, e.dphi_before[0] > 0.0 ? 1.0 : -1.0},
            std::abs(e.dphi_before[0])};
   return s;
 }
 
-// The model without limiter l (none of whose limiters is mobile): the motion the pellet would
-// make if the limiter were not there, which a non-impacting motion is.
-Model without_limiter(Model m, int l) {
-  m.limiters.erase(m.limiters.begin() + l);
-  return m;
+// The turn of the motion that comes nearest to a limiter acting on its pellet, as the impact it
+// becomes where it reaches the limiter; none without a turn.
+GrazingImpact nearest_turn(const Model& model, const RunResult& run) {
+  GrazingImpact g;
+  double nearest = INFINITY;
+  for (const Event& e : run.events) {
+    if (e.kind != EventKind::reversal) continue;
+    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
+      if (!model.limiters[l].acts_on(e.pellets[0])) continue;
+      const double gap = wrap_angle(model.limiters[l].angle - e.phi);
+      if (std::abs(gap) >= nearest) continue;
+      nearest = std::abs(gap);
+      g = {e.pellets[0], l, gap > 0.0 ? 1.0 : -1.0};
+    }
+  }
+  return g;
 }
 
 // The free motion near x at the model m and how far its turn goes past the limiter (rad, > 0:
-// it would cross it; 0 at the grazing), or none where it is not found.
+// it would cross it; 0 at the grazing) at its turn `turn` s after the section, or none where it is
+// not found.
 struct FreeMotion {
   Vec x;
   double overshoot = 0.0;
+  double turn = 0.0;
 };
 std::optional<FreeMotion> free_motion(const Model& m, const SimOptions& options, int periods,
-                                      const Vec& x, const SlowImpact& slow, double angle) {
+                                      const Vec& x, const GrazingImpact& slow, double angle) {
   OrbitSpec spec;
   spec.periods = periods;
   spec.transient = 0;
   for (Eigen::Index k = 0; k + 1 < x.size(); k += 2) spec.guess.push_back({x[k], x[k + 1]});
   const PeriodicOrbit o = find_periodic_orbit(m, options, spec);
   if (!o.converged) return std::nullopt;
-  FreeMotion f{Vec(x.size()), -INFINITY};
+  FreeMotion f{Vec(x.size()), -INFINITY, 0.0};
   for (std::size_t i = 0; i < o.state.size(); ++i)
     f.x.segment(2 * i, 2) << o.state[i].phi, o.state[i].dphi;
-  for (const Event& e : o.events)
-    if (e.kind == EventKind::reversal && e.pellets[0] == slow.pellet)
-      f.overshoot = std::max(f.overshoot, slow.side * wrap_angle(e.phi - angle));
+  for (const Event& e : o.events) {
+    if (e.kind != EventKind::reversal || e.pellets[0] != slow.pellet) continue;
+    const double overshoot = slow.side * wrap_angle(e.phi - angle);
+    if (overshoot > f.overshoot) f.overshoot = overshoot, f.turn = e.t;
+  }
   if (!std::isfinite(f.overshoot)) return std::nullopt;
   return f;
 }
@@ -461,15 +465,26 @@ class Continuation {
   void keep_clear();
   bool cross_grazing();
   bool jump_grazing();
+  bool jump_from_impacting(const SlowImpact& slow);
+  bool jump_from_free();
+  std::optional<Point> impacting_at(const GrazingImpact& impact, double p, double time,
+                                    const Vec& before) const;
+  void walk_off_grazing(const GrazingImpact& impact, double grazing);
+  void report_grazing(double value, const Vec& x, bool impacting);
+  void restart_at(Point next);
+  // The way the branch goes in the parameter's own units (+1: to larger values).
+  double heading() const { return t_[n_] * span_ > 0.0 ? 1.0 : -1.0; }
   struct Grazing;
   std::optional<Grazing> grazing_across(const Step& next) const;
   struct Grazing {
     double value;
     Vec x, beyond;  // the grazing motion's state, and the free motion's on its far side
+    double turn;    // the time of the grazing motion's turn at the limiter, s after the section
   };
-  Grazing refine_grazing(const SlowImpact& slow, double angle, double pa, FreeMotion a, double pb,
-                         FreeMotion b) const;
-  std::optional<FreeMotion> free_at(const SlowImpact& slow, double angle, double p,
+  std::optional<Grazing> grazing_ahead(const GrazingImpact& impact, bool impacting) const;
+  Grazing refine_grazing(const GrazingImpact& slow, double angle, double pa, FreeMotion a,
+                         double pb, FreeMotion b) const;
+  std::optional<FreeMotion> free_at(const GrazingImpact& slow, double angle, double p,
                                     const Vec& x) const {
     return free_motion(without_limiter(map_.at(p), slow.limiter), map_.options(), map_.periods(), x,
                        slow, angle);
@@ -528,7 +543,10 @@ OrbitBranch Continuation::run() {
     // ahead, which the corrector only creeps toward. Jump to it instead where it is one.
     if (ds_ < 1e-3 && branch_.points.size() >= jump_tried_at_ + 5) {
       jump_tried_at_ = branch_.points.size();
-      if (jump_grazing()) continue;
+      if (jump_grazing()) {
+        if (branch_.reached) return branch_;
+        continue;
+      }
     }
     Step next = step_to(here_.v + ds_ * t_);
     if (!next.point.ok) {
@@ -589,8 +607,14 @@ bool Continuation::cross_grazing() {
     branch_.message = why.str() + ": no nearby motion continues it";
     return false;
   }
-  branch_.bifurcations.push_back(
-      {BifurcationKind::grazing, map_.value(here_.v), map_.section_state(here_.v), {}, {}});
+  const Model here = map_.at(map_.value(here_.v));
+  const bool impacting = slowest_impact(here_.map.run).speed * time_scale(here) <= 1e-3;
+  branch_.bifurcations.push_back({BifurcationKind::grazing,
+                                  map_.value(here_.v),
+                                  map_.section_state(here_.v),
+                                  {},
+                                  {},
+                                  impacting});
   const double way = t_[n_] > 0.0 ? 1.0 : -1.0;
   std::optional<std::pair<Point, double>> across = point_past_grazing(way);
   if (!across) {
@@ -600,19 +624,15 @@ bool Continuation::cross_grazing() {
   }
   const std::vector<BranchPoint> nearer = walk_back(across->first, across->second, way);
   branch_.points.insert(branch_.points.end(), nearer.rbegin(), nearer.rend());
-  here_ = std::move(across->first);
-  t_ = tangent(here_, way * along_parameter());
-  keep_clear();
-  sig_ = signature(here_, t_, map_.band());
-  branch_.points.push_back(branch_point(map_, here_));
-  ds_ = 1e-3;
+  restart_at(std::move(across->first));
   return true;
 }
 
 // The grazing between pa, whose free motion overshoots the limiter (a), and pb, whose does not
 // (b): Illinois regula falsi on the overshoot, a smooth function of the parameter.
-Continuation::Grazing Continuation::refine_grazing(const SlowImpact& slow, double angle, double pa,
-                                                   FreeMotion a, double pb, FreeMotion b) const {
+Continuation::Grazing Continuation::refine_grazing(const GrazingImpact& slow, double angle,
+                                                   double pa, FreeMotion a, double pb,
+                                                   FreeMotion b) const {
   double ha = a.overshoot, hb = b.overshoot;
   int last = 0;
   for (int k = 0; k < 60 && std::abs(pb - pa) > 1e-14 * std::abs(pa) && ha != 0.0; ++k) {
@@ -629,7 +649,8 @@ Continuation::Grazing Continuation::refine_grazing(const SlowImpact& slow, doubl
       last = 1;
     }
   }
-  return std::abs(ha) < std::abs(hb) ? Grazing{pa, a.x, b.x} : Grazing{pb, b.x, b.x};
+  return std::abs(ha) < std::abs(hb) ? Grazing{pa, a.x, b.x, a.turn}
+                                     : Grazing{pb, b.x, b.x, b.turn};
 }
 
 // The grazing between here and `next` where one of them has a limiter impact the other lacks,
@@ -651,52 +672,145 @@ std::optional<Continuation::Grazing> Continuation::grazing_across(const Step& ne
   return refine_grazing(slow, angle, pa, *a, pb, *b);
 }
 
+// The grazing of `impact` ahead of the branch: the free motion (the scene without that limiter) at
+// the branch's value and at values further on (1e-3 to 0.1 of the range, not past `to`) until the
+// overshoot of its turn past the limiter changes sign, located by refine_grazing. `impacting`: the
+// branch's motion has that impact (the free motion overshoots here). None where the sign does not
+// change.
+std::optional<Continuation::Grazing> Continuation::grazing_ahead(const GrazingImpact& impact,
+                                                                 bool impacting) const {
+  const double angle = map_.at(map_.value(here_.v)).limiters[impact.limiter].angle;
+  const double p0 = map_.value(here_.v);
+  const std::optional<FreeMotion> here = free_at(impact, angle, p0, map_.state(here_.v));
+  if (!here || (here->overshoot > 0.0) != impacting) return std::nullopt;
+  for (double d : {1e-3, 1e-2, 3e-2, 0.1}) {
+    double p = p0 + heading() * d * std::abs(span_);
+    if ((p - spec_.to) * heading() > 0.0) p = spec_.to;
+    const std::optional<FreeMotion> there = free_at(impact, angle, p, here->x);
+    if (!there || (there->overshoot > 0.0) == impacting) continue;
+    return impacting ? refine_grazing(impact, angle, p0, *here, p, *there)
+                     : refine_grazing(impact, angle, p, *there, p0, *here);
+  }
+  return std::nullopt;
+}
+
+// Steps shrunk to a crawl near a grazing, where the map has a square root that the corrector
+// only creeps toward (from the impacting side) or cannot step across (from the other): the
+// grazing is located on the free motion, reported, and the branch goes on a step past it (true);
+// false where this is no such grazing. Fixed limiters only.
+bool Continuation::jump_grazing() {
+  for (const Limiter& l : map_.at(map_.value(here_.v)).limiters)
+    if (l.mobile) return false;
+  const SlowImpact slow = slowest_impact(here_.map.run);
+  return slow.pellet >= 0 ? jump_from_impacting(slow) : jump_from_free();
+}
+
 // On the impacting side near a grazing: the impact's speed goes to zero like a square root of
 // the distance to it, and the corrector creeps. The grazing motion is the free motion (the one
-// the limiter does not touch) whose turn just reaches the limiter, smooth in the parameter: it is
-// located there, by regula falsi on its overshoot past the limiter, reported, and the branch goes
-// on from the free motion a step past it (true); false where this is no such grazing.
-bool Continuation::jump_grazing() {
-  const SlowImpact slow = slowest_impact(here_.map.run);
-  const Model plain = map_.at(map_.value(here_.v));
-  if (slow.pellet < 0) return false;
-  for (const Limiter& l : plain.limiters)
-    if (l.mobile) return false;
-  const double way = t_[n_] > 0.0 ? 1.0 : -1.0;
-  const double angle = plain.limiters[slow.limiter].angle;
-  double pa = map_.value(here_.v);
-  std::optional<FreeMotion> a = free_at(slow, angle, pa, map_.state(here_.v));
-  if (!a || a->overshoot <= 0.0) return false;
-  double pb = pa;
-  std::optional<FreeMotion> b;
-  for (double d : {1e-3, 1e-2, 3e-2, 0.1}) {
-    pb = pa + way * d * std::abs(span_);
-    if ((pb - spec_.to) * way > 0.0) pb = spec_.to;
-    b = free_at(slow, angle, pb, a->x);
-    if (b && b->overshoot < 0.0) break;
-    b.reset();
-  }
-  if (!b) return false;
-  const Grazing g = refine_grazing(slow, angle, pa, *a, pb, *b);
-  const double pg = g.value;
-  const Vec xg = g.x;
-  // The branch goes on from the free motion a step past the grazing, where the limiter is back.
-  const double pn = pg + way * std::min(1e-3 * std::abs(span_), std::abs(spec_.to - pg));
-  const std::optional<FreeMotion> n = free_at(slow, angle, pn, g.beyond);
+// the limiter does not touch) whose turn just reaches the limiter, smooth in the parameter: the
+// branch goes on from the free motion a step past it, where the limiter is back.
+bool Continuation::jump_from_impacting(const SlowImpact& slow) {
+  const std::optional<Grazing> g = grazing_ahead(slow, true);
+  if (!g) return false;
+  const double angle = map_.at(map_.value(here_.v)).limiters[slow.limiter].angle;
+  const double pn =
+      g->value + heading() * std::min(1e-3 * std::abs(span_), std::abs(spec_.to - g->value));
+  const std::optional<FreeMotion> n = free_at(slow, angle, pn, g->beyond);
   if (!n || n->overshoot >= 0.0) return false;
   Point next = map_.evaluate(map_.scaled(n->x, pn));
   if (!next.ok || slowest_impact(next.map.run).limiter == slow.limiter) return false;
+  report_grazing(g->value, g->x, true);
+  restart_at(std::move(next));
+  return true;
+}
+
+// On the non-impacting side near a grazing: the turn of the branch's motion nearest a limiter
+// reaches it. Past it the motion strikes the limiter, at a speed growing linearly from zero, which
+// the corrector on the map cannot step onto (the square root): the impacting motion a step past
+// the grazing is solved on the impact instead (core/analysis/grazing_orbit.h), from the grazing
+// motion, and the branch goes on from it.
+bool Continuation::jump_from_free() {
+  const GrazingImpact turn = nearest_turn(map_.at(map_.value(here_.v)), here_.map.run);
+  if (turn.pellet < 0) return false;
+  const std::optional<Grazing> g = grazing_ahead(turn, false);
+  if (!g) return false;
+  const double pn =
+      g->value + heading() * std::min(1e-3 * std::abs(span_), std::abs(spec_.to - g->value));
+  const std::optional<Vec> before =
+      run_from(without_limiter(map_.at(pn), turn.limiter), map_.options(), g->x, g->turn);
+  if (!before) return false;
+  std::optional<Point> next = impacting_at(turn, pn, g->turn, *before);
+  if (!next) return false;
+  report_grazing(g->value, g->x, false);
+  restart_at(std::move(*next));
+  walk_off_grazing(turn, g->value);
+  return true;
+}
+
+// The impacting motion at value p, solved on the impact from a guess of its time and the state
+// before it, and checked on the map: a motion the map returns (to tol_) whose slowest impact is on
+// the limiter. None where it is not that.
+std::optional<Point> Continuation::impacting_at(const GrazingImpact& impact, double p, double time,
+                                                const Vec& before) const {
+  const std::optional<ImpactingOrbit> o =
+      impacting_orbit(map_.at(p), map_.options(), map_.periods(), impact, time, before, tol_);
+  if (!o) return std::nullopt;
+  Point pt = map_.evaluate(map_.scaled(o->x, p));
+  if (!pt.ok || pt.norm > tol_ || slowest_impact(pt.map.run).limiter != impact.limiter)
+    return std::nullopt;
+  return pt;
+}
+
+// Just past a grazing from the non-impacting side the map's square root is still close: the
+// corrector's steps would crawl. The branch walks away from the grazing on the impact instead, at
+// distances doubling from 2e-3 to 0.032 of the range (not past `to`), each motion solved from the
+// last one's impact and taken as a step of the branch, its bifurcations noted; it stops early
+// where a motion is not found, and the corrector goes on from the last.
+void Continuation::walk_off_grazing(const GrazingImpact& impact, double grazing) {
+  const double way = heading();
+  for (double d = 2e-3; d < 0.05; d *= 2.0) {
+    if (cancelled() || static_cast<int>(branch_.points.size()) >= spec_.max_points) return;
+    const double p = grazing + way * std::min(d * std::abs(span_), std::abs(spec_.to - grazing));
+    double time = 0.0;
+    for (const Event& e : here_.map.run.events)
+      if (e.kind == EventKind::limiter && e.limiter == impact.limiter) time = e.t;
+    const std::optional<Vec> before =
+        run_from(without_limiter(map_.at(map_.value(here_.v)), impact.limiter), map_.options(),
+                 map_.state(here_.v), time);
+    if (!before) return;
+    const std::optional<Point> at = impacting_at(impact, p, time, *before);
+    if (!at) return;
+    Step next{*at, tangent(*at, t_), {}};
+    next.sig = signature(next.point, next.t, map_.band());
+    note_bifurcations(next);
+    if (past_to(next.point)) {
+      finish_at_to(next.point);
+      return;
+    }
+    move_to(std::move(next));
+  }
+}
+
+// Records a grazing at `value`, where the motion's state on the section is x, approached from the
+// side where the motion has the impact (`impacting`) or not, and draws the grazing motion.
+void Continuation::report_grazing(double value, const Vec& x, bool impacting) {
+  const Vec v = map_.scaled(x, value);
   branch_.bifurcations.push_back(
-      {BifurcationKind::grazing, pg, map_.section_state(map_.scaled(xg, pg)), {}, {}});
-  const Point at = map_.evaluate(map_.scaled(xg, pg));
+      {BifurcationKind::grazing, value, map_.section_state(v), {}, {}, impacting});
+  const Point at = map_.evaluate(v);
   if (at.ok) branch_.points.push_back(branch_point(map_, at));
+}
+
+// Goes on from `next`, a motion just past a grazing, along the parameter the way the branch went,
+// with a small step.
+void Continuation::restart_at(Point next) {
+  const double way = t_[n_] > 0.0 ? 1.0 : -1.0;
   here_ = std::move(next);
   t_ = tangent(here_, way * along_parameter());
   keep_clear();
   sig_ = signature(here_, t_, map_.band());
   branch_.points.push_back(branch_point(map_, here_));
   ds_ = 1e-3;
-  return true;
 }
 
 // Past the grazing, near it: a motion at a parameter step of 1e-4 to 0.1 (scaled) with an impact
@@ -751,7 +865,9 @@ void Continuation::note_bifurcations(const Step& next) {
     if (grazing && std::abs(value - *grazing) <= 1e-6 * std::abs(span_)) continue;
     if (!confirmed(kind, at)) continue;
     if (kind == BifurcationKind::grazing) grazing = value;
-    Bifurcation b{kind, value, std::move(state), {}, {}};
+    Bifurcation b{kind, value, std::move(state), {}, {}, {}};
+    if (kind == BifurcationKind::grazing)
+      b.approached_impacting = impacts_per_return(here_) > impacts_per_return(next.point);
     if (kind == BifurcationKind::period_doubling)
       find_doubled(map_, at,
                    (inside_unit_circle(here_.multipliers, map_.band()) ? 1.0 : -1.0) *

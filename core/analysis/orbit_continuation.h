@@ -49,6 +49,9 @@ struct Bifurcation {
   // Empty when it was not found.
   std::optional<double> doubled_value;
   std::vector<PhasePoint> doubled_state;
+  // A grazing: whether the branch came to it from the side where its motion has the impact that
+  // vanishes there (true) or from the side without it (false).
+  std::optional<bool> approached_impacting;
 };
 
 struct OrbitBranch {

@@ -292,6 +292,21 @@ bool inside_unit_circle(const std::vector<std::complex<double>>& multipliers, do
                      [band](auto m) { return std::abs(m) < 1.0 - band; });
 }
 
+std::optional<Vec> run_from(const Model& m, const SimOptions& options, const Vec& x, double dt,
+                            std::vector<bool>* armed) {
+  if (armed) *armed = armed_at_start(m);
+  if (!(dt > 0.0)) return x;
+  SimOptions o = options;
+  o.t_end = dt;
+  o.check = false;
+  o.record.clear();
+  o.stops.clear();
+  const RunResult run = simulate(started_at(m, x), o);
+  if (armed) *armed = run.summary.armed;
+  if (run.stats.termination != Termination::completed) return std::nullopt;
+  return final_state(run);
+}
+
 MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int periods,
                           const Vec& x) {
   const Deadline deadline = Deadline::in_ms(options.deadline_ms);

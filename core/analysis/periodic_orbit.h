@@ -49,6 +49,11 @@ Model armed_as(const Model& model, const std::vector<bool>& armed);
 // The limiters armed as the model starts (a fixed one always).
 std::vector<bool> armed_at_start(const Model& model);
 
+// The state (phi, dphi per pellet) dt after x in the model m run from its t = 0 (no check), with
+// the limiters armed then in `armed` when given; none where the run does not reach its end.
+std::optional<Vec> run_from(const Model& m, const SimOptions& options, const Vec& x, double dt,
+                            std::vector<bool>* armed = nullptr);
+
 // The stroboscopic map over `periods` forcing periods from x (phi, dphi per pellet) with the
 // limiters armed as the model starts, and its Jacobian (unset, with the reason, where the path
 // holds what it does not differentiate). The armed set is fixed on the section: a run that ends

@@ -100,6 +100,8 @@ TEST(SavedResults, ABranchReadsBackWithItsBifurcations) {
         {5.0 + 0.1 * k, {{0.25, -1.0 / 3.0}}, {{0.5, 0.25}, {-1.25, 0.0}}, k != 1, 2.0});
   sent.branch.bifurcations.push_back(
       {BifurcationKind::period_doubling, 5.15, {{0.25, -0.5}}, std::nullopt, {}});
+  sent.branch.bifurcations.push_back(
+      {BifurcationKind::grazing, 5.2, {{0.3, 0.0}}, std::nullopt, {}, false});
   sent.branch.message = "a fold ahead";
   const auto read = read_orbit_branch(json::parse(orbit_result_json(sent).dump()));
   ASSERT_TRUE(std::holds_alternative<OrbitBranch>(read)) << std::get<FieldError>(read).message;
@@ -109,8 +111,10 @@ TEST(SavedResults, ABranchReadsBackWithItsBifurcations) {
   EXPECT_FALSE(back.points[1].stable);
   EXPECT_EQ(back.points[2].state[0].dphi, -1.0 / 3.0);
   EXPECT_EQ(back.points[0].multipliers[1], std::complex<double>(-1.25, 0.0));
-  ASSERT_EQ(back.bifurcations.size(), 1u);
+  ASSERT_EQ(back.bifurcations.size(), 2u);
   EXPECT_EQ(back.bifurcations[0].kind, BifurcationKind::period_doubling);
+  EXPECT_EQ(back.bifurcations[0].approached_impacting, std::nullopt);
+  EXPECT_EQ(back.bifurcations[1].approached_impacting, false);  // a grazing says its side
   EXPECT_EQ(back.message, "a fold ahead");
   json wrong = orbit_result_json(sent);
   wrong["bifurcations"][0]["kind"] = "cusp";
