@@ -80,7 +80,9 @@ TEST(Basins, EachCellsAttractorIsThatOfAPlainRunFromIt) {
   for (std::size_t k = 0; k < r.runs.size(); k += 5) {
     const SweepRun& run = r.runs[k];
     if (run.attractor < 0) continue;
-    const auto [phi, dphi] = plain_run_end(spec, run.value, run.value2);
+    // Named copies, not a structured binding: clang 14 (the sanitizer build) cannot capture one.
+    const std::pair<double, double> end = plain_run_end(spec, run.value, run.value2);
+    const double phi = end.first, dphi = end.second;
     // The plain run's last state is a state of the cell's attractor, and of no other one.
     auto distance = [&](const Attractor& a) {
       double d = 1e300;
