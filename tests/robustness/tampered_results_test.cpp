@@ -9,6 +9,7 @@
 #include <algorithm>
 #include <cmath>
 #include <functional>
+#include <iostream>
 #include <nlohmann/json.hpp>
 #include <string>
 #include <vector>
@@ -137,36 +138,48 @@ json saved_sweep(const Scene& scene, const json& scene_json) {
   return sweep_result_json(*scene.sweep, result, scene_json);
 }
 
-// Counts what happened to the variants of one document.
+// Counts what happened to the variants of one document, checking each outcome on the way.
 struct Tally {
   long documents = 0, refused = 0, drawn = 0, not_drawn = 0;
+
+  // A read's outcome: true (and counted) when it was refused, which must name a field.
+  template <class Read>
+  bool refuses(const Read& read, const std::string& what) {
+    ++documents;
+    const auto* e = std::get_if<FieldError>(&read);
+    if (!e) return false;
+    EXPECT_FALSE(e->field.empty()) << what;
+    ++refused;
+    return true;
+  }
+  // A drawing: an image with bytes, or an error naming a field.
+  void add(const RenderResult& r, const std::string& what) {
+    if (r.ok()) {
+      EXPECT_FALSE(r.bytes.empty()) << what;
+      ++drawn;
+    } else {
+      EXPECT_FALSE(r.error->field.empty()) << what;
+      ++not_drawn;
+    }
+  }
+  ~Tally() {
+    std::cout << "[ tampered ] " << documents << " documents: " << refused << " refused, " << drawn
+              << " drawn, " << not_drawn << " not drawn\n";
+  }
 };
 
 // Reads the variant as `vibro plot` does and draws it as every plot of `views`.
 void plot_sweep(const Scene& scene, const json& doc, const std::string& what,
                 const std::vector<SweepView>& views, Tally& tally) {
-  ++tally.documents;
   const auto read = read_sweep_result(doc);
-  if (const auto* e = std::get_if<FieldError>(&read)) {
-    EXPECT_FALSE(e->field.empty()) << what;
-    ++tally.refused;
-    return;
-  }
-  if (tally.documents % kDrawEvery != 0) return;
+  if (tally.refuses(read, what) || tally.documents % kDrawEvery != 0) return;
   for (SweepView view : views) {
     if (view == SweepView::basins && !std::get<SweepResult>(read).classified) continue;
     FigureSpec figure = scene.figure;
     figure.plots = {SweepPlot{view}};
-    const RenderResult r =
-        render_figure(figure, scene.model, RunResult{}, ImageFormat::png,
-                      {nullptr, SweepData{*scene.sweep, std::get<SweepResult>(read)}});
-    if (r.ok()) {
-      EXPECT_FALSE(r.bytes.empty()) << what;
-      ++tally.drawn;
-    } else {
-      EXPECT_FALSE(r.error->field.empty()) << what;
-      ++tally.not_drawn;
-    }
+    tally.add(render_figure(figure, scene.model, RunResult{}, ImageFormat::png,
+                            {nullptr, SweepData{*scene.sweep, std::get<SweepResult>(read)}}),
+              what);
   }
 }
 
@@ -181,8 +194,6 @@ void tamper_with_sweep(const json& scene_json, const std::vector<SweepView>& vie
   };
   each_variant(without_scene, plot);
   each_array_change(without_scene, plot);
-  std::cout << "[ tampered ] " << tally.documents << " documents: " << tally.refused << " refused, "
-            << tally.drawn << " drawn, " << tally.not_drawn << " not drawn\n";
 }
 
 TEST(TamperedResults, ABasinSweepIsRefusedOrDrawn) {
@@ -221,31 +232,16 @@ TEST(TamperedResults, AContinuedBranchIsRefusedOrDrawn) {
   const ContinuationSpec& continuation = *scene.periodic_orbit->continuation;
   Tally tally;
   const auto plot = [&](const json& doc, const std::string& what) {
-    ++tally.documents;
     const auto read = read_orbit_branch(doc);
-    if (const auto* e = std::get_if<FieldError>(&read)) {
-      EXPECT_FALSE(e->field.empty()) << what;
-      ++tally.refused;
-      return;
-    }
+    if (tally.refuses(read, what)) return;
     const OrbitBranch& branch = std::get<OrbitBranch>(read);
     const OrbitFigure figure{&branch, &continuation};
     if (!draws_branch(figure)) return;
-    const RenderResult r =
-        render_branch_figure(scene.figure, scene.model, figure, ImageFormat::png);
-    if (r.ok()) {
-      EXPECT_FALSE(r.bytes.empty()) << what;
-      ++tally.drawn;
-    } else {
-      EXPECT_FALSE(r.error->field.empty()) << what;
-      ++tally.not_drawn;
-    }
+    tally.add(render_branch_figure(scene.figure, scene.model, figure, ImageFormat::png), what);
   };
   const json saved = saved_branch();
   each_variant(saved, plot);
   each_array_change(saved, plot);
-  std::cout << "[ tampered ] " << tally.documents << " documents: " << tally.refused << " refused, "
-            << tally.drawn << " drawn, " << tally.not_drawn << " not drawn\n";
 }
 
 }  // namespace
