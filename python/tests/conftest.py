@@ -5,8 +5,10 @@ import json
 import os
 import pathlib
 import re
+import signal
 import subprocess
 import sys
+import time
 
 import pytest
 
@@ -19,6 +21,22 @@ import vibro  # noqa: E402
 
 # Tests that wait for work to end bound it generously: a hang fails instead of stalling CI.
 HANG = 300
+
+
+def interrupt(code, after):
+    """Runs `code` in a child Python (argv[1]: the package's folder) and sends it SIGINT `after`
+    seconds past the first line it prints: its output and exit code."""
+    child = subprocess.Popen(
+        [sys.executable, "-c", code, str(BUILD / "python")], stdout=subprocess.PIPE, text=True
+    )
+    try:
+        assert child.stdout.readline().startswith("started")
+        time.sleep(after)
+        child.send_signal(signal.SIGINT)
+        out, _ = child.communicate(timeout=HANG)
+    finally:
+        child.kill()
+    return out, child.returncode
 
 
 def pytest_report_header(config):

@@ -5,17 +5,13 @@ import csv
 import io
 import json
 import math
-import signal
-import subprocess
-import sys
 import textwrap
-import time
 
 import numpy as np
 import pytest
 
 import vibro
-from conftest import BUILD, HANG, run_cli, without_wall_clock
+from conftest import interrupt, run_cli, without_wall_clock
 
 PRESETS = [p["name"] for p in vibro.presets()]
 
@@ -156,17 +152,6 @@ CTRL_C = textwrap.dedent(
 
 
 def test_ctrl_c_stops_a_long_run():
-    child = subprocess.Popen(
-        [sys.executable, "-c", CTRL_C, str(BUILD / "python")],
-        stdout=subprocess.PIPE,
-        text=True,
-    )
-    try:
-        assert child.stdout.readline().startswith("started")
-        time.sleep(0.5)
-        child.send_signal(signal.SIGINT)
-        out, _ = child.communicate(timeout=HANG)
-    finally:
-        child.kill()
+    out, returncode = interrupt(CTRL_C, after=0.5)
     assert out.startswith("interrupted"), out
-    assert child.returncode == 0
+    assert returncode == 0

@@ -5,10 +5,6 @@ import csv
 import io
 import json
 import math
-import os
-import signal
-import subprocess
-import sys
 import textwrap
 import threading
 import time
@@ -17,7 +13,7 @@ import numpy as np
 import pytest
 
 import vibro
-from conftest import BUILD, HANG, run_cli
+from conftest import HANG, interrupt, run_cli
 from test_render import same_figure
 
 
@@ -152,20 +148,9 @@ CTRL_C = textwrap.dedent(
 
 
 def test_ctrl_c_cancels_cleanly():
-    child = subprocess.Popen(
-        [sys.executable, "-c", CTRL_C, str(BUILD / "python")],
-        stdout=subprocess.PIPE,
-        text=True,
-    )
-    try:
-        assert child.stdout.readline().startswith("started")
-        time.sleep(0.3)
-        child.send_signal(signal.SIGINT)
-        out, _ = child.communicate(timeout=HANG)
-    finally:
-        child.kill()
+    out, returncode = interrupt(CTRL_C, after=0.3)
     assert out.startswith("interrupted"), out
-    assert child.returncode == 0
+    assert returncode == 0
 
 
 def test_basins_give_each_run_its_attractor(scene_file, tmp_path):
