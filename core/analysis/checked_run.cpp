@@ -38,7 +38,10 @@ RunResult simulate(const Model& model, const SimOptions& options) {
     return run;
   }
   const double deadline_ms = options.deadline_ms - run.stats.wall_ms;  // one deadline for both
-  const RunResult checked = run_shadow(model, options, deadline_ms);
+  // A run that ended where its section settled is checked over the time it ran.
+  SimOptions shadow_of = options;
+  if (run.settled) shadow_of.t_end = run.stats.t_reached;
+  const RunResult checked = run_shadow(model, shadow_of, deadline_ms);
   apply_check(model, checked, run, deadline_ms - checked.stats.wall_ms);
   return run;
 }

@@ -5,6 +5,7 @@
 #include <cmath>
 #include <mutex>
 #include <random>
+#include <span>
 #include <thread>
 #include <tuple>
 
@@ -12,6 +13,7 @@
 #include "core/analysis/checked_run.h"
 #include "core/model/parameter.h"
 #include "core/run/deadline.h"
+#include "core/run/section_period.h"
 
 namespace vibro {
 namespace {
@@ -115,39 +117,21 @@ std::vector<double> seeded_speeds(std::uint64_t seed, int start, int pellets) {
   return f;
 }
 
-// The smallest period p of the section over the record (points per pellet at k = 0..K), or 0.
-int section_period(const std::vector<StateAt>& stops, double speed_scale) {
-  const int K = static_cast<int>(stops.size()) - 1;
-  if (K < 2) return 0;
-  const int n = static_cast<int>(stops.front().pellets.size());
-  std::vector<double> tol_phi(n), tol_dphi(n);
-  for (int i = 0; i < n; ++i) {
-    double lo = 1e300, hi = -1e300, vlo = 1e300, vhi = -1e300;
-    for (const StateAt& s : stops) {
-      const double w = wrap_angle(s.pellets[i].phi);
-      lo = std::min(lo, w);
-      hi = std::max(hi, w);
-      vlo = std::min(vlo, s.pellets[i].dphi);
-      vhi = std::max(vhi, s.pellets[i].dphi);
-    }
-    tol_phi[i] = 1e-5 * (1.0 + (hi - lo));
-    tol_dphi[i] = 1e-5 * (speed_scale + (vhi - vlo));
-  }
-  for (int p = 1; 2 * p <= K; ++p) {
-    bool repeats = true;
-    for (int k = 0; repeats && k + p <= K; ++k)
-      for (int i = 0; repeats && i < n; ++i) {
-        const FinalState& a = stops[k].pellets[i];
-        const FinalState& b = stops[k + p].pellets[i];
-        repeats = std::abs(std::remainder(b.phi - a.phi, kTwoPi)) <= tol_phi[i] &&
-                  std::abs(b.dphi - a.dphi) <= tol_dphi[i];
-      }
-    if (repeats) return p;
-  }
-  return 0;
-}
-
 bool held(const FinalState& s) { return s.state != PelletState::sliding; }
+
+// The fewest periods a run that classifies attractors lasts before it may end where its section
+// has settled: a start close to an unstable motion's stable set lingers near it for some periods
+// before it leaves, and 20 periods of its record's test leave few such starts taken for settled.
+int settle_min_periods(const SweepSpec& spec) { return std::max(spec.record, 20); }
+
+// The first stroboscopic stop of a run, in periods: the record's start, or for a run that may end
+// once settled (classify attractor, no Lyapunov exponent, which needs the whole record) the
+// first stop of the earliest record it may end with.
+int first_stop(const SweepSpec& spec) {
+  if (!spec.classify_attractor || spec.lyapunov || spec.section != SectionKind::stroboscopic)
+    return spec.transient;
+  return std::min(spec.transient, settle_min_periods(spec) - spec.record);
+}
 
 // The options of one run: the transient and the record, events kept from the record's start, the
 // stroboscopic stops where the section asks for them.
@@ -156,35 +140,46 @@ SimOptions sweep_run_options(const SimOptions& options, const SweepSpec& spec, d
   o.t_end = (spec.transient + spec.record) * T;
   o.record.clear();
   o.stops.clear();
-  o.keep_events_from = spec.transient * T;
+  const int first = first_stop(spec);
+  o.keep_events_from = first * T;
   o.lyapunov = spec.lyapunov;
   if (spec.section == SectionKind::stroboscopic)
-    for (int k = spec.transient; k <= spec.transient + spec.record; ++k) o.stops.push_back(k * T);
+    for (int k = first; k <= spec.transient + spec.record; ++k) o.stops.push_back(k * T);
+  if (first < spec.transient) o.settle_window = spec.record + 1;
   return o;
 }
 
 // The forcing's phase of time t, rad in [0, 2π).
 double phase_of(double t, double T) { return kTwoPi * (t / T - std::floor(t / T)); }
 
+// The stops of the run's record: the last record + 1 of a run that ended where it settled, else
+// those from the transient's end on.
+std::span<const StateAt> record_stops(const RunResult& r, const SweepSpec& spec) {
+  const std::span<const StateAt> all(r.stops);
+  if (r.settled) return all.last(std::min<std::size_t>(all.size(), spec.record + 1));
+  return all.subspan(std::min<std::size_t>(all.size(), spec.transient - first_stop(spec)));
+}
+
 // The stroboscopic section's points, whether a pellet was held at one, and the period they repeat.
-void add_stroboscopic_points(const RunResult& r, int pellets, double T, double speed,
-                             SweepRun& run) {
-  run.points.reserve(r.stops.size() * pellets);
-  for (const StateAt& s : r.stops)
+void add_stroboscopic_points(const RunResult& r, std::span<const StateAt> stops, int pellets,
+                             double T, double speed, SweepRun& run) {
+  run.points.reserve(stops.size() * pellets);
+  for (const StateAt& s : stops)
     for (int i = 0; i < pellets; ++i) {
       run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase_of(s.t, T), -1,
                             s.t <= r.stats.trusted_until});
       run.sticks = run.sticks || held(s.pellets[i]);
     }
-  run.period = section_period(r.stops, speed);
+  run.period = section_period(stops, speed);
 }
 
 // The recorded events: impacts counted per period, sticks noted, limiter impacts as the impact
 // section's points.
-void add_recorded_events(const RunResult& r, const SweepSpec& spec, double T, SweepRun& run) {
+void add_recorded_events(const RunResult& r, const SweepSpec& spec, double T, double from,
+                         SweepRun& run) {
   int impacts = 0;
   for (const Event& e : r.events) {
-    if (e.t < spec.transient * T) continue;
+    if (e.t < from) continue;
     if (e.kind == EventKind::limiter || e.kind == EventKind::collision ||
         e.kind == EventKind::chatter)
       ++impacts;
@@ -220,9 +215,11 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
   }
   const RunResult r = simulate(m, sweep_run_options(options, spec, T));
   SweepRun run;
+  const std::span<const StateAt> record = record_stops(r, spec);
   if (spec.section == SectionKind::stroboscopic)
-    add_stroboscopic_points(r, m.size(), T, speed_scale(m), run);
-  add_recorded_events(r, spec, T, run);
+    add_stroboscopic_points(r, record, m.size(), T, speed_scale(m), run);
+  // A settled run's record starts at its window's first stop.
+  add_recorded_events(r, spec, T, r.settled ? record.front().t : spec.transient * T, run);
   // A vector's growth leaves up to half of it spare: a sweep keeps exactly its points.
   run.points.shrink_to_fit();
   add_outcome(r, run);

@@ -57,6 +57,7 @@ struct EndView {
   const std::vector<Body>& bodies;
   const MotionInterval* interval = nullptr;  // the last one opened, if any
   bool stopped = false;                      // a budget or a failure ended it, before t_end
+  bool ended = false;                        // an observer ended it, before t_end (ends_run)
   bool at_rest_for_good = false;             // the last interval ran to the end at rest
 };
 
@@ -79,6 +80,9 @@ class RunObserver {
   // The state at t is settled with these bodies: the start, a step's end without an event, after
   // an instant, and a rest to the end.
   virtual void on_settled(double /*t*/, const Vec& /*y*/, const std::vector<Body>& /*bodies*/) {}
+  // Whether the observer has what the run is for, so that the run ends at the state it has just
+  // been told of (on_settled), before t_end: asked after each settled state.
+  virtual bool ends_run() const { return false; }
   // The run ended: the observer hands what it kept to the result (whose stats the driver filled).
   virtual void on_end(const EndView& /*end*/, RunResult& /*result*/) {}
 

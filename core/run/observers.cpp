@@ -2,7 +2,9 @@
 
 #include <algorithm>
 #include <cmath>
+#include <span>
 
+#include "core/run/section_period.h"
 #include "core/run/summary.h"
 
 namespace vibro {
@@ -67,11 +69,19 @@ double SectionStops::landing() const {
 }
 
 void SectionStops::on_settled(double t, const Vec& y, const std::vector<Body>& bodies) {
+  const std::size_t before = kept_.size();
   for (; next_ < times_.size() && times_[next_] <= t; ++next_)
     kept_.push_back({times_[next_], final_states(model_, bodies, y)});
+  if (window_ == 0 || kept_.size() == before || kept_.size() < window_) return;
+  const std::span<const StateAt> last(kept_.end() - static_cast<std::ptrdiff_t>(window_),
+                                      kept_.end());
+  settled_ = section_settled(last, speed_scale(model_));
 }
 
-void SectionStops::on_end(const EndView&, RunResult& result) { result.stops = std::move(kept_); }
+void SectionStops::on_end(const EndView& end, RunResult& result) {
+  result.stops = std::move(kept_);
+  result.settled = settled_ && end.ended;
+}
 
 // A segment opens at each instant with the state that reached it; the instant's outcome and the
 // interval's bodies complete it, and the next instant closes it. Segments that end before `from`
@@ -156,7 +166,8 @@ StandardOutputs::StandardOutputs(const Model& model, const SimOptions& options)
       energy_(model),
       recording_(model, options.record, options.record_until, options.max_samples) {
   list_ = {&events_, &energy_, &recording_};
-  if (!options.stops.empty()) list_.push_back(&stops_.emplace(model, options.stops));
+  if (!options.stops.empty())
+    list_.push_back(&stops_.emplace(model, options.stops, options.settle_window));
   if (options.keep_path)
     list_.push_back(&path_.emplace(options.t_end, options.keep_events_from, options.path_limit));
 }

@@ -1,6 +1,7 @@
 // The outputs of a run, each an observer the caller attaches to the driver (core/run/observer.h).
 #pragma once
 
+#include <algorithm>
 #include <cstddef>
 #include <optional>
 #include <vector>
@@ -35,20 +36,25 @@ class Recording : public RunObserver {
 };
 
 // The state at given times (RunResult::stops): a stroboscopic section whose times steps land on.
+// With a settle window (SimOptions::settle_window) it ends the run at the first stop where the
+// last `window` stops have settled (section_settled, core/run/section_period.h).
 class SectionStops : public RunObserver {
  public:
   PerStep per_step() const override { return per_step_of<SectionStops>(); }
-  explicit SectionStops(const Model& model, std::vector<double> times)
-      : model_(model), times_(std::move(times)) {}
+  SectionStops(const Model& model, std::vector<double> times, int settle_window = 0)
+      : model_(model), times_(std::move(times)), window_(std::max(settle_window, 0)) {}
 
   double landing() const override;
   void on_settled(double t, const Vec& y, const std::vector<Body>& bodies) override;
+  bool ends_run() const override { return settled_; }
   void on_end(const EndView& end, RunResult& result) override;
 
  private:
   const Model& model_;
   std::vector<double> times_;  // increasing
   std::size_t next_ = 0;       // into times_
+  std::size_t window_;         // 0: no settling
+  bool settled_ = false;
   std::vector<StateAt> kept_;
 };
 

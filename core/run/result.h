@@ -139,7 +139,10 @@ struct LyapunovSpectrum {
 
 struct RunResult {
   std::vector<Event> events;
-  std::vector<StateAt> stops;       // those reached, in order
+  std::vector<StateAt> stops;  // those reached, in order
+  // SimOptions::settle_window: the run ended at its last stop, where its section had settled
+  // (repeated with a period over the window), before t_end.
+  bool settled = false;
   std::vector<PelletTrack> tracks;  // only the pellets whose branches were asked for
   Summary summary;
   Stats stats;

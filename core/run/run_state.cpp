@@ -78,7 +78,10 @@ bool RunState::take_step(double& t) {
 }
 
 void RunState::settled(double t, const std::vector<Body>& bodies) {
-  for (RunObserver* o : on_settled_) o->on_settled(t, y_, bodies);
+  for (RunObserver* o : on_settled_) {
+    o->on_settled(t, y_, bodies);
+    ended_ = ended_ || o->ends_run();
+  }
 }
 
 void RunState::note_instant(double t, const InstantOutcome& out) {

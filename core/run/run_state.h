@@ -59,6 +59,7 @@ class RunState {
   std::vector<double> times_;  // the samples of each step's dense output: times and states
   std::vector<Vec> states_;
   bool stopped_ = false;
+  bool ended_ = false;   // an observer ended the run at its last settled state (ends_run)
   bool smooth_ = false;  // the last instant was one of reversals alone
 
  private:

@@ -58,6 +58,10 @@ struct SimOptions : SolverOptions {
   // land on them, so each state is a step's end, not an interpolation; at an instant, the state
   // after it.
   std::vector<double> stops;
+  // From the settle_window-th stop on, the run ends at the first stop where its last
+  // settle_window stops have settled (section_settled, core/run/section_period.h;
+  // RunResult::settled), instead of at t_end. 0: it goes to t_end.
+  int settle_window = 0;
   // Keep the run's hybrid path (RunResult::path): what the variational equations replay.
   bool keep_path = false;
   // At most this many instants of it (about 1 KB each); it ends where they are reached.

@@ -84,7 +84,7 @@ std::vector<Crossing> Simulation::search_step(double a, double b, int& first) {
 
 bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
   const MotionInterval& in = *interval_;
-  while (!stopped_ && t < opt_.t_end) {
+  while (!stopped_ && !ended_ && t < opt_.t_end) {
     if (!take_step(t)) return false;
     const double a = stepper_.t_prev(), b = stepper_.t();
     int first = 0;
@@ -119,7 +119,7 @@ RunResult Simulation::run() {
   std::vector<Body> bodies = instant(0.0, initial_bodies(model_, y_), start, nullptr);
   settled(0.0, bodies);
   std::vector<Crossing> found;
-  while (!stopped_ && t < opt_.t_end) {
+  while (!stopped_ && !ended_ && t < opt_.t_end) {
     open_interval(t, std::exchange(bodies, {}));
     if (interval_->at_rest_for_good()) {
       t = opt_.t_end;
@@ -133,14 +133,14 @@ RunResult Simulation::run() {
     settled(t, bodies);
     over_budget(t);
   }
-  if (!stopped_)
+  if (!stopped_ && !ended_)
     t = std::max(t, opt_.t_end);
   else if (!std::isfinite(y_.sum()))
     y_ = stepper_.y();  // the last finite state
   const bool at_rest = bodies.empty() && interval_->at_rest_for_good();
   const std::vector<Body>& last = bodies.empty() ? interval_->bodies() : bodies;
   const MotionInterval* open = interval_ ? &*interval_ : nullptr;
-  const EndView end{t, std::min(t, opt_.t_end), y_, last, open, stopped_, at_rest};
+  const EndView end{t, std::min(t, opt_.t_end), y_, last, open, stopped_, ended_, at_rest};
   return finish(end, finder_.first_graze());
 }
 

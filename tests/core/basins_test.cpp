@@ -72,12 +72,13 @@ TEST(Basins, BothCoexistingPeriodOneMotionsAreFound) {
   for (std::size_t k = 0; k < r.attractors.size(); ++k) EXPECT_EQ(r.attractors[k].id, int(k));
 }
 
+// Every cell, each of whose runs ended where its section settled, before the sweep's end.
 TEST(Basins, EachCellsAttractorIsThatOfAPlainRunFromIt) {
   const SweepSpec spec = basins(6);
   const SweepResult r = run(spec, 2);
   ASSERT_TRUE(r.classified);
   int checked = 0;
-  for (std::size_t k = 0; k < r.runs.size(); k += 5) {
+  for (std::size_t k = 0; k < r.runs.size(); ++k) {
     const SweepRun& run = r.runs[k];
     if (run.attractor < 0) continue;
     // Named copies, not a structured binding: clang 14 (the sanitizer build) cannot capture one.
@@ -97,7 +98,50 @@ TEST(Basins, EachCellsAttractorIsThatOfAPlainRunFromIt) {
     EXPECT_LT(distance(r.attractors[run.attractor]), 1e-3);
     ++checked;
   }
-  EXPECT_GE(checked, 5);
+  EXPECT_GE(checked, 30);
+}
+
+// A run that classifies ends once its last record + 1 section points repeat: its record is
+// those points, at their own times, and its period and attractor are read off them.
+TEST(Basins, ARunEndsOnceItsSectionHasSettled) {
+  const SweepSpec spec = basins(4);
+  const SweepResult r = run(spec, 1);
+  const double T = 2.0 * M_PI / kOmega;
+  int early = 0;
+  for (const SweepRun& run : r.runs) {
+    ASSERT_EQ(run.points.size(), std::size_t(spec.record + 1));
+    const double last = run.points.back().t;
+    EXPECT_NEAR(run.points.front().t, last - spec.record * T, 1e-9);
+    EXPECT_GE(last, 20 * T - 1e-9);  // not before its fewest periods
+    if (last < (spec.transient + spec.record) * T - 1e-9) {
+      ++early;
+      EXPECT_GT(run.period, 0);
+      EXPECT_GE(run.attractor, 0);
+      EXPECT_TRUE(run.trusted);  // checked over the time it ran
+    }
+  }
+  EXPECT_GE(early, 12) << "of " << r.runs.size();
+}
+
+// The driver's side of it: a run with a settle window ends at the stop where it settled, its
+// check run over the same time.
+TEST(Basins, ARunWithASettleWindowEndsAtTheStopWhereItSettled) {
+  Model m = impact_oscillator(kOmega);
+  SimOptions o = options();
+  const double T = 2.0 * M_PI / kOmega;
+  o.t_end = 200 * T;
+  for (int k = 0; k <= 200; ++k) o.stops.push_back(k * T);
+  o.settle_window = 9;
+  const RunResult r = simulate(m, o);
+  ASSERT_TRUE(r.settled);
+  EXPECT_EQ(r.stats.termination, Termination::completed);
+  EXPECT_LT(r.stats.t_reached, 150 * T);
+  EXPECT_EQ(r.stops.back().t, r.stats.t_reached);
+  EXPECT_GE(r.stats.trusted_until, r.stats.t_reached);
+  o.settle_window = 0;
+  const RunResult plain = simulate(m, o);
+  EXPECT_FALSE(plain.settled);
+  EXPECT_EQ(plain.stats.t_reached, o.t_end);
 }
 
 TEST(Basins, OneThreadAndTwoGiveTheSameOutput) {
