@@ -334,7 +334,8 @@ ShadowOptions check_options(const SimOptions& run) {
   // (trust_scan --taylor 1, seeds 1-16 × 200: one estimate ten times short either way, no wrong
   // event vouched for) at a median check cost of 2.45-3.10× against 2.35-2.61×. That estimate
   // (seed 3, scene 154, rtol 1e-10) is short of the scan's reference's own error, not the run's:
-  // against DOP853 at atol 1e-17 or Taylor at rtol 1e-13 it is 0.86 and 0.44 of the truth.
+  // against DOP853 at atol 1e-17 or Taylor at rtol 1e-13 it is 0.86 and 0.44 of the truth, and
+  // the scan, whose references now run at atol 1e-17 with Taylor among them, judges it so.
   //
   // The shadow's error must be well below the run's, whatever the methods' error constants
   // and whatever luck a run has: it runs at a hundredth of both tolerances (at a thirtieth

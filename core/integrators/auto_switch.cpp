@@ -4,14 +4,29 @@
 
 namespace vibro::integrators {
 
+namespace {
+
+AutoSwitch::Kind kind_of(AutoExplicit method) {
+  switch (method) {
+    case AutoExplicit::dopri5:
+      return AutoSwitch::Kind::dopri5;
+    case AutoExplicit::taylor:
+      return AutoSwitch::Kind::taylor;
+    default:
+      return AutoSwitch::Kind::dop853;
+  }
+}
+
+}  // namespace
+
 AutoSwitch::AutoSwitch(const StepperOptions& options)
     : dopri5_(options),
       dop853_(options),
+      taylor_(options),
       implicit_(options),
       weighs_explicit_(auto_weighs_explicit(options.rtol, options.auto_explicit)),
-      explicit_(auto_explicit_for(options.rtol, options.auto_explicit) == AutoExplicit::dopri5
-                    ? Kind::dopri5
-                    : Kind::dop853),
+      explicit_(kind_of(auto_explicit_for(options.rtol, options.auto_explicit))),
+      taylor_home_(explicit_ == Kind::taylor),
       active_(explicit_) {}
 
 const Stepper& AutoSwitch::stepper(Kind kind) const {
@@ -20,6 +35,8 @@ const Stepper& AutoSwitch::stepper(Kind kind) const {
       return dopri5_;
     case Kind::dop853:
       return dop853_;
+    case Kind::taylor:
+      return taylor_;
     case Kind::radau5:
       break;
   }
@@ -38,6 +55,12 @@ void AutoSwitch::continue_smoothly(const OdeSystem& sys, double t0, const Vec& y
 
 void AutoSwitch::prepare(const OdeSystem& sys, const Vec& y0) {
   sys_ = &sys;
+  if (taylor_home_ && !sys.has_taylor_coefficients()) {
+    taylor_home_ = false;  // no jets: DOP853 alone, from the start
+    if (explicit_ == Kind::taylor) explicit_ = Kind::dop853;
+    if (active_ == Kind::taylor) active_ = Kind::dop853;
+    if (pending_ == Kind::taylor) pending_.reset();
+  }
   // Every method gets its work arrays now, so that a switch does not allocate.
   const int n = static_cast<int>(y0.size());
   dopri5_.reserve(n);
@@ -59,16 +82,32 @@ void AutoSwitch::switch_method() {
   const Kind to = *pending_;
   const Stepper& from = active();
   double h = 0.0;
-  if (active_ == Kind::radau5)
-    h = implicit_.step_size();
-  else
-    h = active_ == Kind::dopri5 ? dopri5_.step_size() : dop853_.step_size();
+  switch (active_) {
+    case Kind::dopri5:
+      h = dopri5_.step_size();
+      break;
+    case Kind::dop853:
+      h = dop853_.step_size();
+      break;
+    case Kind::taylor:
+      h = from.t() - from.t_prev();  // its last step, set by its series
+      break;
+    case Kind::radau5:
+      h = implicit_.step_size();
+      break;
+  }
   switch (to) {
     case Kind::dopri5:
       dopri5_.resume(*sys_, from.t(), from.y(), h);
       break;
     case Kind::dop853:
-      dop853_.resume(*sys_, from.t(), from.y(), h);
+      if (h > 0.0)
+        dop853_.resume(*sys_, from.t(), from.y(), h);
+      else
+        dop853_.start(*sys_, from.t(), from.y());
+      break;
+    case Kind::taylor:
+      taylor_.start(*sys_, from.t(), from.y());  // each step's size is its own series'
       break;
     case Kind::radau5:
       implicit_.resume(*sys_, from.t(), from.y(), h);
@@ -97,8 +136,11 @@ double AutoSwitch::rate(const Mark& from, double w) const {
 
 void AutoSwitch::after_explicit_step() {
   ++explicit_steps_;
-  const bool limited =
-      explicit_ == Kind::dopri5 ? dopri5_.stability_limited() : dop853_.stability_limited();
+  // Taylor's step is held by its series' radius, which says nothing of stability: a stiff stretch
+  // is found while DOP853 probes (probe_stiffness).
+  const bool limited = explicit_ == Kind::dopri5   ? dopri5_.stability_limited()
+                       : explicit_ == Kind::dop853 ? dop853_.stability_limited()
+                                                   : false;
   if (!limited || explicit_steps_ < retry_after_) {
     measure_from_ = mark(work());
     return;
@@ -111,6 +153,32 @@ void AutoSwitch::after_explicit_step() {
   pending_ = Kind::radau5;
   weighing_ = false;
   weighed_steps_ = 0;
+  probing_ = false;
+  probe_steps_ = 0;
+}
+
+// Before a step while Taylor is the explicit method: after next_probe_ Taylor steps DOP853 runs
+// for kProbeSteps, and longer while its step is held by stability (up to kProbeMaxSteps), so
+// that after_explicit_step can measure it and try RADAU5; otherwise Taylor goes on, and the next
+// probe comes after twice as many steps. DOP853 back from RADAU5 hands over to Taylor at once.
+void AutoSwitch::probe_stiffness() {
+  if (active_ == Kind::taylor) {
+    if (++probe_steps_ < next_probe_) return;
+    probing_ = true;
+    probe_steps_ = 0;
+    explicit_ = Kind::dop853;
+    pending_ = Kind::dop853;
+    return;
+  }
+  ++probe_steps_;
+  if (probing_ && (probe_steps_ < kProbeSteps ||
+                   (dop853_.stability_limited() && probe_steps_ < kProbeMaxSteps)))
+    return;
+  probing_ = false;
+  probe_steps_ = 0;
+  next_probe_ = std::max(2 * next_probe_, kProbeRetrySteps);
+  explicit_ = Kind::taylor;
+  pending_ = Kind::taylor;
 }
 
 // Before an explicit step, where the time reached is the run's (a step's end that an event cut
@@ -160,6 +228,7 @@ void AutoSwitch::after_implicit_step() {
 
 StepStatus AutoSwitch::step(double t_limit) {
   if (weighs_explicit_ && !pending_ && active_ != Kind::radau5) weigh_explicit();
+  if (taylor_home_ && !pending_ && active_ != Kind::radau5) probe_stiffness();
   if (pending_) switch_method();
   const StepStatus status = active().step(t_limit);
   if (status != StepStatus::ok) return status;
@@ -175,14 +244,16 @@ const StepperStats& AutoSwitch::stats() const {
   const StepperStats& a = dopri5_.stats();
   const StepperStats& b = dop853_.stats();
   const StepperStats& c = implicit_.stats();
-  stats_.steps = a.steps + b.steps + c.steps;
+  const StepperStats& d = taylor_.stats();
+  stats_.steps = a.steps + b.steps + c.steps + d.steps;
   stats_.rejected = a.rejected + b.rejected + c.rejected;
-  stats_.rhs_evals = a.rhs_evals + b.rhs_evals + c.rhs_evals;
+  stats_.rhs_evals = a.rhs_evals + b.rhs_evals + c.rhs_evals + d.rhs_evals;
   stats_.jac_evals = a.jac_evals + b.jac_evals + c.jac_evals;
   stats_.lu_decomps = a.lu_decomps + b.lu_decomps + c.lu_decomps;
   stats_.stiff_switches = switches_;
   stats_.dop853_steps = b.steps;
   stats_.dopri5_steps = a.steps;
+  stats_.taylor_steps = d.steps;
   return stats_;
 }
 

@@ -1,6 +1,8 @@
 // Automatic method choice ("auto"), in the spirit of LSODA: an explicit method while the problem
 // is non-stiff, RADAU5 while it is stiff, and at loose tolerances DOPRI5 or DOP853, whichever
-// costs less on this problem.
+// costs less on this problem; at tight tolerances (kAutoTaylorRtol, core/integrators/stepper.h)
+// the Taylor method, with DOP853 probing for stiffness, and DOP853 alone where the system has no
+// jets (OdeSystem::has_taylor_coefficients).
 #pragma once
 
 #include <memory>
@@ -11,6 +13,7 @@
 #include "core/integrators/dopri5.h"
 #include "core/integrators/radau5.h"
 #include "core/integrators/stepper.h"
+#include "core/integrators/taylor.h"
 
 namespace vibro::integrators {
 
@@ -41,6 +44,7 @@ namespace vibro::integrators {
 // start().
 class AutoSwitch final : public Stepper {
  public:
+  enum class Kind { dopri5, dop853, taylor, radau5 };
   // h·‖J‖∞ <= 1 leaves the explicit methods (stability bounds h·ρ ≈ 3.3 and 6.1) room to grow.
   static constexpr double kNonStiffBound = 1.0;
   static constexpr int kNonStiffSteps = 15;
@@ -60,6 +64,13 @@ class AutoSwitch final : public Stepper {
   // step's bookkeeping), in right-hand sides: fitted to the presets' wall times at rtol 1e-6,
   // which put it between 1.4 (plastic-limiter) and 6.5 (high-frequency).
   static constexpr double kStepCost = 4.0;
+  // Where Taylor is the explicit method, DOP853 probes for stiffness (probe_stiffness): first after
+  // kExplicitMeasureSteps Taylor steps, then after twice as many each time, kProbeRetrySteps at
+  // least; each probe kProbeSteps long, up to kProbeMaxSteps while DOP853's step is held by
+  // stability (kMeasureSteps of them start RADAU5's trial).
+  static constexpr int kProbeSteps = 15;
+  static constexpr int kProbeMaxSteps = 60;
+  static constexpr long kProbeRetrySteps = 100;
 
   explicit AutoSwitch(const StepperOptions& options);
 
@@ -72,13 +83,13 @@ class AutoSwitch final : public Stepper {
   const Vec& y() const override { return active().y(); }
   void dense(double t, Vec& out) const override { active().dense(t, out); }
   void precise_state(double t, Vec& out) override { active().precise_state(t, out); }
+  const StepPolynomials* polynomials() const override { return active().polynomials(); }
   const StepperStats& stats() const override;
 
   // True while RADAU5 is (or is about to be) the method.
   bool stiff() const { return (pending_ ? *pending_ : active_) == Kind::radau5; }
 
  private:
-  enum class Kind { dopri5, dop853, radau5 };
   // Work done and time reached: where a measurement of cost per unit of time begins.
   struct Mark {
     double work = 0.0;
@@ -99,13 +110,16 @@ class AutoSwitch final : public Stepper {
   void after_explicit_step();
   void weigh_explicit();
   void after_implicit_step();
+  void probe_stiffness();
 
   Dopri5 dopri5_;
   Dop853 dop853_;
+  Taylor taylor_;
   Radau5 implicit_;
   const OdeSystem* sys_ = nullptr;
   const bool weighs_explicit_;
   Kind explicit_;                // the explicit method that runs while the problem is non-stiff
+  bool taylor_home_;             // Taylor is the explicit method, DOP853 its probe
   Kind active_;                  // the method that took the last step
   std::optional<Kind> pending_;  // the method that takes the next step, if another
   int non_stiff_steps_ = 0;      // consecutive RADAU5 steps with h·‖J‖∞ <= kNonStiffBound
@@ -123,6 +137,10 @@ class AutoSwitch final : public Stepper {
   Mark weigh_from_;  // the incumbent's measured stretch, then the challenger's
   double incumbent_rate_ = 0.0;
   bool weighing_ = false;  // the other explicit method is on trial
+  // Probing for stiffness.
+  bool probing_ = false;  // DOP853 is probing
+  long probe_steps_ = 0;  // steps of the method now running since the last hand-over
+  long next_probe_ = kExplicitMeasureSteps;
   mutable StepperStats stats_;
 };
 

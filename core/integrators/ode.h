@@ -32,6 +32,8 @@ class OdeSystem {
                                    std::span<double> /*out*/) const {
     return false;
   }
+  // True where taylor_coefficients computes them (`auto` runs the Taylor method only there).
+  virtual bool has_taylor_coefficients() const { return false; }
 };
 
 }  // namespace vibro

@@ -27,7 +27,8 @@ std::string_view method_name(Method m) {
 
 AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice) {
   if (choice != AutoExplicit::by_tolerance) return choice;
-  return rtol > 5e-7 ? AutoExplicit::dopri5 : AutoExplicit::dop853;
+  if (rtol > 5e-7) return AutoExplicit::dopri5;
+  return rtol > kAutoTaylorRtol ? AutoExplicit::dop853 : AutoExplicit::taylor;
 }
 
 bool auto_weighs_explicit(double rtol, AutoExplicit choice) {

@@ -19,12 +19,26 @@ std::string_view method_name(Method m);
 
 // The explicit method `auto` runs while the problem is not stiff: by default the cheaper one for
 // the tolerance (auto_explicit_for); the trust check asks for the other one, so that a run and
-// its shadow do not share a method's bias.
-enum class AutoExplicit { by_tolerance, dopri5, dop853 };
+// its shadow do not share a method's bias. Taylor stands for DOP853 where the system has no
+// jets (OdeSystem::has_taylor_coefficients).
+enum class AutoExplicit { by_tolerance, dopri5, dop853, taylor };
 
 // The explicit method `auto` starts with: the one `choice` names; by tolerance, DOPRI5 at rtol
-// 1e-6 and looser and DOP853 from 5e-7 down.
+// 1e-6 and looser, DOP853 from 5e-7 down to above kAutoTaylorRtol, Taylor from there down.
 AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice = AutoExplicit::by_tolerance);
+
+// From this rtol down `auto` runs the Taylor method where the system has jets (DOP853 probing
+// for stiffness, core/integrators/auto_switch.h): the tightest tolerance at which Taylor costs
+// more than DOP853 on some preset is above it. Measured by the instructions of whole runs
+// (deterministic, unlike times on the shared machine; `bench/auto_cost.sh`, atol = rtol/100, the
+// check off) on the eleven non-stiff presets, Taylor against DOP853: at rtol 1e-8 0.52
+// (rest-in-cone) to 0.99 (loop), at 1e-10 0.52 to 0.87 (grazing), at 1e-12 0.40 to 0.80
+// (mass-ratio); at 1e-7 up to 1.11 (loop, its steps held by its events). (Grazing at 1e-7 and
+// 1e-9 is left out: DOP853 lists 2 of its 7 events there.) A weighing by cost over stretches, as
+// between DOPRI5 and DOP853, chose DOP853 on the paper scene at 1e-9, where Taylor is the cheaper
+// over the whole run: its cost per unit of time over its first, event-dense 0.53 s was 1.6 times
+// DOP853's over the next 0.63 s.
+inline constexpr double kAutoTaylorRtol = 1e-8;
 
 // True where `auto` weighs DOPRI5 against DOP853 by their cost on the problem
 // (core/integrators/auto_switch.h): rtol from 5e-6 to 5e-7 with the method left to it, where
@@ -50,7 +64,7 @@ struct StepperStats {
   long lu_decomps = 0;      // LU factorisations (implicit method only)
   long stiff_switches = 0;  // method switches made by "auto"
   // "auto": the accepted steps each explicit method took, where it weighs one against the other.
-  long dopri5_steps = 0, dop853_steps = 0;
+  long dopri5_steps = 0, dop853_steps = 0, taylor_steps = 0;
 };
 
 enum class StepStatus {

@@ -106,6 +106,7 @@ class SegmentDynamics final : public OdeSystem {
   // state constant.
   bool taylor_coefficients(double t0, const Vec& y0, int order,
                            std::span<double> out) const override;
+  bool has_taylor_coefficients() const override { return true; }
 
  private:
   void evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const;

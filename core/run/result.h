@@ -80,7 +80,8 @@ struct Stats {
   std::string method;  // the method asked for ("auto" reports what it used, e.g. "auto(dop853)")
   double rtol = 0.0, atol = 0.0;
   long steps = 0, rejected = 0, rhs_evals = 0, jac_evals = 0, lu_decomps = 0, stiff_switches = 0;
-  long dopri5_steps = 0, dop853_steps = 0;  // "auto": the steps each explicit method took
+  // "auto": the steps each explicit method took
+  long dopri5_steps = 0, dop853_steps = 0, taylor_steps = 0;
   double wall_ms = 0.0;
   // The largest of the estimates below in one unit: times over sqrt(R/g), angles in rad, the
   // rest relative.

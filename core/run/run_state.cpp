@@ -149,6 +149,7 @@ RunResult RunState::finish(const EndView& end, const std::optional<Graze>& graze
   st.stiff_switches = s.stiff_switches;
   st.dopri5_steps = s.dopri5_steps;
   st.dop853_steps = s.dop853_steps;
+  st.taylor_steps = s.taylor_steps;
   st.t_reached = end.t_reached;
   for (RunObserver* o : observers_) o->on_end(end, result);
   result.summary.armed = armed_;

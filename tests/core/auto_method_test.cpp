@@ -1,11 +1,12 @@
 // `auto` picks the cheaper method by cost: RADAU5 wherever it is cheaper (the stiff-friction
 // preset, at every tolerance, also where DOP853's step is held by accuracy rather than by
 // stability), and no trial of it on the non-stiff presets; at loose tolerances DOPRI5 or DOP853,
-// whichever is the cheaper on the preset. Work is counted in right-hand sides and steps, which
-// is deterministic, rather than timed.
+// whichever is the cheaper on the preset, and at tight ones Taylor. Work is counted in
+// right-hand sides and steps, which is deterministic, rather than timed.
 #include <gtest/gtest.h>
 
 #include <algorithm>
+#include <cmath>
 #include <string>
 
 #include "core/analysis/checked_run.h"
@@ -49,8 +50,9 @@ double explicit_work(const RunResult& run) {
              static_cast<double>(run.stats.steps + run.stats.rejected);
 }
 
-// No trial of RADAU5 on the non-stiff presets. From rtol 5e-7 down `auto` is DOP853 step for
-// step; above, it weighs DOPRI5 against DOP853 and is about as cheap as the cheaper of the two.
+// No trial of RADAU5 on the non-stiff presets. From rtol 5e-7 down to above kAutoTaylorRtol
+// `auto` is DOP853 step for step, from there down Taylor but for DOP853's probes for stiffness;
+// above, it weighs DOPRI5 against DOP853 and is about as cheap as the cheaper of the two.
 TEST(AutoMethod, StaysExplicitOnTheNonStiffPresets) {
   for (const char* name : {"paper", "chatter", "frictionless-elastic", "grazing", "high-frequency",
                            "impact-oscillator", "loop", "mass-ratio", "plastic-limiter",
@@ -59,7 +61,16 @@ TEST(AutoMethod, StaysExplicitOnTheNonStiffPresets) {
       SCOPED_TRACE(std::string(name) + " at rtol " + std::to_string(rtol));
       const RunResult automatic = run_preset(name, Method::automatic, rtol);
       EXPECT_EQ(automatic.stats.stiff_switches, 0);
-      EXPECT_EQ(automatic.stats.dopri5_steps + automatic.stats.dop853_steps, automatic.stats.steps);
+      EXPECT_EQ(automatic.stats.dopri5_steps + automatic.stats.dop853_steps +
+                    automatic.stats.taylor_steps,
+                automatic.stats.steps);
+      if (auto_explicit_for(rtol) == AutoExplicit::taylor) {
+        // The probes: the first after 10 Taylor steps, then after 100, 200, 400, …, 15 steps each.
+        const RunResult taylor = run_preset(name, Method::taylor, rtol);
+        EXPECT_GE(automatic.stats.taylor_steps, automatic.stats.steps / 2);
+        EXPECT_LE(automatic.stats.dop853_steps, 15 * (2 + std::log2(1.0 + taylor.stats.steps)));
+        continue;
+      }
       const RunResult dop853 = run_preset(name, Method::dop853, rtol);
       if (!auto_weighs_explicit(rtol, AutoExplicit::by_tolerance)) {
         EXPECT_EQ(automatic.stats.rhs_evals, dop853.stats.rhs_evals);
@@ -86,6 +97,48 @@ TEST(AutoMethod, WeighsItsExplicitMethodsByCost) {
     const RunResult flight = run_preset(name, Method::automatic, 1e-6);
     EXPECT_GT(flight.stats.dop853_steps, flight.stats.dopri5_steps) << name;
   }
+}
+
+// At tight tolerances `auto` runs Taylor, and its events are DOP853's.
+TEST(AutoMethod, RunsTaylorAtTightTolerancesWithDop853sEvents) {
+  for (const char* name : {"impact-oscillator", "paper", "frictionless-elastic", "chatter"}) {
+    for (double rtol : {1e-9, 1e-12}) {
+      SCOPED_TRACE(std::string(name) + " at rtol " + std::to_string(rtol));
+      const RunResult automatic = run_preset(name, Method::automatic, rtol);
+      EXPECT_GT(automatic.stats.taylor_steps, 2 * automatic.stats.dop853_steps);
+      const RunResult dop853 = run_preset(name, Method::dop853, rtol);
+      ASSERT_EQ(automatic.events.size(), dop853.events.size());
+      for (std::size_t k = 0; k < dop853.events.size(); ++k) {
+        EXPECT_EQ(automatic.events[k].kind, dop853.events[k].kind) << "event " << k;
+        EXPECT_EQ(automatic.events[k].pellets, dop853.events[k].pellets) << "event " << k;
+        EXPECT_NEAR(automatic.events[k].t, dop853.events[k].t, 1e3 * rtol) << "event " << k;
+      }
+    }
+  }
+}
+
+// A harmonic oscillator with no jets (as the variational equations that monodromy integrates).
+struct NoJets final : OdeSystem {
+  int dimension() const override { return 2; }
+  void rhs(double, const Vec& y, Vec& dydt) const override {
+    dydt[0] = y[1];
+    dydt[1] = -y[0];
+  }
+  void jacobian(double, const Vec&, Mat& dfdy, Vec& dfdt) const override {
+    dfdy = (Mat(2, 2) << 0.0, 1.0, -1.0, 0.0).finished();
+    dfdt = Vec::Zero(2);
+  }
+};
+
+// Without jets `auto` runs DOP853 alone where it would run Taylor.
+TEST(AutoMethod, RunsDop853WhereTheSystemHasNoJets) {
+  NoJets sys;
+  auto automatic = make_stepper(Method::automatic, StepperOptions{1e-10, 1e-12});
+  automatic->start(sys, 0.0, (Vec(2) << 1.0, 0.0).finished());
+  while (automatic->t() < 20.0) ASSERT_EQ(automatic->step(20.0), StepStatus::ok);
+  EXPECT_EQ(automatic->name(), "dop853");
+  EXPECT_EQ(automatic->stats().dop853_steps, automatic->stats().steps);
+  EXPECT_NEAR(automatic->y()[0], std::cos(20.0), 1e-8);
 }
 
 }  // namespace
