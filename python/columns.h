@@ -5,8 +5,13 @@
 #include <pybind11/numpy.h>
 #include <pybind11/pybind11.h>
 
+#include <algorithm>
 #include <cstddef>
 #include <string>
+#include <string_view>
+#include <vector>
+
+#include "python/code_points.h"
 
 namespace vibro::python {
 
@@ -21,20 +26,22 @@ py::array_t<T> column(std::size_t n, const Get& get) {
   return a;
 }
 
-// numpy's functions the columns of one table are made with, looked up once for the table (an
-// import is not free).
-struct Numpy {
-  Numpy() : module(py::module_::import("numpy")) {}
-  py::module_ module;
-  py::object array = module.attr("array");
-};
-
-// The n strings get(0) … as a numpy array of str.
+// The n strings get(0) … as a numpy array of str ('<U' of the longest), filled in place: a list
+// of Python strings handed to numpy.array would cost more than the run's events themselves.
 template <class Get>
-py::array string_column(const Numpy& np, std::size_t n, const Get& get) {
-  py::list list(n);
-  for (std::size_t k = 0; k < n; ++k) list[k] = py::str(std::string(get(k)));
-  return np.array(list, py::arg("dtype") = "str");
+py::array string_column(std::size_t n, const Get& get) {
+  std::vector<std::u32string> text(n);
+  std::size_t width = 1;  // numpy's narrowest str
+  for (std::size_t k = 0; k < n; ++k) {
+    text[k] = code_points(get(k));
+    width = std::max(width, text[k].size());
+  }
+  py::array a(py::dtype("<U" + std::to_string(width)),
+              std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)});
+  auto* data = static_cast<char32_t*>(a.mutable_data());
+  std::fill(data, data + n * width, U'\0');
+  for (std::size_t k = 0; k < n; ++k) std::copy(text[k].begin(), text[k].end(), data + k * width);
+  return a;
 }
 
 }  // namespace vibro::python

@@ -54,8 +54,7 @@ class Run {
     py::dict d;
     d["event"] = column<std::int64_t>(n, [&](std::size_t k) { return rows[k].event; });
     d["t"] = column<double>(n, [&](std::size_t k) { return event(k).t; });
-    d["kind"] =
-        string_column(Numpy(), n, [&](std::size_t k) { return event_kind_name(event(k).kind); });
+    d["kind"] = string_column(n, [&](std::size_t k) { return event_kind_name(event(k).kind); });
     d["pellet"] = column<std::int64_t>(n, [&](std::size_t k) {
       const std::vector<int>& p = event(k).pellets;
       return rows[k].member < p.size() ? p[rows[k].member] : -1;

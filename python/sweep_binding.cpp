@@ -73,7 +73,6 @@ class Sweep {
     if (runs_) return runs_.cast<py::dict>();
     const std::vector<SweepRun>& r = result_.runs;
     const std::size_t n = r.size();
-    const Numpy np;
     py::dict d;
     d["value"] = column<double>(n, [&](std::size_t k) { return r[k].value; });
     d["value2"] = column<double>(n, [&](std::size_t k) { return r[k].value2; });
@@ -89,8 +88,8 @@ class Sweep {
     d["error_estimate"] = column<double>(n, [&](std::size_t k) { return r[k].error_estimate; });
     d["lyapunov"] = column<double>(n, [&](std::size_t k) { return lyapunov(r[k]); });
     d["termination"] =
-        string_column(np, n, [&](std::size_t k) { return termination_name(r[k].termination); });
-    d["message"] = string_column(np, n, [&](std::size_t k) { return r[k].message; });
+        string_column(n, [&](std::size_t k) { return termination_name(r[k].termination); });
+    d["message"] = string_column(n, [&](std::size_t k) { return r[k].message; });
     if (result_.classified)
       d["attractor"] = column<std::int64_t>(n, [&](std::size_t k) { return r[k].attractor; });
     runs_ = d;
