@@ -157,35 +157,23 @@ JobState Jobs::run_sweep_beneath(Job& job, double spent_ms) const {
     job.done = job.total;
     return JobState::done;
   }
-  SweepControl control;
-  control.threads = options_.threads;
-  control.cancel = &job.cancel;
-  control.progress = [&job](long done, long) { job.done = 1000 + done; };
-  control.max_points = options_.max_points;
-  control.budget_ms = std::max(0.0, options_.budget_ms - spent_ms);
-  auto result =
-      std::make_shared<SweepResult>(run_sweep(scene.model, *job.beneath, *scene.sweep, control));
-  if (result->cancelled) return JobState::cancelled;
-  if (result->stopped) {
-    job.error = result->stopped;
-    return JobState::failed;
-  }
-  for (const SweepRun& r : result->runs) job.points += static_cast<long>(r.points.size());
-  job.sweep = std::move(result);
-  return JobState::done;
+  return sweep(job, *job.beneath, 1000, std::max(0.0, options_.budget_ms - spent_ms));
 }
 
 JobState Jobs::run(Job& job) const {
-  const Scene& scene = job.scene;
   if (job.kind == JobKind::orbit) return run_orbit(job);
+  return sweep(job, job.scene.sim, 0, options_.budget_ms);
+}
+
+JobState Jobs::sweep(Job& job, const SimOptions& sim, long done_before, double budget_ms) const {
   SweepControl control;
   control.threads = options_.threads;
   control.cancel = &job.cancel;
-  control.progress = [&job](long done, long) { job.done = done; };
+  control.progress = [&job, done_before](long done, long) { job.done = done_before + done; };
   control.max_points = options_.max_points;
-  control.budget_ms = options_.budget_ms;
+  control.budget_ms = budget_ms;
   auto result =
-      std::make_shared<SweepResult>(run_sweep(scene.model, scene.sim, *scene.sweep, control));
+      std::make_shared<SweepResult>(run_sweep(job.scene.model, sim, *job.scene.sweep, control));
   if (result->cancelled) return JobState::cancelled;
   // A sweep a bound stopped has no whole result: it keeps nothing, and says why.
   if (result->stopped) {

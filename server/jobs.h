@@ -103,6 +103,9 @@ class Jobs {
   // The sweep beneath an orbit's figure, when the figure draws it, within what is left of the
   // job's budget.
   JobState run_sweep_beneath(Job& job, double spent_ms) const;
+  // Runs the job's sweep of scene.sweep under `sim` within budget_ms, its progress counted on
+  // from done_before, and keeps the result.
+  JobState sweep(Job& job, const SimOptions& sim, long done_before, double budget_ms) const;
   // Forgets finished jobs past their time, their number or the points they hold (oldest
   // first). Under mutex_.
   void forget_old();
