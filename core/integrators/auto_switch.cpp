@@ -174,6 +174,10 @@ void AutoSwitch::probe_stiffness() {
   if (probing_ && (probe_steps_ < kProbeSteps ||
                    (dop853_.stability_limited() && probe_steps_ < kProbeMaxSteps)))
     return;
+  end_probe();
+}
+
+void AutoSwitch::end_probe() {
   probing_ = false;
   probe_steps_ = 0;
   next_probe_ = std::max(2 * next_probe_, kProbeRetrySteps);
@@ -230,7 +234,14 @@ StepStatus AutoSwitch::step(double t_limit) {
   if (weighs_explicit_ && !pending_ && active_ != Kind::radau5) weigh_explicit();
   if (taylor_home_ && !pending_ && active_ != Kind::radau5) probe_stiffness();
   if (pending_) switch_method();
-  const StepStatus status = active().step(t_limit);
+  StepStatus status = active().step(t_limit);
+  if (status != StepStatus::ok && probing_ && active_ == Kind::dop853) {
+    // A probe that DOP853 cannot step is no verdict on stiffness: Taylor, which may follow
+    // where DOP853's step underflows, takes the step from the last one accepted.
+    end_probe();
+    switch_method();
+    status = active().step(t_limit);
+  }
   if (status != StepStatus::ok) return status;
   ++steps_;
   if (active_ == Kind::radau5)

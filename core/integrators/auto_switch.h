@@ -111,6 +111,8 @@ class AutoSwitch final : public Stepper {
   void weigh_explicit();
   void after_implicit_step();
   void probe_stiffness();
+  // Hands back to Taylor after a probe (its end, or a step DOP853 could not take).
+  void end_probe();
 
   Dopri5 dopri5_;
   Dop853 dop853_;
