@@ -235,17 +235,49 @@ bool crossed(BifurcationKind k, const Signature& a, const Signature& b) {
   return false;
 }
 
-// The nearest an impact comes to the section, and the middle of the longest stretch without
-// impacts, as times from the section (s).
+// Where a motion is near a grazing: an impact's speed (times the time scale) or a turn's distance
+// to a limiter below this, rad.
+constexpr double kNearGrazing = 1e-3;
+
+// The turn of the motion that comes nearest to a limiter acting on its pellet, as the impact it
+// becomes where it reaches the limiter, its distance to it (rad) and its time (s from the
+// section); none without a turn.
+struct Turn : GrazingImpact {
+  double gap = INFINITY;
+  double t = 0.0;
+};
+
+Turn nearest_turn(const Model& model, const RunResult& run) {
+  Turn g;
+  double nearest = INFINITY;
+  for (const Event& e : run.events) {
+    if (e.kind != EventKind::reversal) continue;
+    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
+      if (!model.limiters[l].acts_on(e.pellets[0])) continue;
+      const double gap = wrap_angle(model.limiters[l].angle - e.phi);
+      if (std::abs(gap) >= nearest) continue;
+      nearest = std::abs(gap);
+      g = {{e.pellets[0], l, gap > 0.0 ? 1.0 : -1.0}, std::abs(gap), e.t};
+    }
+  }
+  return g;
+}
+
+// The nearest an impact, or a turn near a grazing (kNearGrazing), comes to the section, and the
+// middle of the longest stretch without them, as times from the section (s). Such a turn is where
+// an impact appears at the grazing: on the section, the grazing motion's state would lie on the
+// limiter, and the impacting motions past it would start at their impact.
 struct Clearance {
   double nearest = INFINITY;
   double middle = 0.0;
 };
 
-Clearance clearance(const RunResult& run, double span) {
+Clearance clearance(const Model& model, const RunResult& run, double span) {
   std::vector<double> times = {0.0};
   for (const Event& e : run.events)
     if (is_impact(e)) times.push_back(e.t);
+  if (const Turn turn = nearest_turn(model, run); turn.gap < kNearGrazing) times.push_back(turn.t);
+  std::sort(times.begin(), times.end());
   times.push_back(span);
   Clearance c;
   double longest = -1.0;
@@ -380,24 +412,6 @@ SlowImpact slowest_impact(const RunResult& run) {
   return s;
 }
 
-// The turn of the motion that comes nearest to a limiter acting on its pellet, as the impact it
-// becomes where it reaches the limiter; none without a turn.
-GrazingImpact nearest_turn(const Model& model, const RunResult& run) {
-  GrazingImpact g;
-  double nearest = INFINITY;
-  for (const Event& e : run.events) {
-    if (e.kind != EventKind::reversal) continue;
-    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
-      if (!model.limiters[l].acts_on(e.pellets[0])) continue;
-      const double gap = wrap_angle(model.limiters[l].angle - e.phi);
-      if (std::abs(gap) >= nearest) continue;
-      nearest = std::abs(gap);
-      g = {e.pellets[0], l, gap > 0.0 ? 1.0 : -1.0};
-    }
-  }
-  return g;
-}
-
 // The free motion near x at the model m and how far its turn goes past the limiter (rad, > 0:
 // it would cross it; 0 at the grazing) at its turn `turn` s after the section, or none where it is
 // not found.
@@ -469,7 +483,10 @@ class Continuation {
   bool jump_from_free();
   std::optional<Point> impacting_at(const GrazingImpact& impact, double p, double time,
                                     const Vec& before) const;
+  std::optional<Step> step_on_impact(const GrazingImpact& impact, double p) const;
+  bool take(Step next);
   void walk_off_grazing(const GrazingImpact& impact, double grazing);
+  bool walk_on_impact();
   void report_grazing(double value, const Vec& x, bool impacting);
   void restart_at(Point next);
   // The way the branch goes in the parameter's own units (+1: to larger values).
@@ -518,6 +535,7 @@ class Continuation {
   Signature sig_;
   double ds_ = 0.0;
   std::size_t jump_tried_at_ = 0;  // branch points when the last grazing jump was tried
+  double walk_ = 2e-3;             // walk_on_impact's step, of the range
 };
 
 OrbitBranch Continuation::run() {
@@ -550,6 +568,10 @@ OrbitBranch Continuation::run() {
     }
     Step next = step_to(here_.v + ds_ * t_);
     if (!next.point.ok) {
+      if (walk_on_impact()) {
+        if (branch_.reached) return branch_;
+        continue;
+      }
       ds_ /= 2.0;
       if (ds_ >= kStepMin || cross_grazing()) continue;
       return branch_;
@@ -581,10 +603,12 @@ Continuation::Step Continuation::step_to(const Vec& predicted) const {
   return next;
 }
 
-// Keeps the section a twentieth of a period or more away from every impact.
+// Keeps the section a twentieth of a period or more away from every impact and from the turn
+// that comes nearest to a limiter.
 void Continuation::keep_clear() {
-  const double T = forcing_period(map_.at(map_.value(here_.v)));
-  const Clearance c = clearance(here_.map.run, map_.periods() * T);
+  const Model m = map_.at(map_.value(here_.v));
+  const double T = forcing_period(m);
+  const Clearance c = clearance(m, here_.map.run, map_.periods() * T);
   if (c.nearest >= 0.05 * T) return;
   const Vec moved = map_.shift_phase(here_, c.middle);
   here_ = map_.evaluate(map_.scaled(moved, map_.value(here_.v)));
@@ -603,12 +627,12 @@ bool Continuation::cross_grazing() {
   std::ostringstream why;
   why << "the branch could not be followed past " << spec_.parameter << " = "
       << map_.value(here_.v);
-  if (grazing_distance(map_.at(map_.value(here_.v)), here_.map.run, here_.map.x) > 1e-3) {
+  if (grazing_distance(map_.at(map_.value(here_.v)), here_.map.run, here_.map.x) > kNearGrazing) {
     branch_.message = why.str() + ": no nearby motion continues it";
     return false;
   }
   const Model here = map_.at(map_.value(here_.v));
-  const bool impacting = slowest_impact(here_.map.run).speed * time_scale(here) <= 1e-3;
+  const bool impacting = slowest_impact(here_.map.run).speed * time_scale(here) <= kNearGrazing;
   branch_.bifurcations.push_back({BifurcationKind::grazing,
                                   map_.value(here_.v),
                                   map_.section_state(here_.v),
@@ -730,7 +754,7 @@ bool Continuation::jump_from_impacting(const SlowImpact& slow) {
 // the grazing is solved on the impact instead (core/analysis/grazing_orbit.h), from the grazing
 // motion, and the branch goes on from it.
 bool Continuation::jump_from_free() {
-  const GrazingImpact turn = nearest_turn(map_.at(map_.value(here_.v)), here_.map.run);
+  const Turn turn = nearest_turn(map_.at(map_.value(here_.v)), here_.map.run);
   if (turn.pellet < 0) return false;
   const std::optional<Grazing> g = grazing_ahead(turn, false);
   if (!g) return false;
@@ -761,6 +785,38 @@ std::optional<Point> Continuation::impacting_at(const GrazingImpact& impact, dou
   return pt;
 }
 
+// The branch's motion at value p solved on `impact` (an impact of the motion here), from the
+// state just before that impact here: a step of the branch, its bifurcations not yet noted. None
+// where it is not found.
+std::optional<Continuation::Step> Continuation::step_on_impact(const GrazingImpact& impact,
+                                                               double p) const {
+  double time = 0.0;
+  for (const Event& e : here_.map.run.events)
+    if (e.kind == EventKind::limiter && e.limiter == impact.limiter) time = e.t;
+  const std::optional<Vec> before =
+      run_from(without_limiter(map_.at(map_.value(here_.v)), impact.limiter), map_.options(),
+               map_.state(here_.v), time);
+  if (!before) return std::nullopt;
+  std::optional<Point> at = impacting_at(impact, p, time, *before);
+  if (!at) return std::nullopt;
+  Step next{std::move(*at), {}, {}};
+  next.t = tangent(next.point, t_);
+  next.sig = signature(next.point, next.t, map_.band());
+  return next;
+}
+
+// Takes `next` as the branch's next point, its bifurcations noted; false where it is past `to`
+// (the branch then ends there).
+bool Continuation::take(Step next) {
+  note_bifurcations(next);
+  if (past_to(next.point)) {
+    finish_at_to(next.point);
+    return false;
+  }
+  move_to(std::move(next));
+  return true;
+}
+
 // Just past a grazing from the non-impacting side the map's square root is still close: the
 // corrector's steps would crawl. The branch walks away from the grazing on the impact instead, at
 // distances doubling from 2e-3 to 0.032 of the range (not past `to`), each motion solved from the
@@ -771,24 +827,34 @@ void Continuation::walk_off_grazing(const GrazingImpact& impact, double grazing)
   for (double d = 2e-3; d < 0.05; d *= 2.0) {
     if (cancelled() || static_cast<int>(branch_.points.size()) >= spec_.max_points) return;
     const double p = grazing + way * std::min(d * std::abs(span_), std::abs(spec_.to - grazing));
-    double time = 0.0;
-    for (const Event& e : here_.map.run.events)
-      if (e.kind == EventKind::limiter && e.limiter == impact.limiter) time = e.t;
-    const std::optional<Vec> before =
-        run_from(without_limiter(map_.at(map_.value(here_.v)), impact.limiter), map_.options(),
-                 map_.state(here_.v), time);
-    if (!before) return;
-    const std::optional<Point> at = impacting_at(impact, p, time, *before);
-    if (!at) return;
-    Step next{*at, tangent(*at, t_), {}};
-    next.sig = signature(next.point, next.t, map_.band());
-    note_bifurcations(next);
-    if (past_to(next.point)) {
-      finish_at_to(next.point);
-      return;
-    }
-    move_to(std::move(next));
+    std::optional<Step> next = step_on_impact(impact, p);
+    if (!next || !take(std::move(*next))) return;
   }
+}
+
+// The corrector on the map crawls (steps below 1e-3) on a motion with a slow limiter impact (its
+// speed times the time scale below kNearGrazing): near a grazing the map's square root leaves
+// Newton's method a small basin, and from a predictor off the branch it cycles between a motion
+// with the impact and one without. The next point is solved on that impact instead, smooth there,
+// a parameter step of walk_ of the range on (doubled after each success, halved after a failure,
+// from 1e-5 to 0.1); true where it was found (and taken: the branch may have reached `to`).
+bool Continuation::walk_on_impact() {
+  if (ds_ >= 1e-3 || walk_ < 1e-5) return false;
+  const Model here = map_.at(map_.value(here_.v));
+  for (const Limiter& l : here.limiters)
+    if (l.mobile) return false;
+  const SlowImpact slow = slowest_impact(here_.map.run);
+  if (slow.pellet < 0 || slow.speed * time_scale(here) > kNearGrazing) return false;
+  const double from = map_.value(here_.v);
+  const double p = from + heading() * std::min(walk_ * std::abs(span_), std::abs(spec_.to - from));
+  std::optional<Step> next = step_on_impact(slow, p);
+  if (!next || slowest_impact(next->point.map.run).limiter != slow.limiter) {
+    walk_ /= 2.0;
+    return false;
+  }
+  walk_ = std::min(0.1, 2.0 * walk_);
+  take(std::move(*next));
+  return true;
 }
 
 // Records a grazing at `value`, where the motion's state on the section is x, approached from the
@@ -877,11 +943,19 @@ void Continuation::note_bifurcations(const Step& next) {
   }
 }
 
-// The last point exactly at `to`, where the branch crosses it.
+// The last point exactly at `to`, where the branch crosses it: corrected from `next` with the
+// parameter set to `to`, or, where Newton's method does not converge from there (a long last step
+// on a curved branch), from the point of the chord from here to `next` at `to`.
 void Continuation::finish_at_to(const Point& next) {
   Vec on = next.v;
   on[n_] = 1.0;
-  const Point end = correct(map_, on, along_parameter(), tol_);
+  Point end = correct(map_, on, along_parameter(), tol_);
+  if (!end.ok) {
+    const double share = (1.0 - here_.v[n_]) / (next.v[n_] - here_.v[n_]);
+    on = here_.v + share * (next.v - here_.v);
+    on[n_] = 1.0;
+    end = correct(map_, on, along_parameter(), tol_);
+  }
   branch_.points.push_back(branch_point(map_, end.ok ? end : next));
   branch_.reached = true;
   if (progress_) progress_(1.0);
