@@ -14,21 +14,31 @@
 namespace vibro {
 namespace {
 
-// The continuation works in scaled unknowns v = (x with speeds times sqrt(R/g), (p − p0)/span),
-// so that a step of arclength weighs angles, speeds and the parameter alike. The section lies
-// at time `phase` of the forcing: the stroboscopic map jumps where an impact crosses the section
-// (the state before it becomes the state after it), so the phase is kept away from the impacts.
+// The parameter's unit in the continuation's scaled unknowns, signed toward `to`: the span
+// to − p0, or the value's own size max(|p0|, 1) where the span is larger. Scaled by a far `to`'s
+// span, the smallest step (kStepMin of the unit) and the parameter's difference step (1e-6 of it)
+// would be far larger than the value: the branch could not take its first step. The span only
+// bounds where the walk ends, at the scaled value span/unit (1 where `to` is near).
+double parameter_unit(double p0, double span) {
+  return std::copysign(std::min(std::abs(span), std::max(std::abs(p0), 1.0)), span);
+}
+
+// The continuation works in scaled unknowns v = (x with speeds times sqrt(R/g), (p − p0)/unit),
+// so that a step of arclength weighs angles, speeds and the parameter alike (parameter_unit). The
+// section lies at time `phase` of the forcing: the stroboscopic map jumps where an impact crosses
+// the section (the state before it becomes the state after it), so the phase is kept away from the
+// impacts.
 class ScaledMap {
  public:
   ScaledMap(const Model& model, const SimOptions& options, int periods,
-            const std::string& parameter, double p0, double span,
+            const std::string& parameter, double p0, double unit,
             const std::atomic<bool>* cancel = nullptr)
       : model_(model),
         options_(options),
         periods_(periods),
         parameter_(parameter),
         p0_(p0),
-        span_(span),
+        unit_(unit),
         time_(time_scale(model)),
         cancel_(cancel) {}
 
@@ -46,11 +56,11 @@ class ScaledMap {
   int size() const { return 2 * model_.size(); }
   int periods() const { return periods_; }
   double phase() const { return phase_; }
-  double value(const Vec& v) const { return p0_ + span_ * v[size()]; }
+  double value(const Vec& v) const { return p0_ + unit_ * v[size()]; }
   Vec scaled(const Vec& x, double p) const {
     Vec v(size() + 1);
     for (int k = 0; k < size(); ++k) v[k] = x[k] * (k % 2 ? time_ : 1.0);
-    v[size()] = (p - p0_) / span_;
+    v[size()] = (p - p0_) / unit_;
     return v;
   }
   Vec state(const Vec& v) const {
@@ -88,11 +98,11 @@ class ScaledMap {
     pt.J.resize(n, n + 1);
     pt.J.leftCols(n) = D * (pt.map.jacobian - Mat::Identity(n, n)) * D.inverse();
     // The parameter's column by central differences of the map: the saltations give the state's.
-    const double h = 1e-6 * std::max(std::abs(p), std::abs(span_));
+    const double h = 1e-6 * std::max(std::abs(p), std::abs(unit_));
     const MapPoint up = stroboscopic_map(at(p + h), options_, periods_, state(v));
     const MapPoint down = stroboscopic_map(at(p - h), options_, periods_, state(v));
     if (!up.ok || !down.ok) return pt;
-    pt.J.col(n) = D * (up.image - down.image) / (2.0 * h) * span_;
+    pt.J.col(n) = D * (up.image - down.image) / (2.0 * h) * unit_;
     const Eigen::EigenSolver<Mat> eig(pt.map.jacobian, false);
     for (Eigen::Index k = 0; k < eig.eigenvalues().size(); ++k)
       pt.multipliers.push_back(eig.eigenvalues()[k]);
@@ -134,7 +144,7 @@ class ScaledMap {
   const SimOptions& options_;
   int periods_;
   std::string parameter_;
-  double p0_, span_, time_;
+  double p0_, unit_, time_;
   const std::atomic<bool>* cancel_;  // once set, every point is not ok: the walk ends soon
   double phase_ = 0.0;
   std::vector<bool> armed_ = armed_at_start(model_);  // the mobile limiters' at the phase
@@ -364,14 +374,14 @@ Point locate(const ScaledMap& map, BifurcationKind kind, const Point& here, cons
 // Past a period doubling (on the side where the branch is unstable, `past` = ±1), the period-2
 // motion it sheds: sought from the doubling's state moved along the eigenvector of the multiplier
 // −1, farther and farther until Newton's method finds a motion that one period does not return.
-void find_doubled(const ScaledMap& map, const Point& at, double past, double span, Bifurcation& b) {
+void find_doubled(const ScaledMap& map, const Point& at, double past, double unit, Bifurcation& b) {
   const Eigen::EigenSolver<Mat> eig(at.map.jacobian, true);
   Eigen::Index nearest = 0;
   for (Eigen::Index k = 1; k < eig.eigenvalues().size(); ++k)
     if (std::abs(eig.eigenvalues()[k] + 1.0) < std::abs(eig.eigenvalues()[nearest] + 1.0))
       nearest = k;
   const Vec v = eig.eigenvectors().col(nearest).real();
-  const double value = map.value(at.v) + past * 0.02 * std::abs(span);
+  const double value = map.value(at.v) + past * 0.02 * std::abs(unit);
   const Model m = map.plain(value);
   if (validate_model(m)) return;
   for (double a : {1e-2, 3e-2, 0.1, 0.3}) {
@@ -452,8 +462,9 @@ class Continuation {
         cancel_(cancel),
         section_(armed_as(model, start.armed)),
         p0_(*get_parameter(model, spec.parameter)),
-        span_(spec.to - p0_),
-        map_(section_, options, start.periods, spec.parameter, p0_, span_, cancel),
+        unit_(parameter_unit(p0_, spec.to - p0_)),
+        end_((spec.to - p0_) / unit_),
+        map_(section_, options, start.periods, spec.parameter, p0_, unit_, cancel),
         tol_(std::max(1e-10, 100.0 * options.rtol)),
         n_(map_.size()) {
     Vec x(n_);
@@ -461,7 +472,7 @@ class Continuation {
       x.segment(2 * i, 2) << start.state[i].phi, start.state[i].dphi;
     here_ = map_.evaluate(map_.scaled(x, p0_));
     t_ = Vec::Zero(n_ + 1);
-    t_[n_] = 1.0;  // toward `to`: the scaled parameter grows to 1
+    t_[n_] = 1.0;  // toward `to`: the scaled parameter grows to end_
   }
 
   OrbitBranch run();
@@ -490,7 +501,7 @@ class Continuation {
   void report_grazing(double value, const Vec& x, bool impacting);
   void restart_at(Point next);
   // The way the branch goes in the parameter's own units (+1: to larger values).
-  double heading() const { return t_[n_] * span_ > 0.0 ? 1.0 : -1.0; }
+  double heading() const { return t_[n_] * unit_ > 0.0 ? 1.0 : -1.0; }
   struct Grazing;
   std::optional<Grazing> grazing_across(const Step& next) const;
   struct Grazing {
@@ -510,7 +521,7 @@ class Continuation {
   std::vector<BranchPoint> walk_back(const Point& across, double step, double way) const;
   void note_bifurcations(const Step& next);
   bool past_to(const Point& next) const {
-    return (map_.value(next.v) - spec_.to) * (span_ > 0 ? 1 : -1) >= 0.0;
+    return (map_.value(next.v) - spec_.to) * (unit_ > 0 ? 1 : -1) >= 0.0;
   }
   void finish_at_to(const Point& next);
   void move_to(Step next);
@@ -525,7 +536,8 @@ class Continuation {
   const std::function<void(double)>& progress_;
   const std::atomic<bool>* cancel_;
   const Model section_;  // the limiters armed as at the start's section
-  const double p0_, span_;
+  const double p0_;
+  const double unit_, end_;  // the parameter's unit (parameter_unit) and `to` scaled
   ScaledMap map_;
   const double tol_;
   const int n_;
@@ -535,7 +547,7 @@ class Continuation {
   Signature sig_;
   double ds_ = 0.0;
   std::size_t jump_tried_at_ = 0;  // branch points when the last grazing jump was tried
-  double walk_ = 2e-3;             // walk_on_impact's step, of the range
+  double walk_ = 2e-3;             // walk_on_impact's step, of the unit
 };
 
 OrbitBranch Continuation::run() {
@@ -697,7 +709,7 @@ std::optional<Continuation::Grazing> Continuation::grazing_across(const Step& ne
 }
 
 // The grazing of `impact` ahead of the branch: the free motion (the scene without that limiter) at
-// the branch's value and at values further on (1e-3 to 0.1 of the range, not past `to`) until the
+// the branch's value and at values further on (1e-3 to 0.1 of the unit, not past `to`) until the
 // overshoot of its turn past the limiter changes sign, located by refine_grazing. `impacting`: the
 // branch's motion has that impact (the free motion overshoots here). None where the sign does not
 // change.
@@ -708,7 +720,7 @@ std::optional<Continuation::Grazing> Continuation::grazing_ahead(const GrazingIm
   const std::optional<FreeMotion> here = free_at(impact, angle, p0, map_.state(here_.v));
   if (!here || (here->overshoot > 0.0) != impacting) return std::nullopt;
   for (double d : {1e-3, 1e-2, 3e-2, 0.1}) {
-    double p = p0 + heading() * d * std::abs(span_);
+    double p = p0 + heading() * d * std::abs(unit_);
     if ((p - spec_.to) * heading() > 0.0) p = spec_.to;
     const std::optional<FreeMotion> there = free_at(impact, angle, p, here->x);
     if (!there || (there->overshoot > 0.0) == impacting) continue;
@@ -738,7 +750,7 @@ bool Continuation::jump_from_impacting(const SlowImpact& slow) {
   if (!g) return false;
   const double angle = map_.at(map_.value(here_.v)).limiters[slow.limiter].angle;
   const double pn =
-      g->value + heading() * std::min(1e-3 * std::abs(span_), std::abs(spec_.to - g->value));
+      g->value + heading() * std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
   const std::optional<FreeMotion> n = free_at(slow, angle, pn, g->beyond);
   if (!n || n->overshoot >= 0.0) return false;
   Point next = map_.evaluate(map_.scaled(n->x, pn));
@@ -759,7 +771,7 @@ bool Continuation::jump_from_free() {
   const std::optional<Grazing> g = grazing_ahead(turn, false);
   if (!g) return false;
   const double pn =
-      g->value + heading() * std::min(1e-3 * std::abs(span_), std::abs(spec_.to - g->value));
+      g->value + heading() * std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
   const std::optional<Vec> before =
       run_from(without_limiter(map_.at(pn), turn.limiter), map_.options(), g->x, g->turn);
   if (!before) return false;
@@ -819,14 +831,14 @@ bool Continuation::take(Step next) {
 
 // Just past a grazing from the non-impacting side the map's square root is still close: the
 // corrector's steps would crawl. The branch walks away from the grazing on the impact instead, at
-// distances doubling from 2e-3 to 0.032 of the range (not past `to`), each motion solved from the
+// distances doubling from 2e-3 to 0.032 of the unit (not past `to`), each motion solved from the
 // last one's impact and taken as a step of the branch, its bifurcations noted; it stops early
 // where a motion is not found, and the corrector goes on from the last.
 void Continuation::walk_off_grazing(const GrazingImpact& impact, double grazing) {
   const double way = heading();
   for (double d = 2e-3; d < 0.05; d *= 2.0) {
     if (cancelled() || static_cast<int>(branch_.points.size()) >= spec_.max_points) return;
-    const double p = grazing + way * std::min(d * std::abs(span_), std::abs(spec_.to - grazing));
+    const double p = grazing + way * std::min(d * std::abs(unit_), std::abs(spec_.to - grazing));
     std::optional<Step> next = step_on_impact(impact, p);
     if (!next || !take(std::move(*next))) return;
   }
@@ -836,7 +848,7 @@ void Continuation::walk_off_grazing(const GrazingImpact& impact, double grazing)
 // speed times the time scale below kNearGrazing): near a grazing the map's square root leaves
 // Newton's method a small basin, and from a predictor off the branch it cycles between a motion
 // with the impact and one without. The next point is solved on that impact instead, smooth there,
-// a parameter step of walk_ of the range on (doubled after each success, halved after a failure,
+// a parameter step of walk_ of the unit on (doubled after each success, halved after a failure,
 // from 1e-5 to 0.1); true where it was found (and taken: the branch may have reached `to`).
 bool Continuation::walk_on_impact() {
   if (ds_ >= 1e-3 || walk_ < 1e-5) return false;
@@ -846,7 +858,7 @@ bool Continuation::walk_on_impact() {
   const SlowImpact slow = slowest_impact(here_.map.run);
   if (slow.pellet < 0 || slow.speed * time_scale(here) > kNearGrazing) return false;
   const double from = map_.value(here_.v);
-  const double p = from + heading() * std::min(walk_ * std::abs(span_), std::abs(spec_.to - from));
+  const double p = from + heading() * std::min(walk_ * std::abs(unit_), std::abs(spec_.to - from));
   std::optional<Step> next = step_on_impact(slow, p);
   if (!next || slowest_impact(next->point.map.run).limiter != slow.limiter) {
     walk_ /= 2.0;
@@ -928,7 +940,7 @@ void Continuation::note_bifurcations(const Step& next) {
       value = exact->value;
       state = map_.section_state(map_.scaled(exact->x, value));
     }
-    if (grazing && std::abs(value - *grazing) <= 1e-6 * std::abs(span_)) continue;
+    if (grazing && std::abs(value - *grazing) <= 1e-6 * std::abs(unit_)) continue;
     if (!confirmed(kind, at)) continue;
     if (kind == BifurcationKind::grazing) grazing = value;
     Bifurcation b{kind, value, std::move(state), {}, {}, {}};
@@ -937,8 +949,8 @@ void Continuation::note_bifurcations(const Step& next) {
     if (kind == BifurcationKind::period_doubling)
       find_doubled(map_, at,
                    (inside_unit_circle(here_.multipliers, map_.band()) ? 1.0 : -1.0) *
-                       (t_[n_] * span_ > 0.0 ? 1.0 : -1.0),
-                   span_, b);
+                       (t_[n_] * unit_ > 0.0 ? 1.0 : -1.0),
+                   unit_, b);
     branch_.bifurcations.push_back(std::move(b));
   }
 }
@@ -948,12 +960,12 @@ void Continuation::note_bifurcations(const Step& next) {
 // on a curved branch), from the point of the chord from here to `next` at `to`.
 void Continuation::finish_at_to(const Point& next) {
   Vec on = next.v;
-  on[n_] = 1.0;
+  on[n_] = end_;
   Point end = correct(map_, on, along_parameter(), tol_);
   if (!end.ok) {
-    const double share = (1.0 - here_.v[n_]) / (next.v[n_] - here_.v[n_]);
+    const double share = (end_ - here_.v[n_]) / (next.v[n_] - here_.v[n_]);
     on = here_.v + share * (next.v - here_.v);
-    on[n_] = 1.0;
+    on[n_] = end_;
     end = correct(map_, on, along_parameter(), tol_);
   }
   branch_.points.push_back(branch_point(map_, end.ok ? end : next));
@@ -967,12 +979,12 @@ void Continuation::move_to(Step next) {
   keep_clear();
   sig_ = signature(here_, t_, map_.band());
   // Steps shortened to a crawl (before a grazing) add nothing a figure shows.
-  if (std::abs(map_.value(here_.v) - branch_.points.back().value) > 1e-6 * std::abs(span_) ||
+  if (std::abs(map_.value(here_.v) - branch_.points.back().value) > 1e-6 * std::abs(unit_) ||
       ds_ > 1e-4)
     branch_.points.push_back(branch_point(map_, here_));
   if (progress_)
     progress_(std::max(static_cast<double>(branch_.points.size()) / spec_.max_points,
-                       std::clamp(here_.v[n_], 0.0, 1.0)));
+                       std::clamp(here_.v[n_] / end_, 0.0, 1.0)));
   ds_ = std::min(kStepMax, ds_ * 1.5);
 }
 
