@@ -6,10 +6,12 @@
 namespace vibro::render {
 namespace {
 
-// A speed `after` that is `before` turned over by restitution k, within 20% (and 0.05 rad/s).
+// A speed `after` that is `before` turned over by restitution k, within 20% (and 5% of `before`,
+// for a small k). Relative only: at a grazing the section's speed passes through zero with no
+// jump (an impact of zero speed), and speeds of round-off size change sign there.
 bool rebound(double before, double after, double k) {
   if (!(before * after < 0.0)) return false;
-  return std::abs(-after - k * before) <= 0.2 * k * std::abs(before) + 0.05;
+  return std::abs(-after - k * before) <= (0.2 * k + 0.05) * std::abs(before);
 }
 
 // The section point lies near the limiter: within 0.25 rad of its angle (mod 2π). A section just

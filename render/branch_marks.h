@@ -16,7 +16,8 @@ namespace vibro::render {
 
 // The indices k where φ̇ of `pellet` jumps from point k−1 to k because an impact crossed the
 // section time between them: both lie near one limiter acting on the pellet, and φ̇ turns over
-// with the limiter's restitution (−k φ̇ either way). Empty for a limiter with k = 0.
+// with the limiter's restitution (−k φ̇ either way, to 20 % and 5 % of φ̇): not where φ̇ passes
+// through zero at a grazing. Empty for a limiter with k = 0.
 std::vector<std::size_t> section_crossings(const OrbitBranch& branch, const Model& model,
                                            int pellet);
 

@@ -92,6 +92,10 @@ void draw_branch_line(cairo_t* cr, const Transform& tr, const OrbitBranch& branc
   if (any_unstable) legend.push_back({"unstable periodic motion", kInk, Swatch::dashed_line});
   if (ends.empty()) return;
   draw_markers(cr, ends, MarkerShape::circle, style.px(3.5), kWhite, kInk, style.px(1.0));
+  // The legend names only what shows: a break outside the plot's window is clipped away.
+  const Rect area = tr.area();
+  if (std::none_of(ends.begin(), ends.end(), [&](const Point& p) { return area.contains(p); }))
+    return;
   legend.push_back({"break: an impact crosses t = kT there (\u03c6\u0307 jumps; no bifurcation)",
                     kWhite, Swatch::marker, MarkerShape::circle, kInk});
 }

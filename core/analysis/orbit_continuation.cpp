@@ -14,21 +14,31 @@
 namespace vibro {
 namespace {
 
-// The continuation works in scaled unknowns v = (x with speeds times sqrt(R/g), (p − p0)/span),
-// so that a step of arclength weighs angles, speeds and the parameter alike. The section lies
-// at time `phase` of the forcing: the stroboscopic map jumps where an impact crosses the section
-// (the state before it becomes the state after it), so the phase is kept away from the impacts.
+// The parameter's unit in the continuation's scaled unknowns, signed toward `to`: the span
+// to − p0, or the value's own size max(|p0|, 1) where the span is larger. Scaled by a far `to`'s
+// span, the smallest step (kStepMin of the unit) and the parameter's difference step (1e-6 of it)
+// would be far larger than the value: the branch could not take its first step. The span only
+// bounds where the walk ends, at the scaled value span/unit (1 where `to` is near).
+double parameter_unit(double p0, double span) {
+  return std::copysign(std::min(std::abs(span), std::max(std::abs(p0), 1.0)), span);
+}
+
+// The continuation works in scaled unknowns v = (x with speeds times sqrt(R/g), (p − p0)/unit),
+// so that a step of arclength weighs angles, speeds and the parameter alike (parameter_unit). The
+// section lies at time `phase` of the forcing: the stroboscopic map jumps where an impact crosses
+// the section (the state before it becomes the state after it), so the phase is kept away from the
+// impacts.
 class ScaledMap {
  public:
   ScaledMap(const Model& model, const SimOptions& options, int periods,
-            const std::string& parameter, double p0, double span,
+            const std::string& parameter, double p0, double unit,
             const std::atomic<bool>* cancel = nullptr)
       : model_(model),
         options_(options),
         periods_(periods),
         parameter_(parameter),
         p0_(p0),
-        span_(span),
+        unit_(unit),
         time_(time_scale(model)),
         cancel_(cancel) {}
 
@@ -46,11 +56,11 @@ class ScaledMap {
   int size() const { return 2 * model_.size(); }
   int periods() const { return periods_; }
   double phase() const { return phase_; }
-  double value(const Vec& v) const { return p0_ + span_ * v[size()]; }
+  double value(const Vec& v) const { return p0_ + unit_ * v[size()]; }
   Vec scaled(const Vec& x, double p) const {
     Vec v(size() + 1);
     for (int k = 0; k < size(); ++k) v[k] = x[k] * (k % 2 ? time_ : 1.0);
-    v[size()] = (p - p0_) / span_;
+    v[size()] = (p - p0_) / unit_;
     return v;
   }
   Vec state(const Vec& v) const {
@@ -88,11 +98,11 @@ class ScaledMap {
     pt.J.resize(n, n + 1);
     pt.J.leftCols(n) = D * (pt.map.jacobian - Mat::Identity(n, n)) * D.inverse();
     // The parameter's column by central differences of the map: the saltations give the state's.
-    const double h = 1e-6 * std::max(std::abs(p), std::abs(span_));
+    const double h = 1e-6 * std::max(std::abs(p), std::abs(unit_));
     const MapPoint up = stroboscopic_map(at(p + h), options_, periods_, state(v));
     const MapPoint down = stroboscopic_map(at(p - h), options_, periods_, state(v));
     if (!up.ok || !down.ok) return pt;
-    pt.J.col(n) = D * (up.image - down.image) / (2.0 * h) * span_;
+    pt.J.col(n) = D * (up.image - down.image) / (2.0 * h) * unit_;
     const Eigen::EigenSolver<Mat> eig(pt.map.jacobian, false);
     for (Eigen::Index k = 0; k < eig.eigenvalues().size(); ++k)
       pt.multipliers.push_back(eig.eigenvalues()[k]);
@@ -134,7 +144,7 @@ class ScaledMap {
   const SimOptions& options_;
   int periods_;
   std::string parameter_;
-  double p0_, span_, time_;
+  double p0_, unit_, time_;
   const std::atomic<bool>* cancel_;  // once set, every point is not ok: the walk ends soon
   double phase_ = 0.0;
   std::vector<bool> armed_ = armed_at_start(model_);  // the mobile limiters' at the phase
@@ -235,17 +245,49 @@ bool crossed(BifurcationKind k, const Signature& a, const Signature& b) {
   return false;
 }
 
-// The nearest an impact comes to the section, and the middle of the longest stretch without
-// impacts, as times from the section (s).
+// Where a motion is near a grazing: an impact's speed (times the time scale) or a turn's distance
+// to a limiter below this, rad.
+constexpr double kNearGrazing = 1e-3;
+
+// The turn of the motion that comes nearest to a limiter acting on its pellet, as the impact it
+// becomes where it reaches the limiter, its distance to it (rad) and its time (s from the
+// section); none without a turn.
+struct Turn : GrazingImpact {
+  double gap = INFINITY;
+  double t = 0.0;
+};
+
+Turn nearest_turn(const Model& model, const RunResult& run) {
+  Turn g;
+  double nearest = INFINITY;
+  for (const Event& e : run.events) {
+    if (e.kind != EventKind::reversal) continue;
+    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
+      if (!model.limiters[l].acts_on(e.pellets[0])) continue;
+      const double gap = wrap_angle(model.limiters[l].angle - e.phi);
+      if (std::abs(gap) >= nearest) continue;
+      nearest = std::abs(gap);
+      g = {{e.pellets[0], l, gap > 0.0 ? 1.0 : -1.0}, std::abs(gap), e.t};
+    }
+  }
+  return g;
+}
+
+// The nearest an impact, or a turn near a grazing (kNearGrazing), comes to the section, and the
+// middle of the longest stretch without them, as times from the section (s). Such a turn is where
+// an impact appears at the grazing: on the section, the grazing motion's state would lie on the
+// limiter, and the impacting motions past it would start at their impact.
 struct Clearance {
   double nearest = INFINITY;
   double middle = 0.0;
 };
 
-Clearance clearance(const RunResult& run, double span) {
+Clearance clearance(const Model& model, const RunResult& run, double span) {
   std::vector<double> times = {0.0};
   for (const Event& e : run.events)
     if (is_impact(e)) times.push_back(e.t);
+  if (const Turn turn = nearest_turn(model, run); turn.gap < kNearGrazing) times.push_back(turn.t);
+  std::sort(times.begin(), times.end());
   times.push_back(span);
   Clearance c;
   double longest = -1.0;
@@ -332,14 +374,14 @@ Point locate(const ScaledMap& map, BifurcationKind kind, const Point& here, cons
 // Past a period doubling (on the side where the branch is unstable, `past` = ±1), the period-2
 // motion it sheds: sought from the doubling's state moved along the eigenvector of the multiplier
 // −1, farther and farther until Newton's method finds a motion that one period does not return.
-void find_doubled(const ScaledMap& map, const Point& at, double past, double span, Bifurcation& b) {
+void find_doubled(const ScaledMap& map, const Point& at, double past, double unit, Bifurcation& b) {
   const Eigen::EigenSolver<Mat> eig(at.map.jacobian, true);
   Eigen::Index nearest = 0;
   for (Eigen::Index k = 1; k < eig.eigenvalues().size(); ++k)
     if (std::abs(eig.eigenvalues()[k] + 1.0) < std::abs(eig.eigenvalues()[nearest] + 1.0))
       nearest = k;
   const Vec v = eig.eigenvectors().col(nearest).real();
-  const double value = map.value(at.v) + past * 0.02 * std::abs(span);
+  const double value = map.value(at.v) + past * 0.02 * std::abs(unit);
   const Model m = map.plain(value);
   if (validate_model(m)) return;
   for (double a : {1e-2, 3e-2, 0.1, 0.3}) {
@@ -378,24 +420,6 @@ SlowImpact slowest_impact(const RunResult& run) {
       s = {{e.pellets[0], e.limiter, e.dphi_before[0] > 0.0 ? 1.0 : -1.0},
            std::abs(e.dphi_before[0])};
   return s;
-}
-
-// The turn of the motion that comes nearest to a limiter acting on its pellet, as the impact it
-// becomes where it reaches the limiter; none without a turn.
-GrazingImpact nearest_turn(const Model& model, const RunResult& run) {
-  GrazingImpact g;
-  double nearest = INFINITY;
-  for (const Event& e : run.events) {
-    if (e.kind != EventKind::reversal) continue;
-    for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
-      if (!model.limiters[l].acts_on(e.pellets[0])) continue;
-      const double gap = wrap_angle(model.limiters[l].angle - e.phi);
-      if (std::abs(gap) >= nearest) continue;
-      nearest = std::abs(gap);
-      g = {e.pellets[0], l, gap > 0.0 ? 1.0 : -1.0};
-    }
-  }
-  return g;
 }
 
 // The free motion near x at the model m and how far its turn goes past the limiter (rad, > 0:
@@ -438,8 +462,9 @@ class Continuation {
         cancel_(cancel),
         section_(armed_as(model, start.armed)),
         p0_(*get_parameter(model, spec.parameter)),
-        span_(spec.to - p0_),
-        map_(section_, options, start.periods, spec.parameter, p0_, span_, cancel),
+        unit_(parameter_unit(p0_, spec.to - p0_)),
+        end_((spec.to - p0_) / unit_),
+        map_(section_, options, start.periods, spec.parameter, p0_, unit_, cancel),
         tol_(std::max(1e-10, 100.0 * options.rtol)),
         n_(map_.size()) {
     Vec x(n_);
@@ -447,7 +472,7 @@ class Continuation {
       x.segment(2 * i, 2) << start.state[i].phi, start.state[i].dphi;
     here_ = map_.evaluate(map_.scaled(x, p0_));
     t_ = Vec::Zero(n_ + 1);
-    t_[n_] = 1.0;  // toward `to`: the scaled parameter grows to 1
+    t_[n_] = 1.0;  // toward `to`: the scaled parameter grows to end_
   }
 
   OrbitBranch run();
@@ -469,11 +494,14 @@ class Continuation {
   bool jump_from_free();
   std::optional<Point> impacting_at(const GrazingImpact& impact, double p, double time,
                                     const Vec& before) const;
+  std::optional<Step> step_on_impact(const GrazingImpact& impact, double p) const;
+  bool take(Step next);
   void walk_off_grazing(const GrazingImpact& impact, double grazing);
+  bool walk_on_impact();
   void report_grazing(double value, const Vec& x, bool impacting);
   void restart_at(Point next);
   // The way the branch goes in the parameter's own units (+1: to larger values).
-  double heading() const { return t_[n_] * span_ > 0.0 ? 1.0 : -1.0; }
+  double heading() const { return t_[n_] * unit_ > 0.0 ? 1.0 : -1.0; }
   struct Grazing;
   std::optional<Grazing> grazing_across(const Step& next) const;
   struct Grazing {
@@ -493,7 +521,7 @@ class Continuation {
   std::vector<BranchPoint> walk_back(const Point& across, double step, double way) const;
   void note_bifurcations(const Step& next);
   bool past_to(const Point& next) const {
-    return (map_.value(next.v) - spec_.to) * (span_ > 0 ? 1 : -1) >= 0.0;
+    return (map_.value(next.v) - spec_.to) * (unit_ > 0 ? 1 : -1) >= 0.0;
   }
   void finish_at_to(const Point& next);
   void move_to(Step next);
@@ -508,7 +536,8 @@ class Continuation {
   const std::function<void(double)>& progress_;
   const std::atomic<bool>* cancel_;
   const Model section_;  // the limiters armed as at the start's section
-  const double p0_, span_;
+  const double p0_;
+  const double unit_, end_;  // the parameter's unit (parameter_unit) and `to` scaled
   ScaledMap map_;
   const double tol_;
   const int n_;
@@ -518,6 +547,7 @@ class Continuation {
   Signature sig_;
   double ds_ = 0.0;
   std::size_t jump_tried_at_ = 0;  // branch points when the last grazing jump was tried
+  double walk_ = 2e-3;             // walk_on_impact's step, of the unit
 };
 
 OrbitBranch Continuation::run() {
@@ -550,6 +580,10 @@ OrbitBranch Continuation::run() {
     }
     Step next = step_to(here_.v + ds_ * t_);
     if (!next.point.ok) {
+      if (walk_on_impact()) {
+        if (branch_.reached) return branch_;
+        continue;
+      }
       ds_ /= 2.0;
       if (ds_ >= kStepMin || cross_grazing()) continue;
       return branch_;
@@ -581,10 +615,12 @@ Continuation::Step Continuation::step_to(const Vec& predicted) const {
   return next;
 }
 
-// Keeps the section a twentieth of a period or more away from every impact.
+// Keeps the section a twentieth of a period or more away from every impact and from the turn
+// that comes nearest to a limiter.
 void Continuation::keep_clear() {
-  const double T = forcing_period(map_.at(map_.value(here_.v)));
-  const Clearance c = clearance(here_.map.run, map_.periods() * T);
+  const Model m = map_.at(map_.value(here_.v));
+  const double T = forcing_period(m);
+  const Clearance c = clearance(m, here_.map.run, map_.periods() * T);
   if (c.nearest >= 0.05 * T) return;
   const Vec moved = map_.shift_phase(here_, c.middle);
   here_ = map_.evaluate(map_.scaled(moved, map_.value(here_.v)));
@@ -603,12 +639,12 @@ bool Continuation::cross_grazing() {
   std::ostringstream why;
   why << "the branch could not be followed past " << spec_.parameter << " = "
       << map_.value(here_.v);
-  if (grazing_distance(map_.at(map_.value(here_.v)), here_.map.run, here_.map.x) > 1e-3) {
+  if (grazing_distance(map_.at(map_.value(here_.v)), here_.map.run, here_.map.x) > kNearGrazing) {
     branch_.message = why.str() + ": no nearby motion continues it";
     return false;
   }
   const Model here = map_.at(map_.value(here_.v));
-  const bool impacting = slowest_impact(here_.map.run).speed * time_scale(here) <= 1e-3;
+  const bool impacting = slowest_impact(here_.map.run).speed * time_scale(here) <= kNearGrazing;
   branch_.bifurcations.push_back({BifurcationKind::grazing,
                                   map_.value(here_.v),
                                   map_.section_state(here_.v),
@@ -673,7 +709,7 @@ std::optional<Continuation::Grazing> Continuation::grazing_across(const Step& ne
 }
 
 // The grazing of `impact` ahead of the branch: the free motion (the scene without that limiter) at
-// the branch's value and at values further on (1e-3 to 0.1 of the range, not past `to`) until the
+// the branch's value and at values further on (1e-3 to 0.1 of the unit, not past `to`) until the
 // overshoot of its turn past the limiter changes sign, located by refine_grazing. `impacting`: the
 // branch's motion has that impact (the free motion overshoots here). None where the sign does not
 // change.
@@ -684,7 +720,7 @@ std::optional<Continuation::Grazing> Continuation::grazing_ahead(const GrazingIm
   const std::optional<FreeMotion> here = free_at(impact, angle, p0, map_.state(here_.v));
   if (!here || (here->overshoot > 0.0) != impacting) return std::nullopt;
   for (double d : {1e-3, 1e-2, 3e-2, 0.1}) {
-    double p = p0 + heading() * d * std::abs(span_);
+    double p = p0 + heading() * d * std::abs(unit_);
     if ((p - spec_.to) * heading() > 0.0) p = spec_.to;
     const std::optional<FreeMotion> there = free_at(impact, angle, p, here->x);
     if (!there || (there->overshoot > 0.0) == impacting) continue;
@@ -714,7 +750,7 @@ bool Continuation::jump_from_impacting(const SlowImpact& slow) {
   if (!g) return false;
   const double angle = map_.at(map_.value(here_.v)).limiters[slow.limiter].angle;
   const double pn =
-      g->value + heading() * std::min(1e-3 * std::abs(span_), std::abs(spec_.to - g->value));
+      g->value + heading() * std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
   const std::optional<FreeMotion> n = free_at(slow, angle, pn, g->beyond);
   if (!n || n->overshoot >= 0.0) return false;
   Point next = map_.evaluate(map_.scaled(n->x, pn));
@@ -730,12 +766,12 @@ bool Continuation::jump_from_impacting(const SlowImpact& slow) {
 // the grazing is solved on the impact instead (core/analysis/grazing_orbit.h), from the grazing
 // motion, and the branch goes on from it.
 bool Continuation::jump_from_free() {
-  const GrazingImpact turn = nearest_turn(map_.at(map_.value(here_.v)), here_.map.run);
+  const Turn turn = nearest_turn(map_.at(map_.value(here_.v)), here_.map.run);
   if (turn.pellet < 0) return false;
   const std::optional<Grazing> g = grazing_ahead(turn, false);
   if (!g) return false;
   const double pn =
-      g->value + heading() * std::min(1e-3 * std::abs(span_), std::abs(spec_.to - g->value));
+      g->value + heading() * std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
   const std::optional<Vec> before =
       run_from(without_limiter(map_.at(pn), turn.limiter), map_.options(), g->x, g->turn);
   if (!before) return false;
@@ -761,34 +797,76 @@ std::optional<Point> Continuation::impacting_at(const GrazingImpact& impact, dou
   return pt;
 }
 
+// The branch's motion at value p solved on `impact` (an impact of the motion here), from the
+// state just before that impact here: a step of the branch, its bifurcations not yet noted. None
+// where it is not found.
+std::optional<Continuation::Step> Continuation::step_on_impact(const GrazingImpact& impact,
+                                                               double p) const {
+  double time = 0.0;
+  for (const Event& e : here_.map.run.events)
+    if (e.kind == EventKind::limiter && e.limiter == impact.limiter) time = e.t;
+  const std::optional<Vec> before =
+      run_from(without_limiter(map_.at(map_.value(here_.v)), impact.limiter), map_.options(),
+               map_.state(here_.v), time);
+  if (!before) return std::nullopt;
+  std::optional<Point> at = impacting_at(impact, p, time, *before);
+  if (!at) return std::nullopt;
+  Step next{std::move(*at), {}, {}};
+  next.t = tangent(next.point, t_);
+  next.sig = signature(next.point, next.t, map_.band());
+  return next;
+}
+
+// Takes `next` as the branch's next point, its bifurcations noted; false where it is past `to`
+// (the branch then ends there).
+bool Continuation::take(Step next) {
+  note_bifurcations(next);
+  if (past_to(next.point)) {
+    finish_at_to(next.point);
+    return false;
+  }
+  move_to(std::move(next));
+  return true;
+}
+
 // Just past a grazing from the non-impacting side the map's square root is still close: the
 // corrector's steps would crawl. The branch walks away from the grazing on the impact instead, at
-// distances doubling from 2e-3 to 0.032 of the range (not past `to`), each motion solved from the
+// distances doubling from 2e-3 to 0.032 of the unit (not past `to`), each motion solved from the
 // last one's impact and taken as a step of the branch, its bifurcations noted; it stops early
 // where a motion is not found, and the corrector goes on from the last.
 void Continuation::walk_off_grazing(const GrazingImpact& impact, double grazing) {
   const double way = heading();
   for (double d = 2e-3; d < 0.05; d *= 2.0) {
     if (cancelled() || static_cast<int>(branch_.points.size()) >= spec_.max_points) return;
-    const double p = grazing + way * std::min(d * std::abs(span_), std::abs(spec_.to - grazing));
-    double time = 0.0;
-    for (const Event& e : here_.map.run.events)
-      if (e.kind == EventKind::limiter && e.limiter == impact.limiter) time = e.t;
-    const std::optional<Vec> before =
-        run_from(without_limiter(map_.at(map_.value(here_.v)), impact.limiter), map_.options(),
-                 map_.state(here_.v), time);
-    if (!before) return;
-    const std::optional<Point> at = impacting_at(impact, p, time, *before);
-    if (!at) return;
-    Step next{*at, tangent(*at, t_), {}};
-    next.sig = signature(next.point, next.t, map_.band());
-    note_bifurcations(next);
-    if (past_to(next.point)) {
-      finish_at_to(next.point);
-      return;
-    }
-    move_to(std::move(next));
+    const double p = grazing + way * std::min(d * std::abs(unit_), std::abs(spec_.to - grazing));
+    std::optional<Step> next = step_on_impact(impact, p);
+    if (!next || !take(std::move(*next))) return;
   }
+}
+
+// The corrector on the map crawls (steps below 1e-3) on a motion with a slow limiter impact (its
+// speed times the time scale below kNearGrazing): near a grazing the map's square root leaves
+// Newton's method a small basin, and from a predictor off the branch it cycles between a motion
+// with the impact and one without. The next point is solved on that impact instead, smooth there,
+// a parameter step of walk_ of the unit on (doubled after each success, halved after a failure,
+// from 1e-5 to 0.1); true where it was found (and taken: the branch may have reached `to`).
+bool Continuation::walk_on_impact() {
+  if (ds_ >= 1e-3 || walk_ < 1e-5) return false;
+  const Model here = map_.at(map_.value(here_.v));
+  for (const Limiter& l : here.limiters)
+    if (l.mobile) return false;
+  const SlowImpact slow = slowest_impact(here_.map.run);
+  if (slow.pellet < 0 || slow.speed * time_scale(here) > kNearGrazing) return false;
+  const double from = map_.value(here_.v);
+  const double p = from + heading() * std::min(walk_ * std::abs(unit_), std::abs(spec_.to - from));
+  std::optional<Step> next = step_on_impact(slow, p);
+  if (!next || slowest_impact(next->point.map.run).limiter != slow.limiter) {
+    walk_ /= 2.0;
+    return false;
+  }
+  walk_ = std::min(0.1, 2.0 * walk_);
+  take(std::move(*next));
+  return true;
 }
 
 // Records a grazing at `value`, where the motion's state on the section is x, approached from the
@@ -862,7 +940,7 @@ void Continuation::note_bifurcations(const Step& next) {
       value = exact->value;
       state = map_.section_state(map_.scaled(exact->x, value));
     }
-    if (grazing && std::abs(value - *grazing) <= 1e-6 * std::abs(span_)) continue;
+    if (grazing && std::abs(value - *grazing) <= 1e-6 * std::abs(unit_)) continue;
     if (!confirmed(kind, at)) continue;
     if (kind == BifurcationKind::grazing) grazing = value;
     Bifurcation b{kind, value, std::move(state), {}, {}, {}};
@@ -871,17 +949,25 @@ void Continuation::note_bifurcations(const Step& next) {
     if (kind == BifurcationKind::period_doubling)
       find_doubled(map_, at,
                    (inside_unit_circle(here_.multipliers, map_.band()) ? 1.0 : -1.0) *
-                       (t_[n_] * span_ > 0.0 ? 1.0 : -1.0),
-                   span_, b);
+                       (t_[n_] * unit_ > 0.0 ? 1.0 : -1.0),
+                   unit_, b);
     branch_.bifurcations.push_back(std::move(b));
   }
 }
 
-// The last point exactly at `to`, where the branch crosses it.
+// The last point exactly at `to`, where the branch crosses it: corrected from `next` with the
+// parameter set to `to`, or, where Newton's method does not converge from there (a long last step
+// on a curved branch), from the point of the chord from here to `next` at `to`.
 void Continuation::finish_at_to(const Point& next) {
   Vec on = next.v;
-  on[n_] = 1.0;
-  const Point end = correct(map_, on, along_parameter(), tol_);
+  on[n_] = end_;
+  Point end = correct(map_, on, along_parameter(), tol_);
+  if (!end.ok) {
+    const double share = (end_ - here_.v[n_]) / (next.v[n_] - here_.v[n_]);
+    on = here_.v + share * (next.v - here_.v);
+    on[n_] = end_;
+    end = correct(map_, on, along_parameter(), tol_);
+  }
   branch_.points.push_back(branch_point(map_, end.ok ? end : next));
   branch_.reached = true;
   if (progress_) progress_(1.0);
@@ -893,12 +979,12 @@ void Continuation::move_to(Step next) {
   keep_clear();
   sig_ = signature(here_, t_, map_.band());
   // Steps shortened to a crawl (before a grazing) add nothing a figure shows.
-  if (std::abs(map_.value(here_.v) - branch_.points.back().value) > 1e-6 * std::abs(span_) ||
+  if (std::abs(map_.value(here_.v) - branch_.points.back().value) > 1e-6 * std::abs(unit_) ||
       ds_ > 1e-4)
     branch_.points.push_back(branch_point(map_, here_));
   if (progress_)
     progress_(std::max(static_cast<double>(branch_.points.size()) / spec_.max_points,
-                       std::clamp(here_.v[n_], 0.0, 1.0)));
+                       std::clamp(here_.v[n_] / end_, 0.0, 1.0)));
   ds_ = std::min(kStepMax, ds_ * 1.5);
 }
 

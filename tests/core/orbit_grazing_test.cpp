@@ -196,17 +196,23 @@ ImpactingMotion impacting_period_one(double f, double Omega, double psi, double 
 // onto. Now it crosses: the grazing is reported once, where A = δ, approached from the side
 // without the impact, and the branch goes on with the impacting motions to `to`, equal to the
 // closed form above (to O(δ²) of the pendulum's nonlinearity: 1e-9 rad, 2e-8 rad/s, where they
-// differ from the free motion's by 4e-7 rad and 1e-6 rad/s and more). Reproducers 1 and 3 as
-// the issue gives them, each from its non-impacting end.
+// differ from the free motion's by 4e-7 rad and 1e-6 rad/s and more), and none on the far side
+// of the stop. The three reproducers as the issue gives them, each from its non-impacting end;
+// in the second the section lies at the turn that grazes, so the impacting motions past the
+// grazing strike the stop on the section.
 TEST(OrbitGrazing, TheBranchCrossesTheGrazingFromTheNonImpactingSide) {
   const Reproducer cases[] = {
       {stop_scene(0.01035936, 15.06011952143807, M_PI / 2, 0.0, 0.01506011952143807, 0.001056, 0.7),
        {0.0, 0.01506011952143807},
        13.288340754210061},
+      {stop_scene(0.01035936, 15.06011952143807, M_PI, 0.001, 0.0, 0.001056, 0.7),
+       {0.001, 0.0},
+       13.288340754210061},
       {stop_scene(0.0005139459, 3.0563183734683137, 0.0, 0.001, 0.0, 0.0010478, 0.8),
        {0.001, 0.0},
        3.3220851885525153}};
   for (const Reproducer& r : cases) {
+    SCOPED_TRACE(testing::Message() << "psi " << r.model.pellets[0].force.psi);
     const double sign = r.to < r.model.pellets[0].force.Omega ? 1.0 : -1.0;
     const double grazing = std::sqrt(kG / kR + sign * r.f() / r.delta());
     const OrbitBranch b = follow(r);
@@ -216,10 +222,12 @@ TEST(OrbitGrazing, TheBranchCrossesTheGrazingFromTheNonImpactingSide) {
     EXPECT_EQ(b.bifurcations[0].approached_impacting, false);
     EXPECT_TRUE(b.reached) << b.message;
     ASSERT_FALSE(b.points.empty());
+    EXPECT_DOUBLE_EQ(b.points.back().value, r.to);
     EXPECT_EQ(b.points.front().impacts_per_period, 0.0);
     EXPECT_EQ(b.points.back().impacts_per_period, 1.0);
     int compared = 0;
     for (const BranchPoint& p : b.points) {
+      EXPECT_LE(p.state[0].phi, r.delta() * (1.0 + 1e-9)) << "at Ω = " << p.value;
       if (p.impacts_per_period != 1.0 || (grazing - p.value) * (r.to - grazing) > 0.0) continue;
       const ImpactingMotion m = impacting_period_one(r.f(), p.value, r.model.pellets[0].force.psi,
                                                      r.delta(), r.model.limiters[0].k);

@@ -462,6 +462,49 @@ TEST(OrbitContinuation, StaysWhereTheModelIsValid) {
   for (const BranchPoint& p : b.points) EXPECT_GE(p.value, -1e4);
 }
 
+// A far `to` scales the parameter by the value's own size, not by the span to − p0: the branch is
+// followed as far as max_points allows, point for point the branch toward a near `to` whose span
+// is that size (Ω from 5 to 10, F0 from 0.3 to 1.3, R from 0.5 to 1.5), its bifurcations the same.
+// Scaled by the span, its smallest step was 1e-7 of it (100 rad/s toward 1e9) and the branch
+// stopped at its first point.
+TEST(OrbitContinuation, AFarToFollowsTheBranchAsANearOneDoes) {
+  struct Case {
+    std::string parameter;
+    double near, far;
+  };
+  const Case cases[] = {{"model.pellets[0].Omega", 10.0, 1e9},
+                        {"model.pellets[0].F0", 1.3, 1e12},
+                        {"model.R", 1.5, 1e6}};
+  const Model m = impact_oscillator(5.0);
+  OrbitSpec spec;
+  spec.transient = 150;
+  const PeriodicOrbit orbit = find_periodic_orbit(m, tight(), spec);
+  ASSERT_TRUE(orbit.converged) << orbit.message;
+  for (const Case& c : cases) {
+    SCOPED_TRACE(c.parameter);
+    const ContinuationSpec near{c.parameter, c.near, 30}, far{c.parameter, c.far, 30};
+    ASSERT_FALSE(validate_continuation(m, far));
+    const OrbitBranch a = continue_orbit(m, tight(), orbit, near);
+    const OrbitBranch b = continue_orbit(m, tight(), orbit, far);
+    EXPECT_FALSE(b.reached);
+    EXPECT_EQ(b.points.size(), 30u);
+    EXPECT_NE(b.message.find("max_points"), std::string::npos) << b.message;
+    // The near branch's points before its end at `to`, and its bifurcations.
+    const std::size_t shared = a.points.size() - (a.reached ? 1 : 0);
+    ASSERT_GE(shared, 10u);
+    for (std::size_t k = 0; k < shared; ++k) {
+      EXPECT_EQ(a.points[k].value, b.points[k].value) << k;
+      EXPECT_EQ(a.points[k].state[0].phi, b.points[k].state[0].phi) << k;
+      EXPECT_EQ(a.points[k].state[0].dphi, b.points[k].state[0].dphi) << k;
+    }
+    ASSERT_GE(b.bifurcations.size(), a.bifurcations.size());
+    for (std::size_t k = 0; k < a.bifurcations.size(); ++k) {
+      EXPECT_EQ(a.bifurcations[k].kind, b.bifurcations[k].kind);
+      EXPECT_EQ(a.bifurcations[k].value, b.bifurcations[k].value);
+    }
+  }
+}
+
 // The search holds its simulated time to the run's limit, as a scene's run is: the run to the
 // guess (transient periods) and the Newton iterations ((max_iterations + 1) × periods).
 TEST(PeriodicOrbit, ItsSimulatedTimeIsHeldToTheLimits) {

@@ -137,6 +137,38 @@ TEST(BranchPlot, TheLineBreaksWhereAnImpactCrossesTheSectionTime) {
   EXPECT_EQ(testing::count_of(svg_of(no_rebound, spec), "an impact crosses"), 0);
 }
 
+// The legend names only what the plot draws. At a grazing the section's φ̇ passes through zero,
+// here from round-off (+8.9e-15) to the impacting motion's −2.8e-6 (issue 34's reproducer 3 as
+// it was drawn, its stop at 0.0010478): no impact crosses the section there, and no break is
+// drawn or named (a break's open circles lay under the grazing's mark, the legend named it). Nor
+// is a break outside the plot's window named: drawn alone the crossing below is, over a sweep
+// from 2.5 it is clipped away.
+TEST(BranchPlot, TheLegendNamesNoBreakItDoesNotDraw) {
+  const OrbitBranch grazing = hand_branch({{3.1320584542, {0.0010477778615, 8.818e-15}},
+                                           {3.1320915433, {0.0010477999999, 8.879e-15}},
+                                           {3.1323573101, {0.0010477999172, -2.8476405e-6}},
+                                           {3.1326230769, {0.0010477996699, -5.6877776e-6}}});
+  EXPECT_TRUE(render::section_crossings(grazing, impact_oscillator(6.0), 0).empty());
+  const ContinuationSpec near_spec{"model.pellets[0].Omega", 3.1326230769, 10};
+  EXPECT_EQ(testing::count_of(svg_of(grazing, near_spec), "an impact crosses"), 0);
+
+  const OrbitBranch crossing = hand_branch(
+      {{2.0, {0.01, -2.85}}, {2.1, {0.01, 3.5625}}, {2.6, {0.02, 3.6}}, {2.9, {0.03, 3.7}}});
+  const ContinuationSpec spec{"model.pellets[0].Omega", 2.9, 10};
+  EXPECT_EQ(testing::count_of(svg_of(crossing, spec), "an impact crosses"), 1);
+  SweepSpec sweep;
+  sweep.axis = {"model.pellets[0].Omega", 2.5, 3.0, 2};
+  FigureSpec figure;
+  figure.plots = {SweepPlot{}};
+  const RenderResult over =
+      render_figure(figure, impact_oscillator(6.0), RunResult{}, ImageFormat::svg,
+                    {nullptr, {{sweep, SweepResult{}}}, {{crossing, spec}}});
+  ASSERT_TRUE(over.ok()) << over.error->message;
+  const std::string text(over.bytes.begin(), over.bytes.end());
+  EXPECT_EQ(testing::count_of(text, "an impact crosses"), 0);
+  EXPECT_EQ(testing::count_of(text, ">stable periodic motion<"), 1);
+}
+
 // A fold and a period doubling at one value are a multiplier through infinity: one mark, named
 // so. A bifurcation outside the plot's window is named in the legend with its value.
 TEST(BranchPlot, AFoldAndADoublingAtOneValueAreOneMarkAndOnesOutsideTheWindowAreSaid) {
