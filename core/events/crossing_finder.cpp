@@ -30,6 +30,12 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
     if (!served) first = scan(tracks_[w], fn, step, s);
     if (first) brackets_.push_back({static_cast<int>(w), *first});
   }
+  // Most steps cross nothing: their near misses are all before the (absent) earliest crossing,
+  // and the later phases have nothing to do.
+  if (brackets_.empty()) {
+    keep_near_misses(std::numeric_limits<double>::infinity());
+    return {};
+  }
   std::sort(brackets_.begin(), brackets_.end(), [](const WatchBracket& x, const WatchBracket& y) {
     return x.bracket.hi < y.bracket.hi;
   });
@@ -210,12 +216,16 @@ void CrossingFinder::keep(const Graze& g) {
   if (!first_graze_ || g.earliest < first_graze_->earliest) first_graze_ = g;
 }
 
+void CrossingFinder::keep_near_misses(double earliest) {
+  // Those before the step's first event (after it, another interval starts).
+  for (const Graze& g : grazes_)
+    if (g.t < earliest) keep(g);
+}
+
 void CrossingFinder::keep_grazes(const std::vector<Watch>& watches, const Model& model,
                                  const std::vector<Body>& bodies, const StepView& step,
                                  const std::vector<Crossing>& found, double earliest) {
-  // Near misses before the step's first event (after it, another interval starts).
-  for (const Graze& g : grazes_)
-    if (g.t < earliest) keep(g);
+  keep_near_misses(earliest);
   if (!std::isfinite(earliest)) return;
   // A body that turns within its error of the limiter ahead of it may as well have struck it,
   // and one that strikes within its error of turning may as well have turned.

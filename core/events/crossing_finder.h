@@ -170,6 +170,8 @@ class CrossingFinder {
   void keep_grazes(const std::vector<Watch>& watches, const Model& model,
                    const std::vector<Body>& bodies, const StepView& step,
                    const std::vector<Crossing>& found, double earliest);
+  // The step's near misses before `earliest`.
+  void keep_near_misses(double earliest);
   void keep(const Graze& g);
 
   // The near miss of watch w with a minimum gm at tm and half its second derivative c: one

@@ -102,13 +102,6 @@ double Closing::time_to_zero() const {
   return rate < 0.0 ? value / -rate : std::numeric_limits<double>::infinity();
 }
 
-bool Closing::meets_within(double span) const {
-  if (!(value >= 0.0) || (value == 0.0 && !(rate > 0.0))) return true;
-  // Concave, the quadratic falls below zero past its one positive root and stays there.
-  if (curvature < 0.0) return value + span * (rate + 0.5 * curvature * span) < 0.0;
-  return rate < 0.0 && value + rate * span < 0.0;
-}
-
 namespace {
 
 // The acceleration of the body pellet i belongs to: sliding, under the friction law; held, 0.
@@ -116,8 +109,8 @@ double acceleration_of(const Model& model, const SlidingLaw& law, const Body& b,
                        const Vec& y) {
   if (b.mode != Mode::sliding) return 0.0;
   const double phi = y[phi_index(b.leader())];
-  return law.acceleration({body_force(model, b, t), body_mass(model, b), body_damping(model, b)},
-                          std::cos(phi), std::sin(phi), y[dphi_index(b.leader())], b.s);
+  return law.acceleration(body_load(model, b, t), std::cos(phi), std::sin(phi),
+                          y[dphi_index(b.leader())], b.s);
 }
 
 const Body& body_of(const std::vector<Body>& bodies, int i) {

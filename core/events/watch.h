@@ -61,7 +61,12 @@ struct Closing {
   double time_to_zero() const;
   // Whether that time is shorter than span (> 0): the same answer from the quadratic's value at
   // span, with no square root (asked at every sample of every step).
-  bool meets_within(double span) const;
+  bool meets_within(double span) const {
+    if (!(value >= 0.0) || (value == 0.0 && !(rate > 0.0))) return true;
+    // Concave, the quadratic falls below zero past its one positive root and stays there.
+    if (curvature < 0.0) return value + span * (rate + 0.5 * curvature * span) < 0.0;
+    return rate < 0.0 && value + rate * span < 0.0;
+  }
 };
 // The curvature costs the bodies' accelerations: asked for where it matters (an interval's start,
 // a march); between samples, the rates' difference stands in for it.

@@ -36,6 +36,19 @@ double body_damping(const Model& model, const Body& body) {
   return mc / body_mass(model, body);
 }
 
+BodyLoad body_load(const Model& model, const Body& body, double t) {
+  BodyLoad load{0.0, 0.0, 0.0};
+  double mc = 0.0;
+  for (int i : body.members) {
+    const Pellet& p = model.pellets[i];
+    load.F += p.force.at(t);
+    load.M += p.m;
+    mc += p.m * p.c;
+  }
+  load.C = body.members.size() == 1 ? model.pellets[body.leader()].c : mc / load.M;
+  return load;
+}
+
 double body_free_acceleration(const Model& model, const Body& body, double t, double phi) {
   return body_force(model, body, t) / (body_mass(model, body) * model.R) -
          model.g / model.R * std::sin(phi);
@@ -63,10 +76,20 @@ SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bo
     const int L = b.leader();
     normal_side_.push_back(normal_per_mass(model, y[phi_index(L)], y[dphi_index(L)]) >= 0.0 ? 1
                                                                                             : -1);
+    damped_ = damped_ || damping_.back() != 0.0;
   }
 }
 
-// The hot loop of every run: each transcendental function is computed once per body.
+void SegmentDynamics::evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const {
+  if (damped_)
+    evaluate<true>(t, y, dydt, J);
+  else
+    evaluate<false>(t, y, dydt, J);
+}
+
+// The hot loop of every run: each transcendental function is computed once per body. Undamped
+// (no body of the interval damped), the dampers' terms are not compiled in.
+template <bool kDamped>
 void SegmentDynamics::evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const {
   if (J) J->setZero();
   const double R = model_.R;
@@ -107,7 +130,7 @@ void SegmentDynamics::evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const 
     }
     // The dampers, in a loop of their own, as SlidingLaw::acceleration subtracts them: the
     // undamped loop above stays as lean as the hot path needs (no register spilled).
-    if (C != 0.0)
+    if (kDamped && C != 0.0)
       for (int i : body.members) {
         dydt[dphi_index(i)] = acc - C * dphi;
         dydt[work_index(i)] -= damper_power(model_.pellets[i], R, dphi);

@@ -37,6 +37,9 @@ double body_damping(const Model& model, const Body& body);
 struct BodyLoad {
   double F, M, C;
 };
+// body_force, body_mass and body_damping, to the bit, in one pass over the members (asked for at
+// every sample the crossing finder takes of a speed's rate).
+BodyLoad body_load(const Model& model, const Body& body, double t);
 
 // The acceleration of a sliding body under the model's friction law, with the model's constants
 // computed once: the right-hand side calls it for every body at every evaluation.
@@ -110,11 +113,14 @@ class SegmentDynamics final : public OdeSystem {
 
  private:
   void evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const;
+  template <bool kDamped>
+  void evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const;
   void body_jets(std::size_t b, double t0, int order, std::span<double> out) const;
   const Model& model_;
   const std::vector<Body>& bodies_;
   std::vector<double> mass_;      // per body
   std::vector<double> damping_;   // per body, 1/s
+  bool damped_ = false;           // some body's damping is not zero
   std::vector<int> normal_side_;  // per body: the sign of the bilateral law's normal force
   SlidingLaw law_;
   mutable std::vector<double> jet_scratch_;  // the series of a body's jets, reused

@@ -64,24 +64,13 @@ RunState::RunState(const Model& model, const SolverOptions& options, Stepper& st
   }
 }
 
-bool RunState::take_step(double& t) {
-  double limit = opt_.t_end;
-  for (const RunObserver* o : landing_) limit = std::min(limit, o->landing());
-  const StepStatus status = stepper_.step(limit);
-  if (status == StepStatus::ok) return true;
+bool RunState::step_failed(double& t, StepStatus status) {
   t = stepper_.t();
   fail(t, Termination::numerical_failure,
        status == StepStatus::step_underflow ? "the step size underflowed"
        : status == StepStatus::non_finite   ? "the state became non-finite"
                                             : "the implicit method's Newton iteration failed");
   return false;
-}
-
-void RunState::settled(double t, const std::vector<Body>& bodies) {
-  for (RunObserver* o : on_settled_) {
-    o->on_settled(t, y_, bodies);
-    ended_ = ended_ || o->ends_run();
-  }
 }
 
 void RunState::note_instant(double t, const InstantOutcome& out) {

@@ -3,6 +3,7 @@
 // to the observers.
 #pragma once
 
+#include <algorithm>
 #include <chrono>
 #include <optional>
 #include <span>
@@ -30,9 +31,20 @@ class RunState {
 
   // Takes a step no further than t_end and every observer's landing; false (and stopped) if the
   // stepper failed, with t at its last accepted point.
-  bool take_step(double& t);
+  // Inline, as settled(): the driver calls both at every step.
+  bool take_step(double& t) {
+    double limit = opt_.t_end;
+    for (const RunObserver* o : landing_) limit = std::min(limit, o->landing());
+    const StepStatus status = stepper_.step(limit);
+    return status == StepStatus::ok || step_failed(t, status);
+  }
   // The state y_ at t is settled with these bodies (tells the observers).
-  void settled(double t, const std::vector<Body>& bodies);
+  void settled(double t, const std::vector<Body>& bodies) {
+    for (RunObserver* o : on_settled_) {
+      o->on_settled(t, y_, bodies);
+      ended_ = ended_ || o->ends_run();
+    }
+  }
   // Notes an instant at t: the events it adds to the budget, a smooth restart, an undecided order.
   void note_instant(double t, const InstantOutcome& out);
   // False (and stopped) where instants stop advancing in time: an unresolved Zeno sequence.
@@ -40,6 +52,8 @@ class RunState {
   // True (and stopped) once a budget is spent.
   bool over_budget(double t);
   void fail(double t, Termination why, const std::string& message);
+  // The stepper failed with `status`: stopped, with t at its last accepted point; false.
+  bool step_failed(double& t, StepStatus status);
   // The stats, the graze and the observers' outputs.
   RunResult finish(const EndView& end, const std::optional<Graze>& graze);
 

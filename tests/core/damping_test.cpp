@@ -197,6 +197,24 @@ TEST(Damping, JacobiansMatchCentralDifferences) {
   EXPECT_EQ(body_damping(m, pair), mean);
 }
 
+// body_load, which the rates of speeds take at every sample, is the three functions to the bit.
+TEST(Damping, BodyLoadIsForceMassAndDampingToTheBit) {
+  Model m = testing::impact_oscillator(5.0);
+  m.pellets[0].c = 1.3;
+  m.pellets.push_back({0.3, 0.41, 1.1, {0.2, 2.0, 0.1}});
+  m.pellets[1].c = 0.2;
+  Body lone, pair;
+  lone.members = {1};
+  pair.members = {0, 1};
+  for (const Body& b : {lone, pair})
+    for (double t : {0.0, 0.37, 2.9}) {
+      const BodyLoad load = body_load(m, b, t);
+      EXPECT_EQ(load.F, body_force(m, b, t));
+      EXPECT_EQ(load.M, body_mass(m, b));
+      EXPECT_EQ(load.C, body_damping(m, b));
+    }
+}
+
 // The map's Jacobian of a damped impacting, sticking run, exact and by central differences of
 // plain runs.
 TEST(Damping, MapJacobianMatchesDifferences) {
