@@ -1,6 +1,7 @@
 // The Taylor coefficients of SegmentDynamics (core/model/dynamics.h): the same equations as its
 // right-hand side, term by term, as normalized series in τ = t − t0.
 #include <algorithm>
+#include <array>
 #include <cmath>
 
 #include "core/integrators/series.h"
@@ -10,7 +11,31 @@ namespace vibro {
 
 using integrators::add_cosine_series;
 using integrators::product_coefficient;
-using integrators::sin_cos_coefficient;
+
+namespace {
+
+// A body's series up to this order live on the stack (the Taylor method asks for 30 at most);
+// longer ones in SegmentDynamics::jet_scratch_.
+constexpr std::size_t kStackTerms = 32;
+// The series a body's jets need: sin u and cos u side by side ({C[k], S[k]} at 2k), then j·u[j],
+// v², the body's force, the normal force, one member's force and that force less friction's.
+constexpr std::size_t kJetSeries = 8;
+
+// Coefficient k >= 1 of S = sin u and C = cos u into CS[2k + 1] and CS[2k], from ju[j] = j·u[j]
+// (j = 1..k) and CS up to k − 1: integrators::sin_cos_coefficient's sums, term for term and in
+// the same order, the two kept side by side so that one pass reads both.
+void sin_cos_pair(const double* ju, double* CS, int k) {
+  double sc[2] = {0.0, 0.0};  // Σ j·u[j]·C[k−j], Σ j·u[j]·S[k−j]
+  for (int j = 1; j <= k; ++j) {
+    const double* at = CS + 2 * (k - j);
+    sc[0] += ju[j] * at[0];
+    sc[1] += ju[j] * at[1];
+  }
+  CS[2 * k + 1] = sc[0] / k;
+  CS[2 * k] = -sc[1] / k;
+}
+
+}  // namespace
 
 bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
                                           std::span<double> out) const {
@@ -29,24 +54,35 @@ bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
 // SlidingLaw::acceleration, its damping C·v last) and, with each member's force, its work rate
 // R·v·(F_i − m_i·s·μ·n) − m_i·R²·c_i·v².
 // Coefficient k + 1 of each state component is coefficient k of its rate over k + 1.
+// Each series is computed by the same operations in the same order as the right-hand side's
+// terms; the shortcuts below (a series that is zero, a term that is zero) change no bit.
 void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<double> out) const {
   const Body& body = bodies_[b];
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
-  auto component = [&](int i) { return out.subspan(static_cast<std::size_t>(i) * n1, n1); };
+  double* const state = out.data();
+  auto component = [&](int i) { return state + static_cast<std::size_t>(i) * n1; };
   const int L = body.leader();
-  const std::span<const double> u = component(phi_index(L)), v = component(dphi_index(L));
-  // The body's series: sin u, cos u, v², its total force, the normal force n; then per member
-  // its force, and its work's rate.
-  jet_scratch_.assign(7 * n1, 0.0);
-  const std::span<double> scratch(jet_scratch_);
-  const std::span<double> S = scratch.subspan(0, n1), C = scratch.subspan(n1, n1),
-                          Q = scratch.subspan(2 * n1, n1), F = scratch.subspan(3 * n1, n1),
-                          N = scratch.subspan(4 * n1, n1), Fi = scratch.subspan(5 * n1, n1),
-                          G = scratch.subspan(6 * n1, n1);
-  auto add_force = [&](int i, std::span<double> into) {
+  const double* const u = component(phi_index(L));
+  const double* const v = component(dphi_index(L));
+  std::array<double, kJetSeries * kStackTerms> stack;
+  double* scratch = stack.data();
+  if (n1 > kStackTerms) {
+    jet_scratch_.resize(kJetSeries * n1);
+    scratch = jet_scratch_.data();
+  }
+  double* const CS = scratch;  // 2·n1
+  double* const ju = scratch + 2 * n1;
+  double* const Q = scratch + 3 * n1;
+  double* const F = scratch + 4 * n1;
+  double* const N = scratch + 5 * n1;
+  double* const Fi = scratch + 6 * n1;
+  double* const G = scratch + 7 * n1;
+  auto add_force = [&](int i, double* into) {
     const Forcing& f = model_.pellets[i].force;
-    if (f.active()) add_cosine_series(f.F0, f.Omega, f.Omega * t0 + f.psi, order, into);
+    if (f.active())
+      add_cosine_series(f.F0, f.Omega, f.Omega * t0 + f.psi, order, std::span<double>(into, n1));
   };
+  std::fill(F, F + n1, 0.0);
   for (int i : body.members) add_force(i, F);
   const double R = law_.R, gR = law_.gR, mu = law_.mu, M = mass_[b], damping = damping_[b];
   const int s = body.s, side = normal_side_[b];
@@ -56,15 +92,21 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
   const bool damped = std::any_of(body.members.begin(), body.members.end(),
                                   [&](int i) { return model_.pellets[i].c != 0.0; });
   const bool squares = mu != 0.0 || damped;
-  S[0] = std::sin(u[0]);
-  C[0] = std::cos(u[0]);
+  if (!squares) std::fill(Q, Q + n1, 0.0);
+  if (mu == 0.0) std::fill(N, N + n1, 0.0);
+  CS[1] = std::sin(u[0]);
+  CS[0] = std::cos(u[0]);
   for (int k = 0; k < order; ++k) {
-    if (k > 0) sin_cos_coefficient(u, S, C, k);
-    if (squares) Q[k] = product_coefficient(v, v, k);
-    double acc = law_.paper ? F[k] / (M * R) - s * mu * Q[k] - gR * (S[k] + s * mu * C[k])
-                            : F[k] / (M * R) - gR * S[k] - s * mu * side * (Q[k] + gR * C[k]);
+    if (k > 0) {
+      ju[k] = k * u[k];
+      sin_cos_pair(ju, CS, k);
+    }
+    const double Sk = CS[2 * k + 1], Ck = CS[2 * k];
+    if (squares) Q[k] = product_coefficient({v, n1}, {v, n1}, k);
+    double acc = law_.paper ? F[k] / (M * R) - s * mu * Q[k] - gR * (Sk + s * mu * Ck)
+                            : F[k] / (M * R) - gR * Sk - s * mu * side * (Q[k] + gR * Ck);
     acc -= damping * v[k];
-    if (mu != 0.0) N[k] = R * sigma * (Q[k] + gR * C[k]);
+    if (mu != 0.0) N[k] = R * sigma * (Q[k] + gR * Ck);
     for (int i : body.members) {
       component(phi_index(i))[k + 1] = component(dphi_index(i))[k] / (k + 1);
       component(dphi_index(i))[k + 1] = acc / (k + 1);
@@ -73,16 +115,26 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
   const bool alone = body.members.size() == 1;  // its force is the body's
   for (int i : body.members) {
     if (!alone) {
-      std::fill(Fi.begin(), Fi.end(), 0.0);
+      std::fill(Fi, Fi + n1, 0.0);
       add_force(i, Fi);
     }
-    const std::span<const double> Fm = alone ? F : Fi;
+    const double* const Fm = alone ? F : Fi;
     const Pellet& p = model_.pellets[i];
     const double ms_mu = p.m * s * mu, damper = p.m * R * R * p.c;  // damper·v² is its power
-    for (int k = 0; k < order; ++k) G[k] = Fm[k] - ms_mu * N[k];
-    const std::span<double> w = component(work_index(i));
-    for (int k = 0; k < order; ++k)
-      w[k + 1] = (R * product_coefficient(v, G, k) - damper * Q[k]) / (k + 1);
+    // Without friction n is 0 and G is the force itself: Fm[k] − (±0) is Fm[k] (never −0).
+    const double* g = Fm;
+    if (mu != 0.0) {
+      for (int k = 0; k < order; ++k) G[k] = Fm[k] - ms_mu * N[k];
+      g = G;
+    }
+    double* const w = component(work_index(i));
+    const std::span<const double> vs(v, n1), gs(g, n1);
+    // Without v² (no friction, no damper) damper·Q[k] is a zero that changes nothing.
+    if (squares)
+      for (int k = 0; k < order; ++k)
+        w[k + 1] = (R * product_coefficient(vs, gs, k) - damper * Q[k]) / (k + 1);
+    else
+      for (int k = 0; k < order; ++k) w[k + 1] = R * product_coefficient(vs, gs, k) / (k + 1);
   }
 }
 
