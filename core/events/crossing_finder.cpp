@@ -26,7 +26,7 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
     const WatchFunction fn{watches[w], model, bodies, *law_};
     bool served = false;
     std::optional<Bracket> first;
-    if (polynomials) first = on_polynomials(tracks_[w], fn, step, served);
+    if (polynomials) first = on_polynomials(tracks_[w], fn, step, states.back(), served);
     if (!served) first = scan(tracks_[w], fn, step, s);
     if (first) brackets_.push_back({static_cast<int>(w), *first});
   }
@@ -282,7 +282,8 @@ bool CrossingFinder::served_by_polynomials(const std::vector<Watch>& watches,
 }
 
 std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const WatchFunction& fn,
-                                                      const StepView& step, bool& served) {
+                                                      const StepView& step, const Vec& y_end,
+                                                      bool& served) {
   const StepPolynomials* p = step.polynomials();
   const std::optional<LinearForm> form = linear_form(fn.watch, fn.bodies);
   std::array<double, kMaxPolynomialDegree + 1> q;
@@ -320,10 +321,9 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
     }
     return std::nullopt;
   }
-  step.dense(step.t(), y);
-  track.last = fn.value(step.t(), y);
+  track.last = fn.value(step.t(), y_end);
   if (follows_motion(fn.watch.kind)) {
-    track.closing = fn.closing_at(step.t(), y);
+    track.closing = fn.closing_at(step.t(), y_end);
     track.largest = std::max(track.largest, track.closing.value);
   }
   return std::nullopt;

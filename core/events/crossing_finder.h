@@ -152,9 +152,10 @@ class CrossingFinder {
                                          double t_b, const Closing& b);
   // A watch linear in the state on a step given as polynomials: the first root of its
   // polynomial, its minima above zero as near misses; nullopt in `served` when the step or the
-  // watch cannot be served so (then it is scanned).
+  // watch cannot be served so (then it is scanned). y_end: the state at the step's end (its
+  // polynomials' value there, the stepper's y()).
   std::optional<Bracket> on_polynomials(WatchTrack& track, const WatchFunction& fn,
-                                        const StepView& step, bool& served);
+                                        const StepView& step, const Vec& y_end, bool& served);
 
   // Phase refine: the root in a bracket to round-off of t, on the dense output.
   double refine(const WatchFunction& fn, const StepView& step, const Bracket& b);
