@@ -255,7 +255,7 @@ bool formable(const Watch& w, const StepPolynomials& p) {
 bool watch_polynomial(const Watch& w, const LinearForm& form, const StepPolynomials& p,
                       std::array<double, kMaxPolynomialDegree + 1>& q, int& degree) {
   if (!formable(w, p)) return false;
-  q.fill(0.0);
+  std::fill(q.begin(), q.begin() + p.degree + 1, 0.0);  // q beyond the degree is not read
   for (int j = 0; j < form.terms; ++j) {
     const std::span<const double> c = p.component(form.index[j]);
     for (int k = 0; k <= p.degree; ++k) q[k] += form.weight[j] * c[k];
@@ -295,21 +295,19 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
   const std::span<const double> poly(q.data(), degree + 1);
   // Above every near miss's error over the whole step: no root, no near miss to isolate.
   const double near = 10.0 * (rtol_ * std::max(track.largest, 1.0 + std::numbers::pi) + atol_);
-  PolynomialMinima minima;
-  std::optional<PolynomialBracket> root;
-  if (stays_above(poly, h, near))
-    minima.count = 0;
-  else
-    root = first_polynomial_crossing(poly, h, &minima);
-  Vec& y = scratch_left_;
-  for (int i = 0; i < minima.count; ++i) {
-    const PolynomialMinimum& m = minima.at[i];
-    if (!(m.value < near)) continue;  // above any near miss's error (near_miss)
-    step.dense(t0 + m.tau, y);
-    if (auto graze = near_miss(fn.watch, t0 + m.tau, m.value, m.half_curvature, track.largest, y))
-      grazes_.push_back(*graze);
+  if (!stays_above(poly, h, near)) {
+    PolynomialMinima minima;  // filled only here: a bound that clears the step costs no minima
+    const std::optional<PolynomialBracket> root = first_polynomial_crossing(poly, h, &minima);
+    Vec& y = scratch_left_;
+    for (int i = 0; i < minima.count; ++i) {
+      const PolynomialMinimum& m = minima.at[i];
+      if (!(m.value < near)) continue;  // above any near miss's error (near_miss)
+      step.dense(t0 + m.tau, y);
+      if (auto graze = near_miss(fn.watch, t0 + m.tau, m.value, m.half_curvature, track.largest, y))
+        grazes_.push_back(*graze);
+    }
+    if (root) return Bracket{t0 + root->lo, t0 + root->hi, root->p_lo, root->p_hi};
   }
-  if (root) return Bracket{t0 + root->lo, t0 + root->hi, root->p_lo, root->p_hi};
   // No root: the track moves on to the step's end, as a scan's would. An undeflated watch's
   // polynomial is its value, and its derivative the rate closing() gives (a gap's speeds' or a
   // speed's acceleration), without the state.
