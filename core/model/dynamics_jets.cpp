@@ -17,22 +17,22 @@ namespace {
 // A body's series up to this order live on the stack (the Taylor method asks for 30 at most);
 // longer ones in SegmentDynamics::jet_scratch_.
 constexpr std::size_t kStackTerms = 32;
-// The series a body's jets need: sin u and cos u side by side ({C[k], S[k]} at 2k), then j·u[j],
-// v², the body's force, the normal force, one member's force and that force less friction's.
-constexpr std::size_t kJetSeries = 8;
+// The series a body's jets need, in units of n1 doubles: {cos u, sin u} pairs (2), j·u[j] pairs
+// (2), v², the body's force, the normal force, one member's force and that force less friction's.
+constexpr std::size_t kJetSeries = 9;
 
-// Coefficient k >= 1 of S = sin u and C = cos u into CS[2k + 1] and CS[2k], from ju[j] = j·u[j]
-// (j = 1..k) and CS up to k − 1: integrators::sin_cos_coefficient's sums, term for term and in
-// the same order, the two kept side by side so that one pass reads both.
-void sin_cos_pair(const double* ju, double* CS, int k) {
-  double sc[2] = {0.0, 0.0};  // Σ j·u[j]·C[k−j], Σ j·u[j]·S[k−j]
-  for (int j = 1; j <= k; ++j) {
-    const double* at = CS + 2 * (k - j);
-    sc[0] += ju[j] * at[0];
-    sc[1] += ju[j] * at[1];
-  }
-  CS[2 * k + 1] = sc[0] / k;
-  CS[2 * k] = -sc[1] / k;
+// Two doubles that add and multiply lane by lane, each lane exactly as a double does (IEEE,
+// no contraction): two sums kept side by side are the two sums, bit for bit, at one instruction
+// per step for both. Loaded and stored unaligned.
+using Pair = double __attribute__((vector_size(16), aligned(8)));
+
+// Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, from
+// ju[j] = {j·u[j], j·u[j]} (j = 1..k) and CS up to k − 1: integrators::sin_cos_coefficient's
+// sums, term for term and in the same order, both in one pass.
+void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
+  Pair sc = {0.0, 0.0};  // {Σ j·u[j]·C[k−j], Σ j·u[j]·S[k−j]}
+  for (int j = 1; j <= k; ++j) sc += ju[j] * CS[k - j];
+  CS[k] = Pair{-sc[1] / k, sc[0] / k};
 }
 
 }  // namespace
@@ -70,13 +70,13 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
     jet_scratch_.resize(kJetSeries * n1);
     scratch = jet_scratch_.data();
   }
-  double* const CS = scratch;  // 2·n1
-  double* const ju = scratch + 2 * n1;
-  double* const Q = scratch + 3 * n1;
-  double* const F = scratch + 4 * n1;
-  double* const N = scratch + 5 * n1;
-  double* const Fi = scratch + 6 * n1;
-  double* const G = scratch + 7 * n1;
+  Pair* const CS = reinterpret_cast<Pair*>(scratch);  // n1 pairs
+  Pair* const ju = reinterpret_cast<Pair*>(scratch + 2 * n1);
+  double* const Q = scratch + 4 * n1;
+  double* const F = scratch + 5 * n1;
+  double* const N = scratch + 6 * n1;
+  double* const Fi = scratch + 7 * n1;
+  double* const G = scratch + 8 * n1;
   auto add_force = [&](int i, double* into) {
     const Forcing& f = model_.pellets[i].force;
     if (f.active())
@@ -94,25 +94,33 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
   const bool squares = mu != 0.0 || damped;
   if (!squares) std::fill(Q, Q + n1, 0.0);
   if (mu == 0.0) std::fill(N, N + n1, 0.0);
-  CS[1] = std::sin(u[0]);
-  CS[0] = std::cos(u[0]);
+  const double S0 = std::sin(u[0]), C0 = std::cos(u[0]);
+  CS[0] = Pair{C0, S0};
+  const bool alone = body.members.size() == 1;  // its force is the body's
+  double* const phi = component(phi_index(L));
+  double* const dphi = component(dphi_index(L));
   for (int k = 0; k < order; ++k) {
     if (k > 0) {
-      ju[k] = k * u[k];
+      const double juk = k * u[k];
+      ju[k] = Pair{juk, juk};
       sin_cos_pair(ju, CS, k);
     }
-    const double Sk = CS[2 * k + 1], Ck = CS[2 * k];
+    const double Sk = CS[k][1], Ck = CS[k][0];
     if (squares) Q[k] = product_coefficient({v, n1}, {v, n1}, k);
     double acc = law_.paper ? F[k] / (M * R) - s * mu * Q[k] - gR * (Sk + s * mu * Ck)
                             : F[k] / (M * R) - gR * Sk - s * mu * side * (Q[k] + gR * Ck);
     acc -= damping * v[k];
     if (mu != 0.0) N[k] = R * sigma * (Q[k] + gR * Ck);
+    if (alone) {
+      phi[k + 1] = dphi[k] / (k + 1);
+      dphi[k + 1] = acc / (k + 1);
+      continue;
+    }
     for (int i : body.members) {
       component(phi_index(i))[k + 1] = component(dphi_index(i))[k] / (k + 1);
       component(dphi_index(i))[k + 1] = acc / (k + 1);
     }
   }
-  const bool alone = body.members.size() == 1;  // its force is the body's
   for (int i : body.members) {
     if (!alone) {
       std::fill(Fi, Fi + n1, 0.0);
