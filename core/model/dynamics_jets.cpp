@@ -18,8 +18,9 @@ namespace {
 // longer ones in SegmentDynamics::jet_scratch_.
 constexpr std::size_t kStackTerms = 32;
 // The series a body's jets need, in units of n1 doubles: {cos u, sin u} pairs (2), j·u[j] pairs
-// (2), v², the body's force, the normal force, one member's force and that force less friction's.
-constexpr std::size_t kJetSeries = 9;
+// (2), v², the body's force, the normal force, one member's force and that force less friction's,
+// and v in pairs {v[j], v[j]} (2).
+constexpr std::size_t kJetSeries = 11;
 
 // Two doubles that add and multiply lane by lane, each lane exactly as a double does (IEEE,
 // no contraction): two sums kept side by side are the two sums, bit for bit, at one instruction
@@ -33,6 +34,16 @@ void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
   Pair sc = {0.0, 0.0};  // {Σ j·u[j]·C[k−j], Σ j·u[j]·S[k−j]}
   for (int j = 1; j <= k; ++j) sc += ju[j] * CS[k - j];
   CS[k] = Pair{-sc[1] / k, sc[0] / k};
+}
+
+// Coefficients k and k + 1 of the product v·g, from vv[j] = {v[j], v[j]}: each summed over j
+// ascending as integrators::product_coefficient does, in the two lanes of one pass (lane 1's
+// last term, j = k + 1, added after it).
+Pair product_pair(const Pair* vv, const double* g, int k) {
+  Pair sum = {0.0, 0.0};
+  for (int j = 0; j <= k; ++j) sum += vv[j] * *reinterpret_cast<const Pair*>(g + (k - j));
+  sum[1] += vv[k + 1][0] * g[0];
+  return sum;
 }
 
 }  // namespace
@@ -77,6 +88,7 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
   double* const N = scratch + 6 * n1;
   double* const Fi = scratch + 7 * n1;
   double* const G = scratch + 8 * n1;
+  Pair* const vv = reinterpret_cast<Pair*>(scratch + 9 * n1);
   auto add_force = [&](int i, double* into) {
     const Forcing& f = model_.pellets[i].force;
     if (f.active())
@@ -121,6 +133,7 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
       component(dphi_index(i))[k + 1] = acc / (k + 1);
     }
   }
+  for (int j = 0; j < order; ++j) vv[j] = Pair{v[j], v[j]};
   for (int i : body.members) {
     if (!alone) {
       std::fill(Fi, Fi + n1, 0.0);
@@ -136,13 +149,18 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
       g = G;
     }
     double* const w = component(work_index(i));
-    const std::span<const double> vs(v, n1), gs(g, n1);
-    // Without v² (no friction, no damper) damper·Q[k] is a zero that changes nothing.
-    if (squares)
-      for (int k = 0; k < order; ++k)
-        w[k + 1] = (R * product_coefficient(vs, gs, k) - damper * Q[k]) / (k + 1);
-    else
-      for (int k = 0; k < order; ++k) w[k + 1] = R * product_coefficient(vs, gs, k) / (k + 1);
+    // Coefficient k of the work's rate over k + 1. Without v² (no friction, no damper)
+    // damper·Q[k] is a zero that changes nothing.
+    auto rate = [&](int k, double product) {
+      return squares ? (R * product - damper * Q[k]) / (k + 1) : R * product / (k + 1);
+    };
+    int k = 0;
+    for (; k + 1 < order; k += 2) {
+      const Pair product = product_pair(vv, g, k);
+      w[k + 1] = rate(k, product[0]);
+      w[k + 2] = rate(k + 1, product[1]);
+    }
+    if (k < order) w[k + 1] = rate(k, product_coefficient({v, n1}, {g, n1}, k));
   }
 }
 
