@@ -142,8 +142,18 @@ double polynomial_value(std::span<const double> c, double tau) {
 }
 
 double polynomial_rate(std::span<const double> c, double tau) {
+  // r ← r·τ + k·c[k] from the top down to k = 1, two steps per pass (the same steps).
   double r = 0.0;
-  for (std::size_t k = c.size(); k-- > 1;) r = r * tau + static_cast<double>(k) * c[k];
+  std::size_t k = c.size();
+  if (k < 2) return r;
+  if ((k - 1) % 2 == 1) {
+    --k;
+    r = r * tau + static_cast<double>(k) * c[k];
+  }
+  for (; k > 1; k -= 2) {
+    r = r * tau + static_cast<double>(k - 1) * c[k - 1];
+    r = r * tau + static_cast<double>(k - 2) * c[k - 2];
+  }
   return r;
 }
 
