@@ -32,7 +32,12 @@ using Pair = double __attribute__((vector_size(16), aligned(8)));
 // sums, term for term and in the same order, both in one pass.
 void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
   Pair sc = {0.0, 0.0};  // {Σ j·u[j]·C[k−j], Σ j·u[j]·S[k−j]}
-  for (int j = 1; j <= k; ++j) sc += ju[j] * CS[k - j];
+  int j = 1;
+  for (; j < k; j += 2) {  // two terms per pass, added one after the other
+    sc += ju[j] * CS[k - j];
+    sc += ju[j + 1] * CS[k - j - 1];
+  }
+  if (j == k) sc += ju[j] * CS[0];
   CS[k] = Pair{-sc[1] / k, sc[0] / k};
 }
 
@@ -40,8 +45,14 @@ void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
 // ascending as integrators::product_coefficient does, in the two lanes of one pass (lane 1's
 // last term, j = k + 1, added after it).
 Pair product_pair(const Pair* vv, const double* g, int k) {
+  auto g_pair = [&](int j) { return *reinterpret_cast<const Pair*>(g + (k - j)); };
   Pair sum = {0.0, 0.0};
-  for (int j = 0; j <= k; ++j) sum += vv[j] * *reinterpret_cast<const Pair*>(g + (k - j));
+  int j = 0;
+  for (; j < k; j += 2) {  // two terms per pass, added one after the other
+    sum += vv[j] * g_pair(j);
+    sum += vv[j + 1] * g_pair(j + 1);
+  }
+  if (j == k) sum += vv[j] * g_pair(j);
   sum[1] += vv[k + 1][0] * g[0];
   return sum;
 }
