@@ -1,7 +1,9 @@
 #include "core/integrators/taylor.h"
 
 #include <algorithm>
+#include <bit>
 #include <cmath>
+#include <cstdint>
 #include <limits>
 #include <numbers>
 
@@ -51,20 +53,48 @@ bool finite_coefficients(std::span<const double> c) {
   return std::all_of(c.begin(), c.end(), [](double x) { return std::isfinite(x); });
 }
 
+// log2 x within 0.09 for a normal x > 0: its exponent plus its mantissa less 1 (the chord of
+// log2 over [1, 2), which lies below it by 0.086 at most).
+double rough_log2(double x) {
+  const auto bits = std::bit_cast<std::uint64_t>(x);
+  const int exponent = static_cast<int>(bits >> 52) - 1023;
+  const double mantissa =
+      std::bit_cast<double>((bits & 0x000FFFFFFFFFFFFFull) | 0x3FF0000000000000ull);
+  return exponent + (mantissa - 1.0);
+}
+
+// Which of a^(1/ka) and b^(1/kb) (a, b > 0) is the smaller one by far more than the powers'
+// round-off, judged from rough logarithms and their error bound: 0 (a's), 1 (b's), or −1 where
+// that cannot be told cheaply (close, or not both normal).
+int clearly_smaller(double a, int ka, double b, int kb) {
+  if (!std::isnormal(a) || !std::isnormal(b) || a < 0.0 || b < 0.0) return -1;
+  const double la = rough_log2(a) / ka, lb = rough_log2(b) / kb;
+  const double margin = 0.1 / ka + 0.1 / kb;
+  return la + margin < lb ? 0 : lb + margin < la ? 1 : -1;
+}
+
 }  // namespace
 
 double Taylor::step_size() {
   // min_i (w_i/|c_i|)^(1/k) = (min_i w_i/|c_i|)^(1/k): one power per order.
   for (int i = 0; i < n_; ++i) scale_[i] = tol_.scale(i, y_[i]);
-  double rho = std::numeric_limits<double>::infinity();
-  for (int k : {order_ - 1, order_}) {
-    double least = std::numeric_limits<double>::infinity();
+  const int orders[2] = {order_ - 1, order_};
+  double least[2];
+  for (int o = 0; o < 2; ++o) {
+    least[o] = std::numeric_limits<double>::infinity();
     for (int i = 0; i < n_; ++i) {
-      const double c = std::abs(coefficients_[static_cast<std::size_t>(i) * (order_ + 1) + k]);
-      if (c > 0.0) least = std::min(least, scale_[i] / (options_.rtol * c));
+      const double c =
+          std::abs(coefficients_[static_cast<std::size_t>(i) * (order_ + 1) + orders[o]]);
+      if (c > 0.0) least[o] = std::min(least[o], scale_[i] / (options_.rtol * c));
     }
-    if (std::isfinite(least)) rho = std::min(rho, std::pow(least, 1.0 / k));
   }
+  // Where the two radii are clearly apart, only the smaller one's power is taken: the same
+  // minimum, one power instead of two.
+  if (const int o = clearly_smaller(least[0], orders[0], least[1], orders[1]); o >= 0)
+    return safety_ * std::pow(least[o], 1.0 / orders[o]);
+  double rho = std::numeric_limits<double>::infinity();
+  for (int o = 0; o < 2; ++o)
+    if (std::isfinite(least[o])) rho = std::min(rho, std::pow(least[o], 1.0 / orders[o]));
   return safety_ * rho;
 }
 
