@@ -271,12 +271,12 @@ bool watch_polynomial(const Watch& w, const LinearForm& form, const StepPolynomi
 }  // namespace
 
 bool CrossingFinder::served_by_polynomials(const std::vector<Watch>& watches,
-                                           const std::vector<Body>& bodies, const StepView& step) {
+                                           const std::vector<Body>& /*bodies*/,
+                                           const StepView& step) {
   const StepPolynomials* p = step.polynomials();
   if (!p || p->t0 != step.t_prev()) return false;
   for (std::size_t w = 0; w < watches.size(); ++w)
-    if (!tracks_[w].armed || !linear_form(watches[w], bodies) || !formable(watches[w], *p))
-      return false;
+    if (!tracks_[w].armed || !tracks_[w].form || !formable(watches[w], *p)) return false;
   calm_end_ = std::numeric_limits<double>::quiet_NaN();  // the end's values are not calm()'s
   return true;
 }
@@ -285,11 +285,10 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
                                                       const StepView& step, const Vec& y_end,
                                                       bool& served) {
   const StepPolynomials* p = step.polynomials();
-  const std::optional<LinearForm> form = linear_form(fn.watch, fn.bodies);
   std::array<double, kMaxPolynomialDegree + 1> q;
   int degree = 0;
-  served = form && track.armed && p->t0 == step.t_prev() &&
-           watch_polynomial(fn.watch, *form, *p, q, degree);
+  served = track.form && track.armed && p->t0 == step.t_prev() &&
+           watch_polynomial(fn.watch, *track.form, *p, q, degree);
   if (!served) return std::nullopt;
   const double t0 = step.t_prev(), h = step.t() - t0;
   const std::span<const double> poly(q.data(), degree + 1);
@@ -444,6 +443,7 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
       track.closing = closing(watches[w], model, *law_, bodies, t0, y0, true);
     track.armed = track.last > 0.0;
     track.largest = std::max(0.0, track.closing.value);
+    track.form = linear_form(watches[w], bodies);
   }
 }
 
