@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstring>
 
 #include "core/integrators/series.h"
 #include "core/model/dynamics.h"
@@ -45,7 +46,11 @@ void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
 // ascending as integrators::product_coefficient does, in the two lanes of one pass (lane 1's
 // last term, j = k + 1, added after it).
 Pair product_pair(const Pair* vv, const double* g, int k) {
-  auto g_pair = [&](int j) { return *reinterpret_cast<const Pair*>(g + (k - j)); };
+  auto g_pair = [&](int j) {  // {g[k − j], g[k − j + 1]}, copied out of the doubles
+    Pair x;
+    std::memcpy(&x, g + (k - j), sizeof x);
+    return x;
+  };
   Pair sum = {0.0, 0.0};
   int j = 0;
   for (; j < k; j += 2) {  // two terms per pass, added one after the other
