@@ -26,7 +26,7 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
     const WatchFunction fn{watches[w], model, bodies, *law_};
     bool served = false;
     std::optional<Bracket> first;
-    if (polynomials) first = on_polynomials(tracks_[w], fn, step, served);
+    if (polynomials) first = on_polynomials(tracks_[w], fn, step, states.back(), served);
     if (!served) first = scan(tracks_[w], fn, step, s);
     if (first) brackets_.push_back({static_cast<int>(w), *first});
   }
@@ -265,7 +265,7 @@ bool formable(const Watch& w, const StepPolynomials& p) {
 bool watch_polynomial(const Watch& w, const LinearForm& form, const StepPolynomials& p,
                       std::array<double, kMaxPolynomialDegree + 1>& q, int& degree) {
   if (!formable(w, p)) return false;
-  q.fill(0.0);
+  std::fill(q.begin(), q.begin() + p.degree + 1, 0.0);  // q beyond the degree is not read
   for (int j = 0; j < form.terms; ++j) {
     const std::span<const double> c = p.component(form.index[j]);
     for (int k = 0; k <= p.degree; ++k) q[k] += form.weight[j] * c[k];
@@ -281,44 +281,42 @@ bool watch_polynomial(const Watch& w, const LinearForm& form, const StepPolynomi
 }  // namespace
 
 bool CrossingFinder::served_by_polynomials(const std::vector<Watch>& watches,
-                                           const std::vector<Body>& bodies, const StepView& step) {
+                                           const std::vector<Body>& /*bodies*/,
+                                           const StepView& step) {
   const StepPolynomials* p = step.polynomials();
   if (!p || p->t0 != step.t_prev()) return false;
   for (std::size_t w = 0; w < watches.size(); ++w)
-    if (!tracks_[w].armed || !linear_form(watches[w], bodies) || !formable(watches[w], *p))
-      return false;
+    if (!tracks_[w].armed || !tracks_[w].form || !formable(watches[w], *p)) return false;
   calm_end_ = std::numeric_limits<double>::quiet_NaN();  // the end's values are not calm()'s
   return true;
 }
 
 std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const WatchFunction& fn,
-                                                      const StepView& step, bool& served) {
+                                                      const StepView& step, const Vec& y_end,
+                                                      bool& served) {
   const StepPolynomials* p = step.polynomials();
-  const std::optional<LinearForm> form = linear_form(fn.watch, fn.bodies);
   std::array<double, kMaxPolynomialDegree + 1> q;
   int degree = 0;
-  served = form && track.armed && p->t0 == step.t_prev() &&
-           watch_polynomial(fn.watch, *form, *p, q, degree);
+  served = track.form && track.armed && p->t0 == step.t_prev() &&
+           watch_polynomial(fn.watch, *track.form, *p, q, degree);
   if (!served) return std::nullopt;
   const double t0 = step.t_prev(), h = step.t() - t0;
   const std::span<const double> poly(q.data(), degree + 1);
   // Above every near miss's error over the whole step: no root, no near miss to isolate.
   const double near = 10.0 * (rtol_ * std::max(track.largest, 1.0 + std::numbers::pi) + atol_);
-  PolynomialMinima minima;
-  std::optional<PolynomialBracket> root;
-  if (stays_above(poly, h, near))
-    minima.count = 0;
-  else
-    root = first_polynomial_crossing(poly, h, &minima);
-  Vec& y = scratch_left_;
-  for (int i = 0; i < minima.count; ++i) {
-    const PolynomialMinimum& m = minima.at[i];
-    if (!(m.value < near)) continue;  // above any near miss's error (near_miss)
-    step.dense(t0 + m.tau, y);
-    if (auto graze = near_miss(fn.watch, t0 + m.tau, m.value, m.half_curvature, track.largest, y))
-      grazes_.push_back(*graze);
+  if (!stays_above(poly, h, near)) {
+    PolynomialMinima minima;  // filled only here: a bound that clears the step costs no minima
+    const std::optional<PolynomialBracket> root = first_polynomial_crossing(poly, h, &minima);
+    Vec& y = scratch_left_;
+    for (int i = 0; i < minima.count; ++i) {
+      const PolynomialMinimum& m = minima.at[i];
+      if (!(m.value < near)) continue;  // above any near miss's error (near_miss)
+      step.dense(t0 + m.tau, y);
+      if (auto graze = near_miss(fn.watch, t0 + m.tau, m.value, m.half_curvature, track.largest, y))
+        grazes_.push_back(*graze);
+    }
+    if (root) return Bracket{t0 + root->lo, t0 + root->hi, root->p_lo, root->p_hi};
   }
-  if (root) return Bracket{t0 + root->lo, t0 + root->hi, root->p_lo, root->p_hi};
   // No root: the track moves on to the step's end, as a scan's would. An undeflated watch's
   // polynomial is its value, and its derivative the rate closing() gives (a gap's speeds' or a
   // speed's acceleration), without the state.
@@ -330,10 +328,9 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
     }
     return std::nullopt;
   }
-  step.dense(step.t(), y);
-  track.last = fn.value(step.t(), y);
+  track.last = fn.value(step.t(), y_end);
   if (follows_motion(fn.watch.kind)) {
-    track.closing = fn.closing_at(step.t(), y);
+    track.closing = fn.closing_at(step.t(), y_end);
     track.largest = std::max(track.largest, track.closing.value);
   }
   return std::nullopt;
@@ -456,6 +453,7 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
       track.closing = closing(watches[w], model, *law_, bodies, t0, y0, true);
     track.armed = track.last > 0.0;
     track.largest = std::max(0.0, track.closing.value);
+    track.form = linear_form(watches[w], bodies);
   }
 }
 

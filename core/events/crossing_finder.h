@@ -56,6 +56,8 @@ struct WatchTrack {
   bool calm = false;
   double end_value = 0.0;
   Closing end_closing;
+  // The watch as a linear function of the state (linear_form), fixed for the interval.
+  std::optional<LinearForm> form;
 };
 
 // One watch of the interval with what its value depends on: the function the phases search.
@@ -97,7 +99,8 @@ class CrossingFinder {
 
   // Whether every watch of the step is served by its polynomial (on_polynomials): the step is
   // given as polynomials and each watch is linear in the state and armed. Then `find` needs no
-  // samples inside the step: its end alone, with no calm() before it.
+  // samples inside the step: its end alone, with no calm() before it. (The watches' linear
+  // forms were taken from the bodies at start(); `bodies` is kept for the callers.)
   bool served_by_polynomials(const std::vector<Watch>& watches, const std::vector<Body>& bodies,
                              const StepView& step);
 
@@ -152,9 +155,10 @@ class CrossingFinder {
                                          double t_b, const Closing& b);
   // A watch linear in the state on a step given as polynomials: the first root of its
   // polynomial, its minima above zero as near misses; nullopt in `served` when the step or the
-  // watch cannot be served so (then it is scanned).
+  // watch cannot be served so (then it is scanned). y_end: the state at the step's end (its
+  // polynomials' value there, the stepper's y()).
   std::optional<Bracket> on_polynomials(WatchTrack& track, const WatchFunction& fn,
-                                        const StepView& step, bool& served);
+                                        const StepView& step, const Vec& y_end, bool& served);
 
   // Phase refine: the root in a bracket to round-off of t, on the dense output.
   double refine(const WatchFunction& fn, const StepView& step, const Bracket& b);

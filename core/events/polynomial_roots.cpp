@@ -118,6 +118,23 @@ int roots_inside(std::span<const double> c, double h, double* roots) {
   return n;
 }
 
+// Whether p stays above `level` over [0, h] by its quadratic part's least value there less a
+// bound of the rest, Σ_{k≥3} |c[k]|·h^k (and a round-off allowance): tight where the motion over
+// the step is nearly a parabola, as it is where c[0] − Σ |c[k]|·h^k is not (a gap closing fast).
+bool quadratic_stays_above(std::span<const double> c, double h, double level) {
+  const int d = static_cast<int>(c.size()) - 1;
+  if (d < 2) return false;
+  double rest = 0.0;
+  for (int k = d; k >= 3; --k) rest = rest * h + std::abs(c[k]);
+  rest *= h * h * h;
+  const double c0 = c[0], c1 = c[1], c2 = c[2];
+  double least = std::min(c0, c0 + h * (c1 + h * c2));
+  const double vertex = -c1 / (2.0 * c2);
+  if (c2 > 0.0 && vertex > 0.0 && vertex < h) least = std::min(least, c0 - c1 * c1 / (4.0 * c2));
+  const double allowance = 1e-12 * (std::abs(c0) + h * (std::abs(c1) + h * std::abs(c2)));
+  return least - rest - allowance > level;
+}
+
 }  // namespace
 
 double polynomial_value(std::span<const double> c, double tau) {
@@ -125,8 +142,18 @@ double polynomial_value(std::span<const double> c, double tau) {
 }
 
 double polynomial_rate(std::span<const double> c, double tau) {
+  // r ← r·τ + k·c[k] from the top down to k = 1, two steps per pass (the same steps).
   double r = 0.0;
-  for (std::size_t k = c.size(); k-- > 1;) r = r * tau + static_cast<double>(k) * c[k];
+  std::size_t k = c.size();
+  if (k < 2) return r;
+  if ((k - 1) % 2 == 1) {
+    --k;
+    r = r * tau + static_cast<double>(k) * c[k];
+  }
+  for (; k > 1; k -= 2) {
+    r = r * tau + static_cast<double>(k - 1) * c[k - 1];
+    r = r * tau + static_cast<double>(k - 2) * c[k - 2];
+  }
   return r;
 }
 
@@ -136,6 +163,7 @@ bool stays_above(std::span<const double> c, double h, double level) {
   double spread = 0.0;
   for (int k = d; k >= 1; --k) spread = (spread + std::abs(c[k])) * h;
   if (c[0] - spread > level) return true;
+  if (quadratic_stays_above(c, h, level)) return true;
   Coefficients b{};
   bernstein(c, h, b);
   for (int i = 0; i <= d; ++i)

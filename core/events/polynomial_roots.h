@@ -18,7 +18,8 @@ double polynomial_value(std::span<const double> c, double tau);
 double polynomial_rate(std::span<const double> c, double tau);
 
 // Whether p stays above `level` over [0, h], proven by a bound: c[0] − Σ_{k≥1} |c[k]|·h^k
-// first, then the least of p's Bernstein coefficients on [0, h] (p lies in their convex hull).
+// first, then its quadratic part's least value on [0, h] less Σ_{k≥3} |c[k]|·h^k, then the least
+// of p's Bernstein coefficients on [0, h] (p lies in their convex hull).
 // A step far from the watch's root costs a pass or two over its coefficients, not the
 // isolation of its roots; false says nothing.
 bool stays_above(std::span<const double> c, double h, double level);

@@ -7,10 +7,19 @@
 
 namespace vibro::integrators {
 
-// p(τ) = Σ_k c[k]·τ^k by Horner's rule.
+// p(τ) = Σ_k c[k]·τ^k by Horner's rule: p ← p·τ + c[k] from the top down, starting from 0.
+// Two steps per pass (the same steps, so the same bits), half the loop's overhead.
 inline double horner(std::span<const double> c, double tau) {
   double p = 0.0;
-  for (std::size_t k = c.size(); k-- > 0;) p = p * tau + c[k];
+  std::size_t k = c.size();
+  if (k % 2 == 1) {
+    --k;
+    p = p * tau + c[k];
+  }
+  for (; k > 0; k -= 2) {
+    p = p * tau + c[k - 1];
+    p = p * tau + c[k - 2];
+  }
   return p;
 }
 

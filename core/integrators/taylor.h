@@ -47,7 +47,7 @@ class Taylor final : public Stepper {
   // Jorba and Zou's step: ρ_m/e²·min(ρ_{p−1}, ρ_p), ρ_k = min_i (w_i/|c_i[k]|)^(1/k) with w_i the
   // component's tolerance scale over rtol (relative to its size, atol/rtol at least), and the
   // safety factor ρ_m = exp(−0.7/(p − 1)). Infinite where the series stops (a body at rest).
-  double step_size() const;
+  double step_size();
 
   StepperOptions options_;
   Tolerance tol_;
@@ -58,6 +58,7 @@ class Taylor final : public Stepper {
   double t_ = 0.0, t_prev_ = 0.0;
   bool stepped_ = false;  // a step since start(): the polynomials describe [t_prev_, t_]
   Vec y_, y_next_;
+  Vec scale_;                         // step_size's tolerance scale per component
   std::vector<double> coefficients_;  // the last step's series, (order_ + 1) per component
   StepPolynomials poly_;
   StepperStats stats_;

@@ -290,11 +290,15 @@ TEST(PolynomialRoots, TheFirstCrossingsBracketIsRoundOffWide) {
   EXPECT_NEAR(b->hi, 0.3, 4.0 * kEps);
 }
 
-// (τ − 0.5)² + 0.3 on [0, 1]: the crude bound 0.55 − 1 − 1 proves nothing, its Bernstein
-// coefficients (0.55, 0.05, 0.55) prove it positive; the dipping cubic is not.
+// (τ − 0.5)² + 0.3 on [0, 1]: the crude bound 0.55 − 1 − 1 proves nothing, its quadratic part
+// proves it above 0.06 (its Bernstein coefficients (0.55, 0.05, 0.55) would not), never above
+// its minimum 0.3; with a cubic term the quadratic part's bound leaves the Bernstein
+// coefficients to prove it positive; the dipping cubic is not.
 TEST(PolynomialRoots, ABoundProvesAStepClearOfZeroWithoutIsolatingRoots) {
   EXPECT_TRUE(stays_above(std::vector<double>{0.55, -1.0, 1.0}, 1.0, 0.0));
-  EXPECT_FALSE(stays_above(std::vector<double>{0.55, -1.0, 1.0}, 1.0, 0.06));
+  EXPECT_TRUE(stays_above(std::vector<double>{0.55, -1.0, 1.0}, 1.0, 0.06));
+  EXPECT_FALSE(stays_above(std::vector<double>{0.55, -1.0, 1.0}, 1.0, 0.31));
+  EXPECT_TRUE(stays_above(std::vector<double>{0.55, -1.0, 1.0, 0.3}, 1.0, 0.0));
   EXPECT_TRUE(stays_above(std::vector<double>{1.0, 0.1}, 1.0, 0.5));
   EXPECT_FALSE(stays_above(kDippingCubic, 1.0, 0.0));
   EXPECT_FALSE(stays_above(std::vector<double>{0.21, -1.0, 1.0}, 1.0, 0.0));  // two roots

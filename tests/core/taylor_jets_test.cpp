@@ -163,5 +163,24 @@ TEST(TaylorJets, TheTruncationErrorHasTheSeriesOrder) {
   }
 }
 
+// Coefficient k depends on the series up to k alone: a long series (past the orders the jets keep
+// on the stack, so in their heap scratch) begins with the short one, bit for bit.
+TEST(TaylorJets, ALongSeriesBeginsWithTheShortOne) {
+  for (FrictionLaw law : {FrictionLaw::paper, FrictionLaw::bilateral}) {
+    const Model model = forced_model(law);
+    const std::vector<Body> bodies = forced_bodies();
+    const Vec y0 = forced_state();
+    const SegmentDynamics sys(model, bodies, y0);
+    const int short_order = 12, long_order = 40;
+    const std::vector<double> a = jets(sys, 0.7, y0, short_order);
+    const std::vector<double> b = jets(sys, 0.7, y0, long_order);
+    for (int i = 0; i < sys.dimension(); ++i)
+      for (int k = 0; k <= short_order; ++k)
+        EXPECT_EQ(a[static_cast<std::size_t>(i) * (short_order + 1) + k],
+                  b[static_cast<std::size_t>(i) * (long_order + 1) + k])
+            << "component " << i << ", k = " << k;
+  }
+}
+
 }  // namespace
 }  // namespace vibro
