@@ -1,6 +1,6 @@
-// `vibro work-precision SCENE [-o wp.png|wp.svg|wp.pdf] [--repeats N]`: for each method and
-// tolerance from 1e-3 to 1e-12, the median run time and the true error; prints the table as JSON,
-// or draws the diagram and says where.
+// `vibro work-precision SCENE [-o wp.png|wp.svg|wp.pdf|wp.json]... [--repeats N]`: for each method
+// and tolerance from 1e-3 to 1e-12, the median run time and the true error; prints the table as
+// JSON, or writes it and draws the diagram from one timing, saying where each went.
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -23,7 +23,8 @@ struct WorkPrecisionCommandOptions {
 int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
   const auto scene = load_scene(o.job.scene);
   if (!scene) return 2;
-  if (!outputs_named(o.job.outs, {".png", ".svg", ".pdf"}, "image OUT.png, OUT.svg or OUT.pdf"))
+  if (!outputs_named(o.job.outs, {".png", ".svg", ".pdf", ".json"},
+                     "image OUT.png, OUT.svg or OUT.pdf, or the table OUT.json"))
     return 2;
   const WorkPrecisionReport report = work_precision(scene->model, scene->sim, o.run);
   if (o.job.outs.empty()) {
@@ -34,12 +35,15 @@ int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
   WorkPrecisionPlot plot;
   if (!scene->name.empty()) plot.title = "Work-precision, " + scene->name + " scene";
   figure.plots = {plot};
-  for (const std::string& out : o.job.outs) {  // one timing, drawn in every format asked for
-    const auto bytes = drawn_bytes(
-        render_figure(figure, scene->model, RunResult{}, *image_format_of_file(out), {&report}));
+  for (const std::string& out : o.job.outs) {  // one timing, written or drawn in every form asked
+    const auto image = image_format_of_file(out);
+    const auto bytes =
+        image ? drawn_bytes(render_figure(figure, scene->model, RunResult{}, *image, {&report}))
+              : std::optional<std::string>(work_precision_to_json(report).dump(2) + "\n");
     if (!bytes || !write_output(out, *bytes)) return 1;
-    // The diagram was asked for: where it went, not the table it draws (some 400 lines).
-    std::cout << nlohmann::json{{"image", out}, {"bytes", bytes->size()}}.dump() << "\n";
+    // Where each output went, not the table (some 400 lines).
+    std::cout << nlohmann::json{{image ? "image" : "table", out}, {"bytes", bytes->size()}}.dump()
+              << "\n";
   }
   return 0;
 }
@@ -48,11 +52,12 @@ int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
 
 Command add_work_precision_command(CLI::App& vibro) {
   auto o = std::make_shared<WorkPrecisionCommandOptions>();
-  CLI::App* command =
-      add_scene_command(vibro, "work-precision",
-                        "Error against run time per method, tolerances 1e-3 to 1e-12: the table as "
-                        "JSON, or the diagram",
-                        "draw the diagram instead: OUT.png, OUT.svg or OUT.pdf", o->job);
+  CLI::App* command = add_scene_command(
+      vibro, "work-precision",
+      "Error against run time per method, tolerances 1e-3 to 1e-12: the table as "
+      "JSON, or the diagram",
+      "draw the diagram (OUT.png, OUT.svg or OUT.pdf) or write the table (OUT.json) instead",
+      o->job);
   command
       ->add_option("--repeats", o->run.repeats,
                    "timed runs per point, their median kept (default 3)")

@@ -137,6 +137,15 @@ r = json.loads(lines[0]); assert r["image"] == "wp.png" and r["bytes"] > 1000, r
 then pass "work-precision -o prints where the diagram went"
 else fail "work-precision -o prints where the diagram went"; head -5 out.txt; fi
 
+# work-precision -o OUT.json writes the table the diagram drawn beside it comes from (one timing).
+if "$vibro" work-precision --preset paper --t-end 1 --repeats 1 -o wp2.png -o wp.json > out.txt &&
+  python3 -c '
+import json; lines = [json.loads(l) for l in open("out.txt").read().splitlines()]
+assert [l.get("image") or l.get("table") for l in lines] == ["wp2.png", "wp.json"], lines
+t = json.load(open("wp.json")); assert t["reference"] and len(t["points"]) > 10, list(t)'
+then pass "work-precision -o OUT.json writes the table beside the diagram"
+else fail "work-precision -o OUT.json writes the table beside the diagram"; head -5 out.txt; fi
+
 # A scene that cannot be read is named with the reason, by every command that reads one.
 mkdir -p adir
 for command in simulate render work-precision sweep orbit; do
