@@ -59,70 +59,69 @@ double spacing(const std::vector<Event>& events, std::size_t k, double t_end) {
   return std::min(before, after);
 }
 
-// The speeds an instant leaves the pellets of one event by_instant() lists with (the last each of
-// its impacts left, pellet by pellet), and the largest speed it meets or leaves.
+// The speeds an instant's collisions leave its pellets with (the last each of its impacts left,
+// pellet by pellet; none for a pellet whose last impact was on a limiter, which sets the sign of
+// the speed it leaves), and the largest speed the instant meets or leaves.
 struct Leaving {
   std::vector<std::pair<int, double>> speeds;
   double largest = 0.0;
 };
 
 void note_leaving(const Event& e, Leaving& l) {
+  const bool collision = e.kind == EventKind::collision;
   for (std::size_t j = 0; j < e.pellets.size() && j < e.dphi_after.size(); ++j) {
     auto same = std::find_if(l.speeds.begin(), l.speeds.end(),
                              [&](const auto& s) { return s.first == e.pellets[j]; });
-    if (same == l.speeds.end())
-      l.speeds.emplace_back(e.pellets[j], e.dphi_after[j]);
-    else
-      same->second = e.dphi_after[j];
+    if (same != l.speeds.end()) l.speeds.erase(same);
+    if (collision) l.speeds.emplace_back(e.pellets[j], e.dphi_after[j]);
     l.largest = std::max(l.largest, std::abs(e.dphi_after[j]));
   }
   for (double v : e.dphi_before) l.largest = std::max(l.largest, std::abs(v));
 }
 
-// by_instant(), and with `leaving` the speeds each listed event leaves (in the same order).
+// by_instant(), and with `leaving` what the instant of each listed event leaves (in the same
+// order).
 std::vector<Event> group_instants(const std::vector<Event>& events, std::vector<Leaving>* leaving) {
-  auto order = [](const auto& x, const auto& y) {
-    return std::tie(x.first.kind, x.first.limiter, x.first.pellets) <
-           std::tie(y.first.kind, y.first.limiter, y.first.pellets);
+  auto order = [](const Event& x, const Event& y) {
+    return std::tie(x.kind, x.limiter, x.pellets) < std::tie(y.kind, y.limiter, y.pellets);
   };
   std::vector<Event> out;
   std::vector<Leaving> left;
   for (std::size_t i = 0; i < events.size();) {
     const double t = events[i].t;
-    std::vector<std::pair<Event, Leaving>> instant;
+    std::vector<Event> instant;
+    Leaving instant_left;
     for (; i < events.size() && events[i].t <= t + kTrustPolicy.same_instant * (1.0 + std::abs(t));
          ++i) {
       const Event& e = events[i];
       const bool merges = e.kind == EventKind::collision || e.kind == EventKind::limiter;
-      auto same = std::find_if(instant.begin(), instant.end(), [&](const auto& x) {
-        return merges && x.first.kind == e.kind && x.first.limiter == e.limiter;
+      auto same = std::find_if(instant.begin(), instant.end(), [&](const Event& x) {
+        return merges && x.kind == e.kind && x.limiter == e.limiter;
       });
       if (same == instant.end()) {
-        instant.emplace_back(e, Leaving{});
+        instant.push_back(e);
         same = instant.end() - 1;
       } else {
-        same->first.pellets.insert(same->first.pellets.end(), e.pellets.begin(), e.pellets.end());
+        same->pellets.insert(same->pellets.end(), e.pellets.begin(), e.pellets.end());
       }
-      note_leaving(e, same->second);
-      std::vector<int>& pellets = same->first.pellets;
+      note_leaving(e, instant_left);
+      std::vector<int>& pellets = same->pellets;
       if (merges) {
         std::sort(pellets.begin(), pellets.end());
         pellets.erase(std::unique(pellets.begin(), pellets.end()), pellets.end());
       }
     }
     std::stable_sort(instant.begin(), instant.end(), order);
-    for (auto& [e, l] : instant) {
-      out.push_back(std::move(e));
-      left.push_back(std::move(l));
-    }
+    out.insert(out.end(), instant.begin(), instant.end());
+    left.insert(left.end(), instant.size(), instant_left);
   }
   if (leaving) *leaving = std::move(left);
   return out;
 }
 
-// Whether the speeds a run and its shadow leave a pellet with at one event leave its turn
-// unresolved: within turn_speed_errors of their difference of zero, and that difference past
-// round-off. The first such pellet, or -1. A pellet that leaves an impact slowly turns soon
+// Whether the speeds a run's and its shadow's collisions leave a pellet with at one instant leave
+// its turn unresolved: within turn_speed_errors of their difference of zero, and that difference
+// past round-off. The first such pellet, or -1. A pellet that leaves an impact slowly turns soon
 // after, or not at all, as the sign of its speed has it.
 int uncertain_turn(const Leaving& run, const Leaving& shadow) {
   const double round_off = kTrustPolicy.speed_round_off_ulps *
@@ -257,9 +256,9 @@ bool unresolved(const std::vector<Event>& a, const std::vector<Event>& b, std::s
           gap_difference > round_off);
 }
 
-// Ends the trust ten errors before event k (the earlier of the two runs' times) where it leaves a
-// pellet whose turn is unresolved (uncertain_turn): the turn may come at once, or not at all;
-// true if it does.
+// Ends the trust ten errors before event k (the earlier of the two runs' times) where its
+// instant's collisions leave a pellet whose turn is unresolved (uncertain_turn): the turn may come
+// at once, or not at all; true if it does.
 bool ends_at_uncertain_turn(const std::vector<Event>& a, const std::vector<Event>& b,
                             const std::vector<Leaving>& left_a, const std::vector<Leaving>& left_b,
                             std::size_t k, TrustReport& r) {
@@ -530,9 +529,9 @@ void apply_check(const Model& model, const RunResult& shadow, RunResult& run, do
   why.precision(7);
   if (r.uncertain_turn >= 0) {
     const auto k = static_cast<std::size_t>(r.uncertain_turn);
-    why << "events are trusted until t = " << r.trusted_until << " s: this run lists "
-        << describe(listed[k]) << ", which leaves pellet " << r.turning_pellet + 1 << " at "
-        << std::setprecision(3) << r.run_speed << " rad/s, and the check run (" << st.check_method
+    why << "events are trusted until t = " << r.trusted_until << " s: at t = " << listed[k].t
+        << " s this run's collisions leave pellet " << r.turning_pellet + 1 << " at "
+        << std::setprecision(3) << r.run_speed << " rad/s, and the check run's (" << st.check_method
         << ") at " << r.shadow_speed
         << " rad/s, within ten times their difference of zero. Whether and when it turns depends "
            "on differences below the tolerance (a sensitive turn); tighten rtol to see whether "
