@@ -59,6 +59,84 @@ double spacing(const std::vector<Event>& events, std::size_t k, double t_end) {
   return std::min(before, after);
 }
 
+// The speeds an instant's collisions leave its pellets with (the last each of its impacts left,
+// pellet by pellet; none for a pellet whose last impact was on a limiter, which sets the sign of
+// the speed it leaves), and the largest speed the instant meets or leaves.
+struct Leaving {
+  std::vector<std::pair<int, double>> speeds;
+  double largest = 0.0;
+};
+
+void note_leaving(const Event& e, Leaving& l) {
+  const bool collision = e.kind == EventKind::collision;
+  for (std::size_t j = 0; j < e.pellets.size() && j < e.dphi_after.size(); ++j) {
+    auto same = std::find_if(l.speeds.begin(), l.speeds.end(),
+                             [&](const auto& s) { return s.first == e.pellets[j]; });
+    if (same != l.speeds.end()) l.speeds.erase(same);
+    if (collision) l.speeds.emplace_back(e.pellets[j], e.dphi_after[j]);
+    l.largest = std::max(l.largest, std::abs(e.dphi_after[j]));
+  }
+  for (double v : e.dphi_before) l.largest = std::max(l.largest, std::abs(v));
+}
+
+// by_instant(), and with `leaving` what the instant of each listed event leaves (in the same
+// order).
+std::vector<Event> group_instants(const std::vector<Event>& events, std::vector<Leaving>* leaving) {
+  auto order = [](const Event& x, const Event& y) {
+    return std::tie(x.kind, x.limiter, x.pellets) < std::tie(y.kind, y.limiter, y.pellets);
+  };
+  std::vector<Event> out;
+  std::vector<Leaving> left;
+  for (std::size_t i = 0; i < events.size();) {
+    const double t = events[i].t;
+    std::vector<Event> instant;
+    Leaving instant_left;
+    for (; i < events.size() && events[i].t <= t + kTrustPolicy.same_instant * (1.0 + std::abs(t));
+         ++i) {
+      const Event& e = events[i];
+      const bool merges = e.kind == EventKind::collision || e.kind == EventKind::limiter;
+      auto same = std::find_if(instant.begin(), instant.end(), [&](const Event& x) {
+        return merges && x.kind == e.kind && x.limiter == e.limiter;
+      });
+      if (same == instant.end()) {
+        instant.push_back(e);
+        same = instant.end() - 1;
+      } else {
+        same->pellets.insert(same->pellets.end(), e.pellets.begin(), e.pellets.end());
+      }
+      note_leaving(e, instant_left);
+      std::vector<int>& pellets = same->pellets;
+      if (merges) {
+        std::sort(pellets.begin(), pellets.end());
+        pellets.erase(std::unique(pellets.begin(), pellets.end()), pellets.end());
+      }
+    }
+    std::stable_sort(instant.begin(), instant.end(), order);
+    out.insert(out.end(), instant.begin(), instant.end());
+    left.insert(left.end(), instant.size(), instant_left);
+  }
+  if (leaving) *leaving = std::move(left);
+  return out;
+}
+
+// Whether the speeds a run's and its shadow's collisions leave a pellet with at one instant leave
+// its turn unresolved: within turn_speed_errors of their difference of zero, and that difference
+// past round-off. The first such pellet, or -1. A pellet that leaves an impact slowly turns soon
+// after, or not at all, as the sign of its speed has it.
+int uncertain_turn(const Leaving& run, const Leaving& shadow) {
+  const double round_off = kTrustPolicy.speed_round_off_ulps *
+                           std::numeric_limits<double>::epsilon() *
+                           std::max(run.largest, shadow.largest);
+  for (const auto& [pellet, v] : run.speeds) {
+    auto other = std::find_if(shadow.speeds.begin(), shadow.speeds.end(),
+                              [&](const auto& s) { return s.first == pellet; });
+    if (other == shadow.speeds.end()) continue;
+    const double error = std::abs(v - other->second);
+    if (error > round_off && kTrustPolicy.turn_speed_errors * error > std::abs(v)) return pellet;
+  }
+  return -1;
+}
+
 // How early a grazing event may come that a run and its shadow put at t, s: a contact decided by
 // a position error δ (ten times what the tolerance holds an angle to) under accelerations up to
 // a (gravity and the largest force) moves by up to sqrt(2δ/a). A run and its shadow that part
@@ -178,6 +256,29 @@ bool unresolved(const std::vector<Event>& a, const std::vector<Event>& b, std::s
           gap_difference > round_off);
 }
 
+// Ends the trust ten errors before event k (the earlier of the two runs' times) where its
+// instant's collisions leave a pellet whose turn is unresolved (uncertain_turn): the turn may come
+// at once, or not at all; true if it does.
+bool ends_at_uncertain_turn(const std::vector<Event>& a, const std::vector<Event>& b,
+                            const std::vector<Leaving>& left_a, const std::vector<Leaving>& left_b,
+                            std::size_t k, TrustReport& r) {
+  const int pellet = uncertain_turn(left_a[k], left_b[k]);
+  if (pellet < 0) return false;
+  auto speed = [&](const Leaving& l) {
+    return std::find_if(l.speeds.begin(), l.speeds.end(),
+                        [&](const auto& s) { return s.first == pellet; })
+        ->second;
+  };
+  r.uncertain_turn = static_cast<int>(k);
+  r.turning_pellet = pellet;
+  r.run_speed = speed(left_a[k]);
+  r.shadow_speed = speed(left_b[k]);
+  const double end =
+      std::max(0.0, std::min(a[k].t, b[k].t) - kTrustPolicy.margin_errors * r.event_time_error);
+  r.trusted_until = std::min(r.trusted_until, end);
+  return true;
+}
+
 // Ends the trust before the first event one run lists and the other does not (or lists
 // otherwise): event k of both, or the first past the shorter list, if it comes before t_common.
 void end_at_first_difference(const Model& model, const Stats& st, const std::vector<Event>& a,
@@ -277,35 +378,7 @@ double largest_of_estimates(const Model& model, const Stats& st) {
 }  // namespace
 
 std::vector<Event> by_instant(const std::vector<Event>& events) {
-  auto order = [](const Event& x, const Event& y) {
-    return std::tie(x.kind, x.limiter, x.pellets) < std::tie(y.kind, y.limiter, y.pellets);
-  };
-  std::vector<Event> out;
-  for (std::size_t i = 0; i < events.size();) {
-    const double t = events[i].t;
-    const auto first = static_cast<std::ptrdiff_t>(out.size());
-    for (; i < events.size() && events[i].t <= t + kTrustPolicy.same_instant * (1.0 + std::abs(t));
-         ++i) {
-      const Event& e = events[i];
-      const bool merges = e.kind == EventKind::collision || e.kind == EventKind::limiter;
-      auto same = std::find_if(out.begin() + first, out.end(), [&](const Event& x) {
-        return merges && x.kind == e.kind && x.limiter == e.limiter;
-      });
-      if (same == out.end()) {
-        out.push_back(e);
-        same = out.end() - 1;
-      } else {
-        same->pellets.insert(same->pellets.end(), e.pellets.begin(), e.pellets.end());
-      }
-      if (merges) {
-        std::sort(same->pellets.begin(), same->pellets.end());
-        same->pellets.erase(std::unique(same->pellets.begin(), same->pellets.end()),
-                            same->pellets.end());
-      }
-    }
-    std::stable_sort(out.begin() + first, out.end(), order);
-  }
-  return out;
+  return group_instants(events, nullptr);
 }
 
 ShadowOptions check_options(const SimOptions& run) {
@@ -380,7 +453,9 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
   r.trusted_until = t_common;
   const EventTolerances tol = event_tolerances(model);
   const double time_scale = tol.time_scale;
-  const std::vector<Event> a = by_instant(run.events), b = by_instant(shadow.events);
+  std::vector<Leaving> left_a, left_b;
+  const std::vector<Event> a = group_instants(run.events, &left_a),
+                           b = group_instants(shadow.events, &left_b);
   const std::size_t n = std::min(a.size(), b.size());
   const StartShifts shifts(model, shadow, budget_ms);
   std::size_t k = 0;
@@ -425,6 +500,7 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     // (both 1e-12 s apart, a reference 2e-11 s away, rtol asking 1e-9 s).
     const double asked = kTrustPolicy.asked_share * run.stats.rtol * (time_scale + t);
     r.event_time_error = std::max({r.event_time_error, dt, round_off, chatter, asked});
+    if (ends_at_uncertain_turn(a, b, left_a, left_b, k, r)) return finish(model, run, shadow, r);
   }
   end_at_first_difference(model, run.stats, a, b, k, t_common, r);
   return finish(model, run, shadow, r);
@@ -451,7 +527,17 @@ void apply_check(const Model& model, const RunResult& shadow, RunResult& run, do
   const std::vector<Event> listed = by_instant(run.events), checked = by_instant(shadow.events);
   std::ostringstream why;
   why.precision(7);
-  if (r.unresolved >= 0) {
+  if (r.uncertain_turn >= 0) {
+    const auto k = static_cast<std::size_t>(r.uncertain_turn);
+    why << "events are trusted until t = " << r.trusted_until << " s: at t = " << listed[k].t
+        << " s this run's collisions leave pellet " << r.turning_pellet + 1 << " at "
+        << std::setprecision(3) << r.run_speed << " rad/s, and the check run's (" << st.check_method
+        << ") at " << r.shadow_speed
+        << " rad/s, within ten times their difference of zero. Whether and when it turns depends "
+           "on differences below the tolerance (a sensitive turn); tighten rtol to see whether "
+           "the events after it converge";
+    run.warnings.push_back({"not_trusted", why.str(), -1, r.trusted_until, st.t_reached});
+  } else if (r.unresolved >= 0) {
     const auto k = static_cast<std::size_t>(r.unresolved);
     why << "events are trusted until t = " << r.trusted_until << " s: after that this run lists "
         << describe(listed[k]) << ", and the check run (" << st.check_method

@@ -60,6 +60,12 @@ struct TrustReport {
   int first_difference = -1;  // the first event listed differently; -1: none
   int unresolved = -1;        // the first event whose times differ by more than a tenth of the time
                               // to its neighbours; -1: none
+  // The first event whose instant's collisions leave a pellet at a speed within ten of its errors
+  // of zero (whether and when it turns is not resolved); -1: none. The pellet and the speeds the
+  // two runs left it at.
+  int uncertain_turn = -1;
+  int turning_pellet = -1;
+  double run_speed = 0.0, shadow_speed = 0.0;
 };
 
 // Compares a run with its shadow, instant by instant, the shadow's times taken as they are and
@@ -67,7 +73,8 @@ struct TrustReport {
 // The runs agree on an event when kind, pellets and limiter are the same and the times differ by
 // less than a tenth of the time to the neighbouring events; trust ends ten errors before the
 // first events that they do not (but not before the last they list alike), or where either run
-// stopped.
+// stopped. It ends ten errors before a collision that leaves a pellet at a speed within ten
+// times the run's and the shadow's difference of zero (TrustPolicy::turn_speed_errors).
 TrustReport compare_runs(const Model& model, const RunResult& run, const RunResult& shadow,
                          double budget_ms = std::numeric_limits<double>::infinity());
 

@@ -44,6 +44,15 @@ struct TrustPolicy {
   // A run vouches for no less than this share of what its tolerance asks, rtol·(T0 + t): a run
   // and its shadow of one method that agree far better than asked may share their error.
   double asked_share = 1e-2;
+  // A collision that leaves a pellet at a speed within this many of its errors (the run's speed
+  // against its shadow's) of zero leaves whether and when the pellet turns unresolved (a limiter
+  // sets the sign of the speed an impact on it leaves, whatever its error): a run and
+  // its shadow that both left it slowly backwards listed no turn where the truth turned 2.6e-7 s
+  // later (ctest trust_scene.a_shadow_started_with_the_run_shared_its_chaotic_error).
+  double turn_speed_errors = 10.0;
+  // The round-off of the speeds an instant leaves, in ulps of the largest speed it meets or
+  // leaves: differences below it are what the runs cannot resolve, not an error.
+  double speed_round_off_ulps = 1e3;
   // Trust ends this many errors before the first events the runs do not list alike (the bound the
   // estimate keeps).
   double margin_errors = 10.0;

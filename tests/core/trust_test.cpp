@@ -333,6 +333,78 @@ TEST(TrustPolicy, ADifferencePastAShareOfTheSpacingIsUnresolved) {
   EXPECT_LT(r.trusted_until, 1.0);
 }
 
+// A collision that leaves pellet 2 at a speed within turn_speed_errors of the run's and the
+// shadow's difference of zero: whether it turns at once or not at all is not resolved, and the
+// trust ends ten errors before it. The same speeds closer together (or apart by round-off only)
+// resolve the turn.
+RunResult leaving_slowly(double speed) {
+  RunResult r;
+  r.events = {collision_at(0.5), collision_at(1.0)};
+  r.events[0].dphi_before = {1.0, -1.0};
+  r.events[0].dphi_after = {-1.0, speed};
+  r.stats.t_reached = 2.0;
+  r.stats.rtol = 1e-9;
+  return r;
+}
+
+TEST(TrustPolicy, AnImpactLeavingASpeedWithinItsErrorsOfZeroEndsTheTrust) {
+  const Model model = testing::preset("paper").model;
+  const RunResult run = leaving_slowly(-1.8e-4);
+  const TrustReport r = compare_runs(model, run, leaving_slowly(-0.8e-4));
+  EXPECT_EQ(r.uncertain_turn, 0);
+  EXPECT_EQ(r.turning_pellet, 1);
+  EXPECT_EQ(r.run_speed, -1.8e-4);
+  EXPECT_EQ(r.shadow_speed, -0.8e-4);
+  EXPECT_DOUBLE_EQ(r.trusted_until, 0.5 - kTrustPolicy.margin_errors * r.event_time_error);
+
+  const double resolved = 0.5 * 1.8e-4 / kTrustPolicy.turn_speed_errors;
+  EXPECT_EQ(compare_runs(model, run, leaving_slowly(-1.8e-4 + resolved)).uncertain_turn, -1);
+  const double round_off = 1e2 * std::numeric_limits<double>::epsilon();
+  const TrustReport still = compare_runs(model, leaving_slowly(round_off), leaving_slowly(0.0));
+  EXPECT_EQ(still.uncertain_turn, -1);
+  EXPECT_EQ(still.trusted_until, 2.0);
+}
+
+// A limiter sets the sign of the speed an impact on it leaves: a slow rebound whose speed the two
+// put 40 % apart leaves no turn unresolved (the times of the events after it measure its error).
+TEST(TrustPolicy, ASlowReboundFromALimiterLeavesItsTurnResolved) {
+  const Model model = testing::preset("paper").model;
+  RunResult run = leaving_slowly(0.02), shadow = leaving_slowly(0.028);
+  for (RunResult* r : {&run, &shadow}) {
+    Event& e = r->events[0];
+    e.kind = EventKind::limiter;
+    e.limiter = 0;
+    e.pellets = {1};
+    e.dphi_before = {-0.03};
+    e.dphi_after = {e.dphi_after[1]};
+  }
+  EXPECT_EQ(compare_runs(model, run, shadow).uncertain_turn, -1);
+  run.events[0].kind = shadow.events[0].kind = EventKind::collision;
+  EXPECT_EQ(compare_runs(model, run, shadow).uncertain_turn, 0);
+}
+
+// The speed an instant leaves a pellet with is the last its impacts left: a cascade that passes
+// through a slow speed and leaves fast resolves the turn, and apply_check says where one is not.
+TEST(TrustPolicy, AnInstantLeavesTheSpeedItsLastImpactLeft) {
+  const Model model = testing::preset("paper").model;
+  RunResult run = leaving_slowly(-1.8e-4), shadow = leaving_slowly(-0.8e-4);
+  for (RunResult* r : {&run, &shadow}) {
+    Event last = collision_at(0.5);
+    last.pellets = {1, 2};
+    last.dphi_before = {r->events[0].dphi_after[1], 0.0};
+    last.dphi_after = {-0.5, 0.5};
+    r->events.insert(r->events.begin() + 1, last);
+  }
+  EXPECT_EQ(compare_runs(model, run, shadow).uncertain_turn, -1);
+  shadow.events[1].dphi_after[0] = -0.8e-4;
+  run.events[1].dphi_after[0] = -1.8e-4;
+  apply_check(model, shadow, run);
+  EXPECT_LT(run.stats.trusted_until, 0.5);
+  ASSERT_FALSE(run.warnings.empty());
+  EXPECT_NE(run.warnings.back().message.find("leave pellet 2 at -0.00018 rad/s"), std::string::npos)
+      << run.warnings.back().message;
+}
+
 TEST(TrustPolicy, EventsWithinTheSameInstantAreOneInstant) {
   const double t = 1.0;
   std::vector<Event> events = {collision_at(t), collision_at(t)};
