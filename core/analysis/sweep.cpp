@@ -160,26 +160,31 @@ std::span<const StateAt> record_stops(const RunResult& r, const SweepSpec& spec)
   return all.subspan(std::min<std::size_t>(all.size(), spec.transient - first_stop(spec)));
 }
 
-// The stroboscopic section's points, whether a pellet was held at one, and the period they repeat.
+// The stroboscopic section's points, whether a pellet was held at one (and every pellet at every
+// one: the run rests, unless an event between them says otherwise), and the period they repeat.
 void add_stroboscopic_points(const RunResult& r, std::span<const StateAt> stops, int pellets,
                              double T, double speed, SweepRun& run) {
   run.points.reserve(stops.size() * pellets);
+  run.rests = !stops.empty();
   for (const StateAt& s : stops)
     for (int i = 0; i < pellets; ++i) {
       run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase_of(s.t, T), -1,
                             s.t <= r.stats.trusted_until});
       run.sticks = run.sticks || held(s.pellets[i]);
+      run.rests = run.rests && held(s.pellets[i]);
     }
   run.period = section_period(stops, speed);
 }
 
-// The recorded events: impacts counted per period, sticks noted, limiter impacts as the impact
-// section's points.
+// The recorded events: impacts counted per period, sticks noted, a run with any of them not at
+// rest, limiter impacts as the impact section's points.
 void add_recorded_events(const RunResult& r, const SweepSpec& spec, double T, double from,
                          SweepRun& run) {
   int impacts = 0;
   for (const Event& e : r.events) {
     if (e.t < from) continue;
+    // Anything that happens over the record (a release, a stick, an impact) is motion.
+    run.rests = false;
     if (e.kind == EventKind::limiter || e.kind == EventKind::collision ||
         e.kind == EventKind::chatter)
       ++impacts;

@@ -10,6 +10,7 @@
 #include "core/analysis/checked_run.h"
 #include "io/sweep_json.h"
 #include "tests/core/impact_oscillator.h"
+#include "tests/core/scenes.h"
 
 namespace vibro {
 namespace {
@@ -152,6 +153,50 @@ TEST(Basins, OneThreadAndTwoGiveTheSameOutput) {
   one.threads = two.threads = 1;
   EXPECT_EQ(sweep_result_csv(spec, one), sweep_result_csv(spec, two));
   EXPECT_EQ(sweep_result_json(spec, one).dump(), sweep_result_json(spec, two).dump());
+}
+
+// The paper scene's basins: from most starts the pellets come to rest, the forced one against the
+// fixed limiter and the other where friction holds it, a different angle from each start. Those
+// runs are one attractor, "at rest", numbered first, not one per angle (there were 48 here).
+TEST(Basins, RunsAtRestAreOneAttractorWhereverThePelletsRest) {
+  const Scene paper = testing::preset("paper");
+  SweepSpec spec;
+  spec.axis = {"model.pellets[0].phi0", 0.0, 0.7, 10};
+  spec.axis2 = SweepAxis{"model.pellets[0].dphi0", -10.0, 50.0, 10};
+  spec.transient = 60;
+  spec.record = 8;
+  spec.classify_attractor = true;
+  ASSERT_FALSE(validate_sweep(paper.model, spec));
+  SweepControl control;
+  control.threads = 2;
+  const SweepResult r = run_sweep(paper.model, paper.sim, spec, control);
+  // Attractors whose section is a state with every pellet still: rest states.
+  int still = 0;
+  for (const Attractor& a : r.attractors) {
+    bool moves = a.section.empty() ? !a.at_rest : false;
+    for (const auto& s : a.section) moves = moves || s.second != 0.0;
+    still += moves ? 0 : 1;
+  }
+  EXPECT_EQ(still, 1);
+  ASSERT_FALSE(r.attractors.empty());
+  const Attractor& rest = r.attractors.front();
+  EXPECT_TRUE(rest.at_rest);
+  EXPECT_EQ(rest.period, 1);
+  EXPECT_EQ(rest.impacts_per_period, 0.0);
+  EXPECT_TRUE(rest.section.empty());
+  long resting = 0;
+  for (const SweepRun& run : r.runs) {
+    EXPECT_EQ(run.rests, run.attractor == 0);
+    if (run.rests) {
+      EXPECT_TRUE(run.at_rest && run.impacts_per_period == 0.0);
+    }
+    resting += run.rests ? 1 : 0;
+  }
+  EXPECT_EQ(rest.cells, resting);
+  EXPECT_GE(resting, 50);
+  const auto j = sweep_result_json(spec, r);
+  EXPECT_EQ(j["attractors"][0]["at_rest"], true);
+  for (std::size_t k = 1; k < r.attractors.size(); ++k) EXPECT_FALSE(r.attractors[k].at_rest);
 }
 
 TEST(Basins, ClassifyingAnotherFieldIsRefusedNamingIt) {
