@@ -124,6 +124,21 @@ TEST(Basins, ARunEndsOnceItsSectionHasSettled) {
   EXPECT_GE(early, 12) << "of " << r.runs.size();
 }
 
+// A run ends once within about 1e-4 of its attractor (kSettleFloor), not 1e-5: sooner, by
+// log(10)/log(1/|multiplier|) periods, its states still within the 1e-3 attractors are told
+// apart by (each cell's attractor that of a plain run: above).
+TEST(Basins, ARunEndsOnceWithinTheSettleFloorOfItsAttractor) {
+  const SweepSpec spec = basins(6);
+  const SweepResult r = run(spec, 1);
+  const double T = 2.0 * M_PI / kOmega;
+  double periods = 0.0;
+  for (const SweepRun& run : r.runs) periods += run.points.back().t / T;
+  periods /= static_cast<double>(r.runs.size());
+  // At a floor of 1 (1e-5 rad and 1e-5·sqrt(g/R)) these runs went 63.6 periods on average; at
+  // kSettleFloor, 52.7.
+  EXPECT_LT(periods, 58.0);
+}
+
 // The driver's side of it: a run with a settle window ends at the stop where it settled, its
 // check run over the same time.
 TEST(Basins, ARunWithASettleWindowEndsAtTheStopWhereItSettled) {
