@@ -123,6 +123,7 @@ void read_attractors(const json& j, SweepResult& result) {
     Fields f(list[k], field);
     Attractor a;
     a.id = static_cast<int>(k);
+    a.at_rest = f.boolean("at_rest", false);
     a.period = static_cast<int>(f.integer("period").value_or(0));
     a.impacts_per_period = f.number("impacts_per_period").value_or(0.0);
     a.cells = f.integer("cells").value_or(0);

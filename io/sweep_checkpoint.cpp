@@ -16,8 +16,8 @@ namespace {
 
 constexpr char kKind[] = "vibro sweep checkpoint ";
 // The version of the records; v2: runs carry their Lyapunov exponent; v3: each record framed
-// with its length and a CRC-32.
-constexpr char kVersion[] = "v3";
+// with its length and a CRC-32; v4: runs carry whether they rest (a basin sweep's rest attractor).
+constexpr char kVersion[] = "v4";
 
 std::string header(std::uint64_t fingerprint) {
   char line[96];

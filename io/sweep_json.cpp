@@ -155,7 +155,8 @@ bool column_written(const char* name, const SweepResult& result) {
   return result.classified || std::string_view(name) != "attractor";
 }
 
-// "attractors": [{"cells", "id", "impacts_per_period", "period", "section": [{"dphi", "phi"}]}]
+// "attractors": [{"cells", "id", "at_rest", "impacts_per_period", "period", "section": [{"dphi",
+// "phi"}]}]
 void write_attractors(Pieces& out, const SweepResult& result) {
   out.text("\"attractors\":[");
   for (const Attractor& a : result.attractors) {
@@ -164,6 +165,8 @@ void write_attractors(Pieces& out, const SweepResult& result) {
     out.integer(a.cells);
     out.text(",\"id\":");
     out.integer(a.id);
+    out.text(",\"at_rest\":");
+    out.boolean(a.at_rest);
     out.text(",\"impacts_per_period\":");
     out.number(a.impacts_per_period);
     out.text(",\"period\":");

@@ -74,6 +74,7 @@ void put_run(Writer& w, const SweepRun& r) {
   w.put(r.impacts_per_period);
   w.put<std::uint8_t>(r.at_rest);
   w.put<std::uint8_t>(r.sticks);
+  w.put<std::uint8_t>(r.rests);
   w.put<std::uint8_t>(r.trusted);
   w.put(r.trusted_until);
   w.put<std::int32_t>(static_cast<std::int32_t>(r.termination));
@@ -105,6 +106,7 @@ SweepRun get_run(Reader& in) {
   r.impacts_per_period = in.get<double>();
   r.at_rest = in.get<std::uint8_t>() != 0;
   r.sticks = in.get<std::uint8_t>() != 0;
+  r.rests = in.get<std::uint8_t>() != 0;
   r.trusted = in.get<std::uint8_t>() != 0;
   r.trusted_until = in.get<double>();
   const auto termination = in.get<std::int32_t>();

@@ -120,6 +120,7 @@ class Sweep {
       }
       py::dict d;
       d["id"] = a.id;
+      d["at_rest"] = a.at_rest;
       d["period"] = a.period;
       d["impacts_per_period"] = a.impacts_per_period;
       d["section"] = section;

@@ -30,6 +30,7 @@ Colour attractor_colour(int id) {
 }
 
 std::string attractor_label(const Attractor& a) {
+  if (a.at_rest) return std::to_string(a.id) + ": at rest";
   char impacts[32];
   std::snprintf(impacts, sizeof impacts, "%.3g", a.impacts_per_period);
   return std::to_string(a.id) + ": period " + std::to_string(a.period) + ", " + impacts +

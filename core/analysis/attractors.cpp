@@ -93,14 +93,22 @@ AttractorTable::AttractorTable(const Model& model)
     : pellets_(model.size()), tol_phi_(1e-3), tol_dphi_(1e-3 * speed_scale(model)) {}
 
 int AttractorTable::add(const SweepRun& run) {
+  if (run.rests) {
+    if (rest_ < 0) {
+      rest_ = static_cast<int>(classes_.size());
+      classes_.push_back(Class{true, 1, {}, 0.0, 0});
+    }
+    ++classes_[rest_].cells;
+    return rest_;
+  }
   Cycle cycle = attractor_cycle(run, pellets_);
   if (cycle.empty()) return -1;
   auto match = std::find_if(classes_.begin(), classes_.end(), [&](const Class& c) {
-    return c.period == run.period && same_motion(c.cycle, cycle, tol_phi_, tol_dphi_);
+    return !c.rest && c.period == run.period && same_motion(c.cycle, cycle, tol_phi_, tol_dphi_);
   });
   if (match == classes_.end())
     match = classes_.insert(classes_.end(),
-                            Class{run.period, std::move(cycle), run.impacts_per_period, 0});
+                            Class{false, run.period, std::move(cycle), run.impacts_per_period, 0});
   ++match->cells;
   return static_cast<int>(match - classes_.begin());
 }
@@ -109,15 +117,18 @@ std::vector<Attractor> AttractorTable::finish(std::vector<int>& id_of) const {
   std::vector<int> order(classes_.size());
   for (std::size_t k = 0; k < order.size(); ++k) order[k] = static_cast<int>(k);
   std::sort(order.begin(), order.end(), [&](int a, int b) {
-    return std::tie(classes_[a].period, classes_[a].cycle) <
-           std::tie(classes_[b].period, classes_[b].cycle);
+    const Class& x = classes_[a];
+    const Class& y = classes_[b];
+    const bool x_moves = !x.rest, y_moves = !y.rest;
+    return std::tie(x_moves, x.period, x.cycle) < std::tie(y_moves, y.period, y.cycle);
   });
   id_of.assign(classes_.size(), -1);
   std::vector<Attractor> attractors;
   for (std::size_t id = 0; id < order.size(); ++id) {
     const Class& c = classes_[order[id]];
     id_of[order[id]] = static_cast<int>(id);
-    attractors.push_back({static_cast<int>(id), c.period, c.impacts_per_period, c.cycle, c.cells});
+    attractors.push_back(
+        {static_cast<int>(id), c.rest, c.period, c.impacts_per_period, c.cycle, c.cells});
   }
   return attractors;
 }

@@ -133,6 +133,12 @@ int first_stop(const SweepSpec& spec) {
   return std::min(spec.transient, settle_min_periods(spec) - spec.record);
 }
 
+// The floor of the period test's tolerances (section_period): a run that may end once settled is
+// read as the settle test reads it, whether it ended early or not.
+double period_floor(const SweepSpec& spec) {
+  return first_stop(spec) < spec.transient ? kSettleFloor : 1.0;
+}
+
 // The options of one run: the transient and the record, events kept from the record's start, the
 // stroboscopic stops where the section asks for them.
 SimOptions sweep_run_options(const SimOptions& options, const SweepSpec& spec, double T) {
@@ -160,26 +166,32 @@ std::span<const StateAt> record_stops(const RunResult& r, const SweepSpec& spec)
   return all.subspan(std::min<std::size_t>(all.size(), spec.transient - first_stop(spec)));
 }
 
-// The stroboscopic section's points, whether a pellet was held at one, and the period they repeat.
+// The stroboscopic section's points, whether a pellet was held at one (and every pellet at every
+// one: the run rests, unless an event between them says otherwise), and the period they repeat
+// (the period test's tolerances with this floor).
 void add_stroboscopic_points(const RunResult& r, std::span<const StateAt> stops, int pellets,
-                             double T, double speed, SweepRun& run) {
+                             double T, double speed, double floor, SweepRun& run) {
   run.points.reserve(stops.size() * pellets);
+  run.rests = !stops.empty();
   for (const StateAt& s : stops)
     for (int i = 0; i < pellets; ++i) {
       run.points.push_back({i, s.t, s.pellets[i].phi, s.pellets[i].dphi, phase_of(s.t, T), -1,
                             s.t <= r.stats.trusted_until});
       run.sticks = run.sticks || held(s.pellets[i]);
+      run.rests = run.rests && held(s.pellets[i]);
     }
-  run.period = section_period(stops, speed);
+  run.period = section_period(stops, speed, floor);
 }
 
-// The recorded events: impacts counted per period, sticks noted, limiter impacts as the impact
-// section's points.
+// The recorded events: impacts counted per period, sticks noted, a run with any of them not at
+// rest, limiter impacts as the impact section's points.
 void add_recorded_events(const RunResult& r, const SweepSpec& spec, double T, double from,
                          SweepRun& run) {
   int impacts = 0;
   for (const Event& e : r.events) {
     if (e.t < from) continue;
+    // Anything that happens over the record (a release, a stick, an impact) is motion.
+    run.rests = false;
     if (e.kind == EventKind::limiter || e.kind == EventKind::collision ||
         e.kind == EventKind::chatter)
       ++impacts;
@@ -217,7 +229,7 @@ SweepRun run_one(const Model& model, const SimOptions& options, const SweepSpec&
   SweepRun run;
   const std::span<const StateAt> record = record_stops(r, spec);
   if (spec.section == SectionKind::stroboscopic)
-    add_stroboscopic_points(r, record, m.size(), T, speed_scale(m), run);
+    add_stroboscopic_points(r, record, m.size(), T, speed_scale(m), period_floor(spec), run);
   // A settled run's record starts at its window's first stop.
   add_recorded_events(r, spec, T, r.settled ? record.front().t : spec.transient * T, run);
   // A vector's growth leaves up to half of it spare: a sweep keeps exactly its points.

@@ -105,8 +105,11 @@ struct SweepRun {
   double impacts_per_period = 0.0;  // limiter impacts and collisions over the record, per period
   bool at_rest = false;             // every pellet ends stuck or resting on a limiter
   bool sticks = false;              // some pellet is stuck or resting at some section point
-  bool trusted = true;              // stats.trusted_until reached the end (or the check is off)
-  double trusted_until = 0.0;       // s: its points before it are vouched for
+  // Stroboscopic section: every pellet held (stuck or resting on a limiter) at every point of the
+  // record and no event between them: the run is at rest over its record.
+  bool rests = false;
+  bool trusted = true;         // stats.trusted_until reached the end (or the check is off)
+  double trusted_until = 0.0;  // s: its points before it are vouched for
   Termination termination = Termination::completed;
   std::string message;  // why the run stopped early
   double error_estimate = 0.0;
@@ -120,9 +123,11 @@ struct SweepRun {
 };
 
 // One attractor of a basin sweep: a periodic motion, told apart from others by its section
-// points, not only by its period.
+// points, not only by its period; or every run at rest (SweepRun::rests), one attractor wherever
+// friction or a limiter holds the pellets.
 struct Attractor {
   int id = 0;
+  bool at_rest = false;  // the runs at rest: period 1, no impacts, no section
   int period = 0;
   double impacts_per_period = 0.0;
   // Its `period` stroboscopic states, each with one (phi, dphi) per pellet (phi wrapped to

@@ -15,7 +15,7 @@ struct Tolerances {
   std::vector<double> phi, dphi;
 };
 
-Tolerances tolerances(std::span<const StateAt> stops, double speed_scale) {
+Tolerances tolerances(std::span<const StateAt> stops, double speed_scale, double floor) {
   const std::size_t n = stops.front().pellets.size();
   Tolerances tol{std::vector<double>(n), std::vector<double>(n)};
   for (std::size_t i = 0; i < n; ++i) {
@@ -27,8 +27,8 @@ Tolerances tolerances(std::span<const StateAt> stops, double speed_scale) {
       vlo = std::min(vlo, s.pellets[i].dphi);
       vhi = std::max(vhi, s.pellets[i].dphi);
     }
-    tol.phi[i] = 1e-5 * (1.0 + (hi - lo));
-    tol.dphi[i] = 1e-5 * (speed_scale + (vhi - vlo));
+    tol.phi[i] = 1e-5 * (floor + (hi - lo));
+    tol.dphi[i] = 1e-5 * (floor * speed_scale + (vhi - vlo));
   }
   return tol;
 }
@@ -57,20 +57,20 @@ int period_within(std::span<const StateAt> stops, const Tolerances& tol) {
 
 }  // namespace
 
-int section_period(std::span<const StateAt> stops, double speed_scale) {
+int section_period(std::span<const StateAt> stops, double speed_scale, double floor) {
   if (stops.size() < 3) return 0;
-  return period_within(stops, tolerances(stops, speed_scale));
+  return period_within(stops, tolerances(stops, speed_scale, floor));
 }
 
 bool section_settled(std::span<const StateAt> stops, double speed_scale) {
   if (stops.size() < 3) return false;
-  const Tolerances tol = tolerances(stops, speed_scale);
+  const Tolerances tol = tolerances(stops, speed_scale, kSettleFloor);
   const int p = period_within(stops, tol);
   if (p == 0) return false;
   // A period-1 motion approached along a spiral of a quarter turn a period repeats every 4
   // periods long before it does every period: the window's later half must show the same period.
   const std::span<const StateAt> later = stops.last(stops.size() / 2 + 1);
-  if (period_within(later, tolerances(later, speed_scale)) != p) return false;
+  if (period_within(later, tolerances(later, speed_scale, kSettleFloor)) != p) return false;
   // The gaps k → k + p, the window's first half against its second.
   const int m = static_cast<int>(stops.size()) - p;  // gaps k = 0 … m − 1
   const int h = m / 2;

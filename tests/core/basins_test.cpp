@@ -10,6 +10,7 @@
 #include "core/analysis/checked_run.h"
 #include "io/sweep_json.h"
 #include "tests/core/impact_oscillator.h"
+#include "tests/core/scenes.h"
 
 namespace vibro {
 namespace {
@@ -123,6 +124,21 @@ TEST(Basins, ARunEndsOnceItsSectionHasSettled) {
   EXPECT_GE(early, 12) << "of " << r.runs.size();
 }
 
+// A run ends once within about 1e-4 of its attractor (kSettleFloor), not 1e-5: sooner, by
+// log(10)/log(1/|multiplier|) periods, its states still within the 1e-3 attractors are told
+// apart by (each cell's attractor that of a plain run: above).
+TEST(Basins, ARunEndsOnceWithinTheSettleFloorOfItsAttractor) {
+  const SweepSpec spec = basins(6);
+  const SweepResult r = run(spec, 1);
+  const double T = 2.0 * M_PI / kOmega;
+  double periods = 0.0;
+  for (const SweepRun& run : r.runs) periods += run.points.back().t / T;
+  periods /= static_cast<double>(r.runs.size());
+  // At a floor of 1 (1e-5 rad and 1e-5·sqrt(g/R)) these runs went 63.6 periods on average; at
+  // kSettleFloor, 52.7.
+  EXPECT_LT(periods, 58.0);
+}
+
 // The driver's side of it: a run with a settle window ends at the stop where it settled, its
 // check run over the same time.
 TEST(Basins, ARunWithASettleWindowEndsAtTheStopWhereItSettled) {
@@ -152,6 +168,50 @@ TEST(Basins, OneThreadAndTwoGiveTheSameOutput) {
   one.threads = two.threads = 1;
   EXPECT_EQ(sweep_result_csv(spec, one), sweep_result_csv(spec, two));
   EXPECT_EQ(sweep_result_json(spec, one).dump(), sweep_result_json(spec, two).dump());
+}
+
+// The paper scene's basins: from most starts the pellets come to rest, the forced one against the
+// fixed limiter and the other where friction holds it, a different angle from each start. Those
+// runs are one attractor, "at rest", numbered first, not one per angle (there were 48 here).
+TEST(Basins, RunsAtRestAreOneAttractorWhereverThePelletsRest) {
+  const Scene paper = testing::preset("paper");
+  SweepSpec spec;
+  spec.axis = {"model.pellets[0].phi0", 0.0, 0.7, 10};
+  spec.axis2 = SweepAxis{"model.pellets[0].dphi0", -10.0, 50.0, 10};
+  spec.transient = 60;
+  spec.record = 8;
+  spec.classify_attractor = true;
+  ASSERT_FALSE(validate_sweep(paper.model, spec));
+  SweepControl control;
+  control.threads = 2;
+  const SweepResult r = run_sweep(paper.model, paper.sim, spec, control);
+  // Attractors whose section is a state with every pellet still: rest states.
+  int still = 0;
+  for (const Attractor& a : r.attractors) {
+    bool moves = a.section.empty() ? !a.at_rest : false;
+    for (const auto& s : a.section) moves = moves || s.second != 0.0;
+    still += moves ? 0 : 1;
+  }
+  EXPECT_EQ(still, 1);
+  ASSERT_FALSE(r.attractors.empty());
+  const Attractor& rest = r.attractors.front();
+  EXPECT_TRUE(rest.at_rest);
+  EXPECT_EQ(rest.period, 1);
+  EXPECT_EQ(rest.impacts_per_period, 0.0);
+  EXPECT_TRUE(rest.section.empty());
+  long resting = 0;
+  for (const SweepRun& run : r.runs) {
+    EXPECT_EQ(run.rests, run.attractor == 0);
+    if (run.rests) {
+      EXPECT_TRUE(run.at_rest && run.impacts_per_period == 0.0);
+    }
+    resting += run.rests ? 1 : 0;
+  }
+  EXPECT_EQ(rest.cells, resting);
+  EXPECT_GE(resting, 50);
+  const auto j = sweep_result_json(spec, r);
+  EXPECT_EQ(j["attractors"][0]["at_rest"], true);
+  for (std::size_t k = 1; k < r.attractors.size(); ++k) EXPECT_FALSE(r.attractors[k].at_rest);
 }
 
 TEST(Basins, ClassifyingAnotherFieldIsRefusedNamingIt) {

@@ -30,6 +30,7 @@ SweepRun awkward_run(int k) {
   r.period = 2;
   r.impacts_per_period = 1.0 / 7.0;
   r.at_rest = true;
+  r.rests = k % 2 == 1;
   r.trusted = false;
   r.trusted_until = 12.25;
   r.termination = Termination::step_limit;
@@ -60,6 +61,7 @@ void expect_same(const SweepRun& a, const SweepRun& b) {
   EXPECT_EQ(a.impacts_per_period, b.impacts_per_period);
   EXPECT_EQ(a.at_rest, b.at_rest);
   EXPECT_EQ(a.sticks, b.sticks);
+  EXPECT_EQ(a.rests, b.rests);
   EXPECT_EQ(a.trusted, b.trusted);
   EXPECT_EQ(a.trusted_until, b.trusted_until);
   EXPECT_EQ(a.termination, b.termination);
@@ -181,9 +183,9 @@ TEST(SweepCheckpoint, KeepsChainsForItsSceneOnlyAndResumesWhole) {
   EXPECT_NE(refusal(path, scene).find("does not exist"), std::string::npos);
 
   // A checkpoint of an earlier version, whose records do not carry what these do.
-  std::string v2 = before;
-  v2.replace(v2.find(" v3 "), 4, " v2 ");
-  std::ofstream(path, std::ios::binary) << v2;
+  std::string v3 = before;
+  v3.replace(v3.find(" v4 "), 4, " v3 ");
+  std::ofstream(path, std::ios::binary) << v3;
   EXPECT_NE(refusal(path, scene).find("another version"), std::string::npos);
 
   std::ofstream(path) << "x,y\n1,2\n";

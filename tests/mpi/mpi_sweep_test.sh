@@ -52,7 +52,7 @@ check "the message names the rank and the value" \
   grep -q "rank 1 on .* failed while running model.pellets\[0\].Omega = [0-9]" failed.err
 check "no output is written" test ! -e failed.csv
 check "the finished chains are kept, flagged as a checkpoint" \
-  grep -q "^vibro sweep checkpoint v3" failed.csv.partial
+  grep -q "^vibro sweep checkpoint v4" failed.csv.partial
 status=0
 "$vibro" sweep none.json -o failed.csv 2> again.err || status=$?
 check "a rerun does not overwrite the checkpoint" grep -q -- '"field":"-o"' again.err

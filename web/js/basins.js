@@ -130,8 +130,10 @@ export function clickedStart(axis, sweep, x, y) {
 const cell = (tag, text, attrs = {}) => h(tag, attrs, text);
 
 // The attractor's states on the section, one "(φ, φ̇)" per period, "(φ₁, φ̇₁; φ₂, φ̇₂)" with two
-// pellets (the section lists each period's state pellet by pellet).
+// pellets (the section lists each period's state pellet by pellet); the rest attractor has none.
 function sectionText(a) {
+  if (a.at_rest)
+    return 'at rest: every pellet held (by friction or on a limiter), wherever it rests';
   const pellets = Math.max(1, Math.round(a.section.length / Math.max(1, a.period)));
   const states = [];
   for (let k = 0; k < a.section.length; k += pellets) {
