@@ -290,6 +290,15 @@ listed depends on which gaps its instant found closed; its outcome does not):
   where the shadow stopped. It ends ten times the event-time error before the earlier of the two
   events (the true sequence may part earlier than either run), but not before the last event both
   list alike less ten times the event-time error. A `not_trusted` warning names both events.
+- A *sensitive turn* ends `stats.trusted_until` ten times the event-time error before a
+  collision both list alike that leaves a pellet at a speed within ten times the run's and the
+  shadow's difference of zero (and that difference above `1e3·ε` of the largest speed the instant meets
+  or leaves, its round-off): whether the pellet turns soon after, or not at all, follows the sign
+  of that speed, which the tolerance does not resolve. DOP853 at rtol 1e-9 and its shadow left a
+  pellet at −1.8e-4 and −8.3e-5 rad/s and listed no turn; every reference left it at +7.6e-5 to
+  +3.4e-4 rad/s and turned it 2.6e-7 s later (trust_scan seed 7, scene 534). An impact on a
+  limiter does not count: the limiter sets the sign of the speed it leaves, and the times of the
+  events after it measure that speed's error. The warning names the pellet and both speeds.
 - A *near miss* ends `stats.trusted_until` too, where the shadow is blind to it: a body's speed, a
   gap or the way to a limiter that comes within ten times its tolerance's error of zero and turns
   away, or strikes so slowly that it would have turned within that error past it (docs/MODEL.md).
