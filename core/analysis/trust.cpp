@@ -127,12 +127,14 @@ int uncertain_turn(const Leaving& run, const Leaving& shadow) {
   const double round_off = kTrustPolicy.speed_round_off_ulps *
                            std::numeric_limits<double>::epsilon() *
                            std::max(run.largest, shadow.largest);
-  for (const auto& [pellet, v] : run.speeds) {
+  for (const auto& speed : run.speeds) {  // (pellet, speed); not a structured binding, which
+                                          // clang 14 cannot capture in the lambda
     auto other = std::find_if(shadow.speeds.begin(), shadow.speeds.end(),
-                              [&](const auto& s) { return s.first == pellet; });
+                              [&](const auto& s) { return s.first == speed.first; });
     if (other == shadow.speeds.end()) continue;
-    const double error = std::abs(v - other->second);
-    if (error > round_off && kTrustPolicy.turn_speed_errors * error > std::abs(v)) return pellet;
+    const double error = std::abs(speed.second - other->second);
+    if (error > round_off && kTrustPolicy.turn_speed_errors * error > std::abs(speed.second))
+      return speed.first;
   }
   return -1;
 }
