@@ -26,7 +26,7 @@ constexpr std::size_t kJetSeries = 11;
 // Two doubles that add and multiply lane by lane, each lane exactly as a double does (IEEE,
 // no contraction): two sums kept side by side are the two sums, bit for bit, at one instruction
 // per step for both. Loaded and stored unaligned.
-using Pair = double __attribute__((vector_size(16), aligned(8)));
+typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
 
 // Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, from
 // ju[j] = {j·u[j], j·u[j]} (j = 1..k) and CS up to k − 1: integrators::sin_cos_coefficient's
