@@ -201,7 +201,8 @@ std::variant<OrbitBranch, FieldError> read_orbit_branch(const json& j, double mu
       p.state = read_states(required(f, "state"), field + ".state");
       p.multipliers = read_multipliers(required(f, "multipliers"), field + ".multipliers");
       p.stable = f.boolean("stable", false);
-      p.neutral = !p.stable && neutral_within(p.multipliers, multiplier_band);
+      // A branch saved before "neutral" was written is judged by its multipliers.
+      p.neutral = f.boolean("neutral", !p.stable && neutral_within(p.multipliers, multiplier_band));
       p.impacts_per_period = f.number("impacts_per_period").value_or(std::nan(""));
       branch.points.push_back(std::move(p));
     }

@@ -103,13 +103,18 @@ TEST(SavedResults, ABranchReadsBackWithItsBifurcations) {
   sent.branch.bifurcations.push_back(
       {BifurcationKind::grazing, 5.2, {{0.3, 0.0}}, std::nullopt, {}, false});
   sent.branch.message = "a fold ahead";
-  // Unstable, and neutral where its multipliers lie on the unit circle (the JSON says `stable`
-  // only).
-  sent.branch.points.push_back({5.3, {{0.25, 0.0}}, {{0.6, 0.8}, {0.6, -0.8}}, false, 0.0});
-  const auto read = read_orbit_branch(json::parse(orbit_result_json(sent).dump()), 1e-10);
+  // Neutral: its multipliers lie on the unit circle. A branch saved without "neutral" is judged
+  // by them (point 3), one that says it is read as it says (point 4).
+  sent.branch.points.push_back({5.3, {{0.25, 0.0}}, {{0.6, 0.8}, {0.6, -0.8}}, false, 0.0, true});
+  sent.branch.points.push_back({5.4, {{0.25, 0.0}}, {{0.5, 0.0}, {0.4, 0.0}}, false, 0.0, true});
+  json saved = json::parse(orbit_result_json(sent).dump());
+  EXPECT_EQ(saved["branch"][3]["neutral"], true);
+  saved["branch"][3].erase("neutral");
+  const auto read = read_orbit_branch(saved, 1e-10);
   ASSERT_TRUE(std::holds_alternative<OrbitBranch>(read)) << std::get<FieldError>(read).message;
   const OrbitBranch& back = std::get<OrbitBranch>(read);
-  ASSERT_EQ(back.points.size(), 4u);
+  ASSERT_EQ(back.points.size(), 5u);
+  EXPECT_TRUE(back.points[4].neutral);
   EXPECT_EQ(back.points[1].value, 5.1);
   EXPECT_FALSE(back.points[1].stable);
   EXPECT_FALSE(back.points[1].neutral);
