@@ -265,11 +265,17 @@ bool formable(const Watch& w, const StepPolynomials& p) {
 bool watch_polynomial(const Watch& w, const LinearForm& form, const StepPolynomials& p,
                       std::array<double, kMaxPolynomialDegree + 1>& q, int& degree) {
   if (!formable(w, p)) return false;
-  std::fill(q.begin(), q.begin() + p.degree + 1, 0.0);  // q beyond the degree is not read
+  // Σ_j weight_j·c_j[k] summed from 0.0, as a zeroed q summed into (the first term's −0 is +0);
+  // q beyond the degree is not read.
   for (int j = 0; j < form.terms; ++j) {
     const std::span<const double> c = p.component(form.index[j]);
-    for (int k = 0; k <= p.degree; ++k) q[k] += form.weight[j] * c[k];
+    const double weight = form.weight[j];
+    if (j == 0)
+      for (int k = 0; k <= p.degree; ++k) q[k] = 0.0 + weight * c[k];
+    else
+      for (int k = 0; k <= p.degree; ++k) q[k] += weight * c[k];
   }
+  if (form.terms == 0) std::fill(q.begin(), q.begin() + p.degree + 1, 0.0);
   q[0] += form.constant - (w.deflation != 0 ? w.g0 : 0.0);
   degree = p.degree;
   if (w.deflation == 0 || w.t0 != p.t0) return true;
@@ -321,11 +327,14 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
   // polynomial is its value, and its derivative the rate closing() gives (a gap's speeds' or a
   // speed's acceleration), without the state.
   if (fn.watch.deflation == 0) {
-    track.last = polynomial_value(poly, h);
-    if (follows_motion(fn.watch.kind)) {
-      track.closing = Closing{track.last, polynomial_rate(poly, h), 0.0};
-      track.largest = std::max(track.largest, track.closing.value);
+    if (!follows_motion(fn.watch.kind)) {
+      track.last = polynomial_value(poly, h);
+      return std::nullopt;
     }
+    const ValueAndRate end = polynomial_value_and_rate(poly, h);
+    track.last = end.value;
+    track.closing = Closing{end.value, end.rate, 0.0};
+    track.largest = std::max(track.largest, track.closing.value);
     return std::nullopt;
   }
   track.last = fn.value(step.t(), y_end);

@@ -60,6 +60,25 @@ void bernstein(std::span<const double> c, double h, Coefficients& b) {
     for (int i = d; i >= r; --i) b[i] += b[i - 1];
 }
 
+// Whether every Bernstein coefficient of p (c[0..d]) on [0, h] lies above `level`: bernstein()'s
+// sums, each coefficient judged as soon as it is final (b[r − 1] after Pascal's round r − 1), so
+// a polynomial that dips stops at its first low coefficient with the same verdict.
+bool bernstein_above(std::span<const double> c, double h, double level) {
+  const int d = static_cast<int>(c.size()) - 1;
+  Coefficients b;
+  double power = 1.0, binomial = 1.0;  // h^k, C(d, k)
+  for (int k = 0; k <= d; ++k) {
+    b[k] = c[k] * power / binomial;
+    power *= h;
+    binomial = binomial * (d - k) / (k + 1);
+  }
+  for (int r = 1; r <= d; ++r) {
+    if (!(b[r - 1] > level)) return false;
+    for (int i = d; i >= r; --i) b[i] += b[i - 1];
+  }
+  return b[d] > level;
+}
+
 // The sign changes of b[0..d], zeros skipped.
 int sign_changes(const Coefficients& b, int d) {
   int changes = 0, last = 0;
@@ -157,6 +176,18 @@ double polynomial_rate(std::span<const double> c, double tau) {
   return r;
 }
 
+ValueAndRate polynomial_value_and_rate(std::span<const double> c, double tau) {
+  // polynomial_value's steps p ← p·τ + c[k] and polynomial_rate's r ← r·τ + k·c[k], from the
+  // top down, side by side in one pass.
+  double p = 0.0, r = 0.0;
+  for (std::size_t k = c.size(); k-- > 1;) {
+    p = p * tau + c[k];
+    r = r * tau + static_cast<double>(k) * c[k];
+  }
+  if (!c.empty()) p = p * tau + c[0];
+  return {p, r};
+}
+
 bool stays_above(std::span<const double> c, double h, double level) {
   const int d = static_cast<int>(c.size()) - 1;
   if (d < 0 || d > kMaxPolynomialDegree) return false;
@@ -164,11 +195,7 @@ bool stays_above(std::span<const double> c, double h, double level) {
   for (int k = d; k >= 1; --k) spread = (spread + std::abs(c[k])) * h;
   if (c[0] - spread > level) return true;
   if (quadratic_stays_above(c, h, level)) return true;
-  Coefficients b{};
-  bernstein(c, h, b);
-  for (int i = 0; i <= d; ++i)
-    if (!(b[i] > level)) return false;
-  return true;
+  return bernstein_above(c, h, level);
 }
 
 std::optional<PolynomialBracket> first_polynomial_crossing(std::span<const double> c, double h,
