@@ -58,6 +58,10 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
 
 std::optional<Bracket> CrossingFinder::scan(WatchTrack& track, const WatchFunction& fn,
                                             const StepView& step, const Samples& s) {
+  if (track.curvature_pending) {
+    track.closing = fn.closing_at(t_start_, y_start_, true);
+    track.curvature_pending = false;
+  }
   // A watch calm() found calm over a step it judged is searched at the step's end alone.
   const std::size_t end = s.times.size() - 1;
   const bool end_alone = s.judged && track.calm;
@@ -71,6 +75,7 @@ std::optional<Bracket> CrossingFinder::scan(WatchTrack& track, const WatchFuncti
       now = at_end ? track.end_closing : fn.closing_at(s.times[k], s.states[k]);
       if (auto b = turned(track, fn, step, t_before, s.times[k], g, now)) return b;
       track.closing = now;
+      track.curvature_pending = false;
     }
     if (g > 0.0) track.armed = true;
     track.last = g;
@@ -334,12 +339,14 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
     const ValueAndRate end = polynomial_value_and_rate(poly, h);
     track.last = end.value;
     track.closing = Closing{end.value, end.rate, 0.0};
+    track.curvature_pending = false;
     track.largest = std::max(track.largest, track.closing.value);
     return std::nullopt;
   }
   track.last = fn.value(step.t(), y_end);
   if (follows_motion(fn.watch.kind)) {
     track.closing = fn.closing_at(step.t(), y_end);
+    track.curvature_pending = false;
     track.largest = std::max(track.largest, track.closing.value);
   }
   return std::nullopt;
@@ -454,12 +461,15 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
   rtol_ = rtol;
   atol_ = atol;
   tracks_.assign(watches.size(), WatchTrack{});
+  y_start_ = y0;
   calm_end_ = std::numeric_limits<double>::quiet_NaN();
   for (std::size_t w = 0; w < watches.size(); ++w) {
     WatchTrack& track = tracks_[w];
     track.last = evaluate(watches[w], model, bodies, t0, y0);
-    if (follows_motion(watches[w].kind))
-      track.closing = closing(watches[w], model, *law_, bodies, t0, y0, true);
+    if (follows_motion(watches[w].kind)) {
+      track.closing = closing(watches[w], model, *law_, bodies, t0, y0);
+      track.curvature_pending = true;
+    }
     track.armed = track.last > 0.0;
     track.largest = std::max(0.0, track.closing.value);
     track.form = linear_form(watches[w], bodies);
