@@ -75,15 +75,53 @@ struct BodyJets {
   double* scratch;  // kJetSeries·(order + 1) doubles
 };
 
-// The jets of one sliding body (SegmentDynamics::body_jets), specialised by what the model has,
-// decided once per call: kFriction (μ ≠ 0: v² and the normal force enter the motion and the
-// work), kSquares (v² is needed: friction or a damper's power), kAlone (one member, whose force
-// is the body's). Every variant does the general case's operations in its order; a series the
-// general case keeps at zero is read as the literal 0.0, the same value.
+// The series one body's jets work in, laid out in BodyJets::scratch (kJetSeries·n1 doubles).
+struct JetSeries {
+  Pair* CS;    // {cos u, sin u}, n1 pairs
+  Pair* ju;    // {j·u[j], j·u[j]}, n1 pairs
+  double* Q;   // v²
+  double* F;   // the body's force
+  double* N;   // the normal force
+  double* Fi;  // one member's force
+  double* G;   // that force less friction's
+  Pair* vv;    // {v[j], v[j]}, n1 pairs
+};
+
+JetSeries jet_series(double* scratch, std::size_t n1) {
+  return {reinterpret_cast<Pair*>(scratch),
+          reinterpret_cast<Pair*>(scratch + 2 * n1),
+          scratch + 4 * n1,
+          scratch + 5 * n1,
+          scratch + 6 * n1,
+          scratch + 7 * n1,
+          scratch + 8 * n1,
+          reinterpret_cast<Pair*>(scratch + 9 * n1)};
+}
+
+// Adds pellet i's force F0 cos(Ωt + ψ) as a series in τ = t − t0 to into[0..order].
+void add_force(const BodyJets& in, int i, double* into) {
+  const Forcing& f = in.model.pellets[i].force;
+  if (f.active())
+    add_cosine_series(f.F0, f.Omega, f.Omega * in.t0 + f.psi, in.order,
+                      std::span<double>(into, static_cast<std::size_t>(in.order) + 1));
+}
+
+// Coefficient k of v², the square the motion reads: 0 without friction or a damper (kSquares),
+// where v² enters neither the motion nor the work.
+template <bool kSquares>
+double square(const JetSeries& x, int k) {
+  if constexpr (kSquares)
+    return x.Q[k];
+  else
+    return 0.0;
+}
+
+// The jets of one sliding body's motion: its leader's angle u and speed v give every member's
+// acceleration (as SlidingLaw::acceleration, its damping C·v last); coefficient k + 1 of each
+// state component is coefficient k of its rate over k + 1. Leaves v², the normal force and v in
+// pairs in x for the work (member_work_jets).
 template <bool kFriction, bool kSquares, bool kAlone>
-void sliding_jets(const BodyJets& in) {
-  static_assert(kSquares || !kFriction);
-  const Model& model = in.model;
+void motion_jets(const BodyJets& in, const JetSeries& x) {
   const Body& body = in.body;
   const int order = in.order;
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
@@ -91,55 +129,33 @@ void sliding_jets(const BodyJets& in) {
   const int L = body.leader();
   const double* const u = component(phi_index(L));
   const double* const v = component(dphi_index(L));
-  double* const scratch = in.scratch;
-  Pair* const CS = reinterpret_cast<Pair*>(scratch);  // n1 pairs
-  Pair* const ju = reinterpret_cast<Pair*>(scratch + 2 * n1);
-  double* const Q = scratch + 4 * n1;
-  double* const F = scratch + 5 * n1;
-  double* const N = scratch + 6 * n1;
-  double* const Fi = scratch + 7 * n1;
-  double* const G = scratch + 8 * n1;
-  Pair* const vv = reinterpret_cast<Pair*>(scratch + 9 * n1);
-  auto add_force = [&](int i, double* into) {
-    const Forcing& f = model.pellets[i].force;
-    if (f.active())
-      add_cosine_series(f.F0, f.Omega, f.Omega * in.t0 + f.psi, order, std::span<double>(into, n1));
-  };
-  std::fill(F, F + n1, 0.0);
+  std::fill(x.F, x.F + n1, 0.0);
   if constexpr (kAlone)
-    add_force(L, F);
+    add_force(in, L, x.F);
   else
-    for (int i : body.members) add_force(i, F);
+    for (int i : body.members) add_force(in, i, x.F);
   const SlidingLaw& law = in.law;
   const double R = law.R, gR = law.gR, mu = law.mu, M = in.M, damping = in.damping;
   const int s = body.s, side = in.side;
   const bool paper = law.paper;
   const double sigma = paper ? 1.0 : side;  // n = R·σ·(v² + gR·cos u)
-  // Without friction v² and n enter neither the motion nor the work, unless a damper's power
-  // needs v²: they are 0.
-  auto square = [&](int k) {
-    if constexpr (kSquares)
-      return Q[k];
-    else
-      return 0.0;
-  };
-  const double S0 = std::sin(u[0]), C0 = std::cos(u[0]);
-  CS[0] = Pair{C0, S0};
+  x.CS[0] = Pair{std::cos(u[0]), std::sin(u[0])};
   double* const phi = component(phi_index(L));
   double* const dphi = component(dphi_index(L));
   for (int k = 0; k < order; ++k) {
     if (k > 0) {
       const double juk = k * u[k];
-      ju[k] = Pair{juk, juk};
-      sin_cos_pair(ju, CS, k);
+      x.ju[k] = Pair{juk, juk};
+      sin_cos_pair(x.ju, x.CS, k);
     }
-    vv[k] = Pair{v[k], v[k]};
-    const double Sk = CS[k][1], Ck = CS[k][0];
-    if constexpr (kSquares) Q[k] = product_coefficient({v, n1}, {v, n1}, k);
-    double acc = paper ? F[k] / (M * R) - s * mu * square(k) - gR * (Sk + s * mu * Ck)
-                       : F[k] / (M * R) - gR * Sk - s * mu * side * (square(k) + gR * Ck);
+    x.vv[k] = Pair{v[k], v[k]};
+    const double Sk = x.CS[k][1], Ck = x.CS[k][0];
+    if constexpr (kSquares) x.Q[k] = product_coefficient({v, n1}, {v, n1}, k);
+    const double v2 = square<kSquares>(x, k);
+    double acc = paper ? x.F[k] / (M * R) - s * mu * v2 - gR * (Sk + s * mu * Ck)
+                       : x.F[k] / (M * R) - gR * Sk - s * mu * side * (v2 + gR * Ck);
     acc -= damping * v[k];
-    if constexpr (kFriction) N[k] = R * sigma * (Q[k] + gR * Ck);
+    if constexpr (kFriction) x.N[k] = R * sigma * (x.Q[k] + gR * Ck);
     if constexpr (kAlone) {
       phi[k + 1] = dphi[k] / (k + 1);
       dphi[k + 1] = acc / (k + 1);
@@ -150,41 +166,60 @@ void sliding_jets(const BodyJets& in) {
       }
     }
   }
-  auto member_work = [&](int i) {
-    if constexpr (!kAlone) {
-      std::fill(Fi, Fi + n1, 0.0);
-      add_force(i, Fi);
-    }
-    const double* const Fm = kAlone ? F : Fi;
-    const Pellet& p = model.pellets[i];
-    const double ms_mu = p.m * s * mu, damper = p.m * R * R * p.c;  // damper·v² is its power
-    // Without friction n is 0 and G is the force itself: Fm[k] − (±0) is Fm[k] (never −0).
-    const double* g = Fm;
-    if constexpr (kFriction) {
-      for (int k = 0; k < order; ++k) G[k] = Fm[k] - ms_mu * N[k];
-      g = G;
-    }
-    double* const w = component(work_index(i));
-    // Coefficient k of the work's rate over k + 1. Without v² (no friction, no damper)
-    // damper·Q[k] is a zero that changes nothing.
-    auto rate = [&](int k, double product) {
-      if constexpr (kSquares)
-        return (R * product - damper * Q[k]) / (k + 1);
-      else
-        return R * product / (k + 1);
-    };
-    int k = 0;
-    for (; k + 1 < order; k += 2) {
-      const Pair product = product_pair(vv, g, k);
-      w[k + 1] = rate(k, product[0]);
-      w[k + 2] = rate(k + 1, product[1]);
-    }
-    if (k < order) w[k + 1] = rate(k, product_coefficient({v, n1}, {g, n1}, k));
+}
+
+// The jets of member i's work: its rate R·v·(F_i − m_i·s·μ·n) − m_i·R²·c_i·v², from the series
+// motion_jets left in x; coefficient k + 1 is coefficient k of the rate over k + 1.
+template <bool kFriction, bool kSquares, bool kAlone>
+void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
+  const int order = in.order;
+  const std::size_t n1 = static_cast<std::size_t>(order) + 1;
+  if constexpr (!kAlone) {
+    std::fill(x.Fi, x.Fi + n1, 0.0);
+    add_force(in, i, x.Fi);
+  }
+  const double* const Fm = kAlone ? x.F : x.Fi;
+  const Pellet& p = in.model.pellets[i];
+  const double R = in.law.R, mu = in.law.mu;
+  const double ms_mu = p.m * in.body.s * mu, damper = p.m * R * R * p.c;  // damper·v²: its power
+  // Without friction n is 0 and G is the force itself: Fm[k] − (±0) is Fm[k] (never −0).
+  const double* g = Fm;
+  if constexpr (kFriction) {
+    for (int k = 0; k < order; ++k) x.G[k] = Fm[k] - ms_mu * x.N[k];
+    g = x.G;
+  }
+  double* const w = in.state + static_cast<std::size_t>(work_index(i)) * n1;
+  // Without v² (no friction, no damper) damper·Q[k] is a zero that changes nothing.
+  auto rate = [&](int k, double product) {
+    if constexpr (kSquares)
+      return (R * product - damper * x.Q[k]) / (k + 1);
+    else
+      return R * product / (k + 1);
   };
+  int k = 0;
+  for (; k + 1 < order; k += 2) {
+    const Pair product = product_pair(x.vv, g, k);
+    w[k + 1] = rate(k, product[0]);
+    w[k + 2] = rate(k + 1, product[1]);
+  }
+  const double* const v = in.state + static_cast<std::size_t>(dphi_index(in.body.leader())) * n1;
+  if (k < order) w[k + 1] = rate(k, product_coefficient({v, n1}, {g, n1}, k));
+}
+
+// The jets of one sliding body (SegmentDynamics::body_jets), specialised by what the model has,
+// decided once per call: kFriction (μ ≠ 0: v² and the normal force enter the motion and the
+// work), kSquares (v² is needed: friction or a damper's power), kAlone (one member, whose force
+// is the body's). Every variant does the general case's operations in its order; a series the
+// general case keeps at zero is read as the literal 0.0, the same value.
+template <bool kFriction, bool kSquares, bool kAlone>
+void sliding_jets(const BodyJets& in) {
+  static_assert(kSquares || !kFriction);
+  const JetSeries x = jet_series(in.scratch, static_cast<std::size_t>(in.order) + 1);
+  motion_jets<kFriction, kSquares, kAlone>(in, x);
   if constexpr (kAlone)
-    member_work(L);
+    member_work_jets<kFriction, kSquares, kAlone>(in, x, in.body.leader());
   else
-    for (int i : body.members) member_work(i);
+    for (int i : in.body.members) member_work_jets<kFriction, kSquares, kAlone>(in, x, i);
 }
 
 template <bool kFriction, bool kSquares>
