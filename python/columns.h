@@ -26,21 +26,20 @@ py::array_t<T> column(std::size_t n, const Get& get) {
   return a;
 }
 
-// The n strings get(0) … as a numpy array of str ('<U' of the longest), filled in place: a list
-// of Python strings handed to numpy.array would cost more than the run's events themselves.
+// The n strings get(0) … as a numpy array of str ('<U' of the longest), decoded straight into
+// the array (a list of Python strings handed to numpy.array would cost more than the run's events
+// themselves): get(k) is called twice, to size the array and to fill it.
 template <class Get>
 py::array string_column(std::size_t n, const Get& get) {
-  std::vector<std::u32string> text(n);
   std::size_t width = 1;  // numpy's narrowest str
-  for (std::size_t k = 0; k < n; ++k) {
-    text[k] = code_points(get(k));
-    width = std::max(width, text[k].size());
-  }
+  for (std::size_t k = 0; k < n; ++k) width = std::max(width, code_point_count(get(k)));
   py::array a(py::dtype("<U" + std::to_string(width)),
               std::vector<py::ssize_t>{static_cast<py::ssize_t>(n)});
   auto* data = static_cast<char32_t*>(a.mutable_data());
-  std::fill(data, data + n * width, U'\0');
-  for (std::size_t k = 0; k < n; ++k) std::copy(text[k].begin(), text[k].end(), data + k * width);
+  for (std::size_t k = 0; k < n; ++k) {
+    char32_t* row = data + k * width;
+    std::fill(write_code_points(get(k), row), row + width, U'\0');
+  }
   return a;
 }
 

@@ -21,10 +21,17 @@ def test_to_json_is_the_command_lines_output(name):
     run = vibro.simulate(vibro.preset(name))
     _, out, _ = run_cli("simulate", "--preset", name)
     assert without_wall_clock(run.to_json()) == without_wall_clock(out)
-    # The parts read as Python values are those of the JSON.
+    assert_parts_are_the_jsons(run)
+
+
+def assert_parts_are_the_jsons(run):
+    """The parts read as Python values are those of the run's JSON: the same values of the same
+    types, the keys in the same order (json.dumps writes both alike only then)."""
     whole = json.loads(run.to_json())
-    assert run.summary == whole["summary"] and run.stats == whole["stats"]
-    assert run.warnings == whole["warnings"] and run.lyapunov == whole.get("lyapunov")
+    for part in ("summary", "stats", "warnings", "lyapunov"):
+        ours = getattr(run, part)
+        assert ours == whole.get(part), part
+        assert json.dumps(ours) == json.dumps(whole.get(part)), part
 
 
 def test_a_scene_of_awkward_doubles_reads_as_the_command_line_reads_its_file(scene_file):
@@ -102,6 +109,7 @@ def test_lyapunov_exponents_when_the_scene_asks():
     scene["lyapunov"] = True
     run = vibro.simulate(scene)
     assert len(run.lyapunov["exponents"]) == 2
+    assert_parts_are_the_jsons(run)
 
 
 def test_the_deadline_stops_a_long_run():
@@ -110,6 +118,8 @@ def test_the_deadline_stops_a_long_run():
     run = vibro.simulate(scene, deadline_ms=50)
     assert run.stats["termination"] == "deadline"
     assert run.stats["t_reached"] < 1e5
+    assert "deadline" in run.stats["message"] and "deadline" in run.answer
+    assert_parts_are_the_jsons(run)
 
 
 def test_threads_share_nothing():
