@@ -10,6 +10,7 @@
 #include "io/run_csv.h"
 #include "python/bindings.h"
 #include "python/columns.h"
+#include "python/keys.h"
 #include "python/run_values.h"
 #include "python/scene_error.h"
 #include "python/scene_input.h"
@@ -36,19 +37,19 @@ class Run {
       return i < xs.size() ? xs[i] : std::numeric_limits<double>::quiet_NaN();
     };
     py::dict d;
-    d["event"] = column<std::int64_t>(n, [&](std::size_t k) { return rows[k].event; });
-    d["t"] = column<double>(n, [&](std::size_t k) { return event(k).t; });
-    d["kind"] = string_column(n, [&](std::size_t k) { return event_kind_name(event(k).kind); });
-    d["pellet"] = column<std::int64_t>(n, [&](std::size_t k) {
-      const std::vector<int>& p = event(k).pellets;
-      return rows[k].member < p.size() ? p[rows[k].member] : -1;
-    });
-    d["limiter"] = column<std::int64_t>(n, [&](std::size_t k) { return event(k).limiter; });
-    d["phi"] = column<double>(n, [&](std::size_t k) { return event(k).phi; });
-    d["dphi_before"] =
-        column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_before, k); });
-    d["dphi_after"] =
-        column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_after, k); });
+    put<"event">(d, column<std::int64_t>(n, [&](std::size_t k) { return rows[k].event; }));
+    put<"t">(d, column<double>(n, [&](std::size_t k) { return event(k).t; }));
+    put<"kind">(d, string_column(n, [&](std::size_t k) { return event_kind_name(event(k).kind); }));
+    put<"pellet">(d, column<std::int64_t>(n, [&](std::size_t k) {
+                    const std::vector<int>& p = event(k).pellets;
+                    return rows[k].member < p.size() ? p[rows[k].member] : -1;
+                  }));
+    put<"limiter">(d, column<std::int64_t>(n, [&](std::size_t k) { return event(k).limiter; }));
+    put<"phi">(d, column<double>(n, [&](std::size_t k) { return event(k).phi; }));
+    put<"dphi_before">(
+        d, column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_before, k); }));
+    put<"dphi_after">(
+        d, column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_after, k); }));
     events_ = d;
     return d;
   }

@@ -3,6 +3,8 @@
 #include <cmath>
 #include <string_view>
 
+#include "python/keys.h"
+
 namespace vibro::python {
 namespace {
 
@@ -21,18 +23,15 @@ py::object text(std::string_view s) {
 }
 py::object boolean(bool b) { return py::bool_(b); }
 
-// d[key] = value. Keys are set in the sorted order the JSON's keys have.
-void put(py::dict& d, const char* key, const py::object& value) {
-  if (PyDict_SetItemString(d.ptr(), key, value.ptr()) != 0) throw py::error_already_set();
-}
+// Each dict's keys are set in the sorted order the JSON's keys have.
 
 py::dict final_state(const FinalState& f) {
   py::dict d;
-  put(d, "dphi", finite(f.dphi));
-  if (f.limiter >= 0) put(d, "limiter", integer(f.limiter));
-  put(d, "phi", finite(f.phi));
-  put(d, "phi_wrapped", finite(wrap_angle(f.phi)));
-  put(d, "state", text(pellet_state_name(f.state)));
+  put<"dphi">(d, finite(f.dphi));
+  if (f.limiter >= 0) put<"limiter">(d, integer(f.limiter));
+  put<"phi">(d, finite(f.phi));
+  put<"phi_wrapped">(d, finite(wrap_angle(f.phi)));
+  put<"state">(d, text(pellet_state_name(f.state)));
   return d;
 }
 
@@ -50,50 +49,50 @@ py::dict summary_values(const RunResult& run, const std::string& answer) {
     by_limiter[l] = row;
   }
   py::dict d;
-  put(d, "answer", text(answer));
-  put(d, "chatter_sequences", integer(sm.chatter_sequences));
-  put(d, "collisions", integer(sm.collisions));
-  put(d, "ends_vibro_impact", boolean(sm.ends_vibro_impact));
-  put(d, "final", finals);
-  put(d, "impacts_by_limiter", by_limiter);
+  put<"answer">(d, text(answer));
+  put<"chatter_sequences">(d, integer(sm.chatter_sequences));
+  put<"collisions">(d, integer(sm.collisions));
+  put<"ends_vibro_impact">(d, boolean(sm.ends_vibro_impact));
+  put<"final">(d, finals);
+  put<"impacts_by_limiter">(d, by_limiter);
   if (sm.last_impact.index > 0) {
     py::dict last;
-    put(last, "index", integer(sm.last_impact.index));
-    put(last, "t", finite(sm.last_impact.t));
-    put(d, "last_impact", last);
+    put<"index">(last, integer(sm.last_impact.index));
+    put<"t">(last, finite(sm.last_impact.t));
+    put<"last_impact">(d, last);
   } else {
-    put(d, "last_impact", py::none());
+    put<"last_impact">(d, py::none());
   }
-  put(d, "limiter_impacts", integer(sm.limiter_impacts));
+  put<"limiter_impacts">(d, integer(sm.limiter_impacts));
   return d;
 }
 
 py::dict stats_values(const RunResult& run) {
   const Stats& st = run.stats;
   py::dict d;
-  put(d, "atol", number(st.atol));
-  put(d, "check", boolean(st.check));
-  if (!st.check_method.empty()) put(d, "check_method", text(st.check_method));
-  put(d, "check_wall_ms", finite(st.check_wall_ms));
-  put(d, "energy_defect", finite(st.energy_defect));
-  put(d, "error_estimate", finite(st.error_estimate));
-  put(d, "event_time_error", finite(st.event_time_error));
-  put(d, "events", integer(static_cast<long long>(run.events.size())));
-  put(d, "first_integral_residual", finite(st.first_integral_residual));
-  put(d, "jac_evals", integer(st.jac_evals));
-  put(d, "lu_decomps", integer(st.lu_decomps));
-  if (!st.message.empty()) put(d, "message", text(st.message));
-  put(d, "method", text(st.method));
-  put(d, "rejected", integer(st.rejected));
-  put(d, "rhs_evals", integer(st.rhs_evals));
-  put(d, "rtol", number(st.rtol));
-  put(d, "state_error", finite(st.state_error));
-  put(d, "steps", integer(st.steps));
-  put(d, "stiff_switches", integer(st.stiff_switches));
-  put(d, "t_reached", finite(st.t_reached));
-  put(d, "termination", text(termination_name(st.termination)));
-  put(d, "trusted_until", finite(st.trusted_until));
-  put(d, "wall_ms", finite(st.wall_ms));
+  put<"atol">(d, number(st.atol));
+  put<"check">(d, boolean(st.check));
+  if (!st.check_method.empty()) put<"check_method">(d, text(st.check_method));
+  put<"check_wall_ms">(d, finite(st.check_wall_ms));
+  put<"energy_defect">(d, finite(st.energy_defect));
+  put<"error_estimate">(d, finite(st.error_estimate));
+  put<"event_time_error">(d, finite(st.event_time_error));
+  put<"events">(d, integer(static_cast<long long>(run.events.size())));
+  put<"first_integral_residual">(d, finite(st.first_integral_residual));
+  put<"jac_evals">(d, integer(st.jac_evals));
+  put<"lu_decomps">(d, integer(st.lu_decomps));
+  if (!st.message.empty()) put<"message">(d, text(st.message));
+  put<"method">(d, text(st.method));
+  put<"rejected">(d, integer(st.rejected));
+  put<"rhs_evals">(d, integer(st.rhs_evals));
+  put<"rtol">(d, number(st.rtol));
+  put<"state_error">(d, finite(st.state_error));
+  put<"steps">(d, integer(st.steps));
+  put<"stiff_switches">(d, integer(st.stiff_switches));
+  put<"t_reached">(d, finite(st.t_reached));
+  put<"termination">(d, text(termination_name(st.termination)));
+  put<"trusted_until">(d, finite(st.trusted_until));
+  put<"wall_ms">(d, finite(st.wall_ms));
   return d;
 }
 
@@ -102,11 +101,11 @@ py::list warning_values(const std::vector<Warning>& warnings) {
   for (std::size_t i = 0; i < warnings.size(); ++i) {
     const Warning& w = warnings[i];
     py::dict d;
-    put(d, "code", text(w.code));
-    put(d, "message", text(w.message));
-    put(d, "pellet", integer(w.pellet));
-    put(d, "t_begin", finite(w.t_begin));
-    put(d, "t_end", finite(w.t_end));
+    put<"code">(d, text(w.code));
+    put<"message">(d, text(w.message));
+    put<"pellet">(d, integer(w.pellet));
+    put<"t_begin">(d, finite(w.t_begin));
+    put<"t_end">(d, finite(w.t_end));
     list[i] = d;
   }
   return list;
@@ -118,9 +117,9 @@ py::object lyapunov_values(const std::optional<LyapunovSpectrum>& lyapunov) {
   for (std::size_t i = 0; i < lyapunov->exponents.size(); ++i)
     exponents[i] = finite(lyapunov->exponents[i]);
   py::dict d;
-  put(d, "exponents", exponents);
-  put(d, "span", finite(lyapunov->span));
-  if (!lyapunov->unsupported.empty()) put(d, "unsupported", text(lyapunov->unsupported));
+  put<"exponents">(d, exponents);
+  put<"span">(d, finite(lyapunov->span));
+  if (!lyapunov->unsupported.empty()) put<"unsupported">(d, text(lyapunov->unsupported));
   return d;
 }
 
