@@ -57,7 +57,10 @@ class Run {
   // The parts of the run's JSON other than its events and trajectories, as Python values
   // (python/run_values.h).
   py::object summary() {
-    if (!summary_) summary_ = summary_values(run_, answer());
+    if (!summary_) {
+      const std::string sentence = answer();  // releases the GIL: another thread may get here
+      if (!summary_) summary_ = summary_values(run_, sentence);
+    }
     return summary_;
   }
   py::object stats() {
@@ -108,9 +111,17 @@ class Run {
     }
     return text;
   }
-  // summary["answer"]: the run in one sentence.
-  const std::string& answer() {
-    if (answer_.empty()) answer_ = answer_sentence(run_, model_);
+  // summary["answer"]: the run in one sentence, made once, with the GIL released meanwhile (it is
+  // most of what reading the summary costs), so that other Python threads go on.
+  std::string answer() {
+    if (answer_.empty()) {
+      std::string sentence;
+      {
+        py::gil_scoped_release release;
+        sentence = answer_sentence(run_, model_);
+      }
+      answer_ = std::move(sentence);
+    }
     return answer_;
   }
 

@@ -6,6 +6,7 @@ import io
 import json
 import math
 import textwrap
+import threading
 
 import numpy as np
 import pytest
@@ -128,6 +129,23 @@ def test_threads_share_nothing():
     with concurrent.futures.ThreadPoolExecutor(4) as pool:
         together = list(pool.map(lambda n: vibro.simulate(vibro.preset(n)).to_json(), names * 2))
     assert [without_wall_clock(t) for t in together] == alone * 2
+
+
+def test_threads_reading_one_run_get_its_one_summary():
+    # The answer sentence is made with the GIL released: threads that read the summary of the same
+    # run meanwhile all get the one dict the run keeps.
+    for _ in range(20):
+        run = vibro.simulate(vibro.preset("paper"))
+        start = threading.Barrier(4)
+
+        def read(_):
+            start.wait()
+            return run.summary
+
+        with concurrent.futures.ThreadPoolExecutor(4) as pool:
+            summaries = list(pool.map(read, range(4)))
+        assert all(s is run.summary for s in summaries)
+        assert run.answer == run.summary["answer"]
 
 
 def test_numpy_values_in_a_scene_read_as_python_ones():
