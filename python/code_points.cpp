@@ -24,24 +24,21 @@ Lead lead_form(unsigned char lead) {
   return {};
 }
 
-}  // namespace
-
-// A malformed sequence gives one U+FFFD per maximal part of a well-formed one, as Python's
-// errors="replace" does.
-std::u32string code_points(std::string_view utf8) {
-  std::u32string out;
-  out.reserve(utf8.size());
+// Calls put(c) for each code point of the text, in order. A malformed sequence gives one U+FFFD
+// per maximal part of a well-formed one, as Python's errors="replace" does.
+template <class Put>
+void decode(std::string_view utf8, const Put& put) {
   std::size_t i = 0;
   while (i < utf8.size()) {
     const auto lead = static_cast<unsigned char>(utf8[i]);
     if (lead < 0x80) {
-      out.push_back(lead);
+      put(lead);
       ++i;
       continue;
     }
     const Lead form = lead_form(lead);
     if (form.extra == 0) {
-      out.push_back(kReplacement);
+      put(kReplacement);
       ++i;
       continue;
     }
@@ -53,9 +50,28 @@ std::u32string code_points(std::string_view utf8) {
       if (!in_range) break;
       c = (c << 6) | (next & 0x3F);
     }
-    out.push_back(k > form.extra ? c : kReplacement);
+    put(k > form.extra ? c : kReplacement);
     i += k;
   }
+}
+
+}  // namespace
+
+std::u32string code_points(std::string_view utf8) {
+  std::u32string out;
+  out.reserve(utf8.size());
+  decode(utf8, [&](char32_t c) { out.push_back(c); });
+  return out;
+}
+
+std::size_t code_point_count(std::string_view utf8) {
+  std::size_t n = 0;
+  decode(utf8, [&](char32_t) { ++n; });
+  return n;
+}
+
+char32_t* write_code_points(std::string_view utf8, char32_t* out) {
+  decode(utf8, [&](char32_t c) { *out++ = c; });
   return out;
 }
 

@@ -47,33 +47,57 @@ json integer_json(py::handle value, const Where* where) {
   return json(d);
 }
 
+// A str's text as UTF-8, read in place (Python keeps a str's UTF-8 once made). Raises SceneError
+// naming the str's place (a key: its dict's) for a str UTF-8 cannot hold (a lone surrogate).
+std::string utf8_of(PyObject* str, const Where* where) {
+  Py_ssize_t size = 0;
+  const char* text = PyUnicode_AsUTF8AndSize(str, &size);
+  if (text == nullptr) {
+    PyErr_Clear();
+    raise_scene_error({field_of(where), "is a string that is not Unicode text (a lone surrogate)"});
+  }
+  return std::string(text, static_cast<std::size_t>(size));
+}
+
 json convert(py::handle value, const Where* where, int depth, int max_depth) {
-  if (value.is_none()) return json(nullptr);
-  if (PyBool_Check(value.ptr())) return json(value.ptr() == Py_True);
-  if (PyLong_Check(value.ptr())) return integer_json(value, where);
-  if (PyFloat_Check(value.ptr())) return json(PyFloat_AS_DOUBLE(value.ptr()));
-  if (PyUnicode_Check(value.ptr())) return json(value.cast<std::string>());
-  const bool dict = PyDict_Check(value.ptr());
-  if (dict || PyList_Check(value.ptr()) || PyTuple_Check(value.ptr())) {
+  PyObject* const v = value.ptr();
+  if (v == Py_None) return json(nullptr);
+  if (PyBool_Check(v)) return json(v == Py_True);
+  if (PyLong_Check(v)) return integer_json(value, where);
+  if (PyFloat_Check(v)) return json(PyFloat_AS_DOUBLE(v));
+  if (PyUnicode_Check(v)) return json(utf8_of(v, where));
+  const bool dict = PyDict_Check(v);
+  if (dict || PyList_Check(v) || PyTuple_Check(v)) {
     if (depth + 1 > max_depth)
       raise_scene_error({"scene", "nests deeper than " + std::to_string(max_depth) + " levels"});
+    // Items read in place, each held while it is converted; the size read again after each, as
+    // converting a value (numpy's tolist) may run code that changes the list.
     if (!dict) {
-      json list = json::array();
-      Where item_at{where, nullptr, 0};
-      for (py::handle item : value) {
-        list.push_back(convert(item, &item_at, depth + 1, max_depth));
-        ++item_at.index;
+      const bool list = PyList_Check(v);
+      const auto size = [&] { return list ? PyList_GET_SIZE(v) : PyTuple_GET_SIZE(v); };
+      json items = json::array();
+      items.get_ref<json::array_t&>().reserve(static_cast<std::size_t>(size()));
+      for (Py_ssize_t i = 0; i < size(); ++i) {
+        const auto item = py::reinterpret_borrow<py::object>(list ? PyList_GET_ITEM(v, i)
+                                                                  : PyTuple_GET_ITEM(v, i));
+        const Where item_at{where, nullptr, static_cast<std::size_t>(i)};
+        items.push_back(convert(item, &item_at, depth + 1, max_depth));
       }
-      return list;
+      return items;
     }
     json object = json::object();
-    for (auto [key, item] : py::reinterpret_borrow<py::dict>(value)) {
-      if (!PyUnicode_Check(key.ptr()))
+    auto& members = object.get_ref<json::object_t&>();
+    PyObject *key = nullptr, *value_at = nullptr;
+    for (Py_ssize_t at = 0; PyDict_Next(v, &at, &key, &value_at);) {
+      const auto held_key = py::reinterpret_borrow<py::object>(key);
+      const auto item = py::reinterpret_borrow<py::object>(value_at);
+      if (!PyUnicode_Check(key))
         raise_scene_error({field_of(where),
                            "has a key that is not a string: " + py::repr(key).cast<std::string>()});
-      const std::string name = key.cast<std::string>();
+      std::string name = utf8_of(key, where);
       const Where member{where, &name};
-      object[name] = convert(item, &member, depth + 1, max_depth);
+      json converted = convert(item, &member, depth + 1, max_depth);
+      members.insert_or_assign(std::move(name), std::move(converted));
     }
     return object;
   }

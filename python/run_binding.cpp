@@ -1,7 +1,6 @@
 // vibro.simulate(scene, trajectories=None, deadline_ms=None) -> vibro.Run: the run `vibro simulate`
 // makes of the scene (app/simulate_command.cpp), its JSON the same text.
 #include <limits>
-#include <map>
 #include <nlohmann/json.hpp>
 #include <optional>
 #include <string>
@@ -11,32 +10,18 @@
 #include "io/run_csv.h"
 #include "python/bindings.h"
 #include "python/columns.h"
-#include "python/json_values.h"
+#include "python/keys.h"
+#include "python/run_values.h"
 #include "python/scene_error.h"
 #include "python/scene_input.h"
 
 namespace vibro::python {
 namespace {
 
-// The parts of a run's JSON other than its events and trajectories (summary, stats, warnings,
-// lyapunov), as result_to_json writes them: most of its cost is the events, which Python reads as
-// arrays, and the whole JSON is written only when asked for (to_json).
-nlohmann::json json_parts(const RunResult& run, const Model& model) {
-  RunResult parts;
-  parts.summary = run.summary;
-  parts.stats = run.stats;
-  parts.warnings = run.warnings;
-  parts.lyapunov = run.lyapunov;
-  nlohmann::json j = result_to_json(parts, model);
-  j["stats"]["events"] = run.events.size();
-  return j;
-}
-
-// A finished run and what Python reads of it, each part made when first asked for.
+// A finished run and what Python reads of it, each part made when first asked for and kept.
 class Run {
  public:
-  Run(Model model, RunResult run, nlohmann::json parts)
-      : model_(std::move(model)), run_(std::move(run)), json_(std::move(parts)) {}
+  Run(Model model, RunResult run) : model_(std::move(model)), run_(std::move(run)) {}
 
   // One array per column of the events' CSV (io/run_csv.h: event,t,kind,pellet,limiter,phi,
   // dphi_before,dphi_after), a row per pellet an event touches; limiter −1 where none. An event
@@ -52,28 +37,43 @@ class Run {
       return i < xs.size() ? xs[i] : std::numeric_limits<double>::quiet_NaN();
     };
     py::dict d;
-    d["event"] = column<std::int64_t>(n, [&](std::size_t k) { return rows[k].event; });
-    d["t"] = column<double>(n, [&](std::size_t k) { return event(k).t; });
-    d["kind"] = string_column(n, [&](std::size_t k) { return event_kind_name(event(k).kind); });
-    d["pellet"] = column<std::int64_t>(n, [&](std::size_t k) {
-      const std::vector<int>& p = event(k).pellets;
-      return rows[k].member < p.size() ? p[rows[k].member] : -1;
-    });
-    d["limiter"] = column<std::int64_t>(n, [&](std::size_t k) { return event(k).limiter; });
-    d["phi"] = column<double>(n, [&](std::size_t k) { return event(k).phi; });
-    d["dphi_before"] =
-        column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_before, k); });
-    d["dphi_after"] =
-        column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_after, k); });
+    put<"event">(d, column<std::int64_t>(n, [&](std::size_t k) { return rows[k].event; }));
+    put<"t">(d, column<double>(n, [&](std::size_t k) { return event(k).t; }));
+    put<"kind">(d, string_column(n, [&](std::size_t k) { return event_kind_name(event(k).kind); }));
+    put<"pellet">(d, column<std::int64_t>(n, [&](std::size_t k) {
+                    const std::vector<int>& p = event(k).pellets;
+                    return rows[k].member < p.size() ? p[rows[k].member] : -1;
+                  }));
+    put<"limiter">(d, column<std::int64_t>(n, [&](std::size_t k) { return event(k).limiter; }));
+    put<"phi">(d, column<double>(n, [&](std::size_t k) { return event(k).phi; }));
+    put<"dphi_before">(
+        d, column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_before, k); }));
+    put<"dphi_after">(
+        d, column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_after, k); }));
     events_ = d;
     return d;
   }
 
-  // A part of the run's JSON ("summary", "stats", ...) as Python values; None where it has none.
-  py::object part(const char* key) {
-    py::object& cached = parts_[key];
-    if (!cached) cached = json_.contains(key) ? python_from_json(json_.at(key)) : py::none();
-    return cached;
+  // The parts of the run's JSON other than its events and trajectories, as Python values
+  // (python/run_values.h).
+  py::object summary() {
+    if (!summary_) {
+      const std::string sentence = answer();  // releases the GIL: another thread may get here
+      if (!summary_) summary_ = summary_values(run_, sentence);
+    }
+    return summary_;
+  }
+  py::object stats() {
+    if (!stats_) stats_ = stats_values(run_);
+    return stats_;
+  }
+  py::object warnings() {
+    if (!warnings_) warnings_ = warning_values(run_.warnings);
+    return warnings_;
+  }
+  py::object lyapunov() {
+    if (!lyapunov_) lyapunov_ = lyapunov_values(run_.lyapunov);
+    return lyapunov_;
   }
 
   // Per recorded pellet {"pellet", "branches": [{"index", "t", "phi", "dphi"}]}, the samples as
@@ -111,15 +111,27 @@ class Run {
     }
     return text;
   }
-  std::string answer() const { return json_["summary"]["answer"].get<std::string>(); }
+  // summary["answer"]: the run in one sentence, made once, with the GIL released meanwhile (it is
+  // most of what reading the summary costs), so that other Python threads go on.
+  std::string answer() {
+    if (answer_.empty()) {
+      std::string sentence;
+      {
+        py::gil_scoped_release release;
+        sentence = answer_sentence(run_, model_);
+      }
+      answer_ = std::move(sentence);
+    }
+    return answer_;
+  }
 
  private:
   Model model_;
   RunResult run_;
-  nlohmann::json json_;  // json_parts
-  py::object events_;    // null until asked for
+  std::string answer_;  // empty until asked for, as the Python values below are null
+  py::object events_;
+  py::object summary_, stats_, warnings_, lyapunov_;
   py::object trajectories_;
-  std::map<std::string, py::object> parts_;
 };
 
 Run simulate_scene(py::handle scene_value, std::optional<bool> trajectories,
@@ -143,14 +155,12 @@ Run simulate_scene(py::handle scene_value, std::optional<bool> trajectories,
     return stop;
   };
   RunResult run;
-  nlohmann::json parts;
   {
     py::gil_scoped_release release;
     run = simulate(scene.model, options);
-    if (run.stats.termination != Termination::cancelled) parts = json_parts(run, scene.model);
   }
   if (run.stats.termination == Termination::cancelled) throw py::error_already_set();
-  return Run(std::move(scene.model), std::move(run), std::move(parts));
+  return Run(std::move(scene.model), std::move(run));
 }
 
 }  // namespace
@@ -159,18 +169,18 @@ void add_simulate(py::module_& m) {
   py::class_<Run>(m, "Run", "A finished run of a scene (vibro.simulate).")
       .def_property_readonly("events", &Run::events,
                              "The events, a dict of equal-length numpy arrays, one per column of "
-                             "the events' CSV: t, kind, pellets, limiter, phi, dphi_before, "
-                             "dphi_after (pellets and speeds as tuples; limiter -1 where none).")
+                             "the events' CSV: event, t, kind, pellet, limiter, phi, "
+                             "dphi_before, dphi_after (a row per pellet an event touches; "
+                             "limiter -1 where none).")
       .def_property_readonly(
-          "summary", [](Run& r) { return r.part("summary"); },
+          "summary", &Run::summary,
           "The summary as in the JSON: impacts, the last impact, final states, the answer.")
       .def_property_readonly(
-          "stats", [](Run& r) { return r.part("stats"); },
+          "stats", &Run::stats,
           "The run's statistics and trust fields as in the JSON (wall_ms is this run's).")
+      .def_property_readonly("warnings", &Run::warnings, "The warnings, a list of dicts.")
       .def_property_readonly(
-          "warnings", [](Run& r) { return r.part("warnings"); }, "The warnings, a list of dicts.")
-      .def_property_readonly(
-          "lyapunov", [](Run& r) { return r.part("lyapunov"); },
+          "lyapunov", &Run::lyapunov,
           "The Lyapunov exponents as in the JSON when the scene asks for them, else None.")
       .def_property_readonly("trajectories", &Run::trajectories,
                              "Per recorded pellet, its branches with the numpy arrays t, phi, "
@@ -178,7 +188,7 @@ void add_simulate(py::module_& m) {
       .def_property_readonly("answer", &Run::answer, "summary['answer']: the run in one sentence.")
       .def("to_json", &Run::to_json,
            "The run as `vibro simulate` prints it for the same scene (API.md's JSON).")
-      .def("__repr__", [](const Run& r) { return "<vibro.Run: " + r.answer() + ">"; });
+      .def("__repr__", [](Run& r) { return "<vibro.Run: " + r.answer() + ">"; });
 
   m.def("simulate", &simulate_scene, py::arg("scene"), py::arg("trajectories") = py::none(),
         py::arg("deadline_ms") = py::none(),

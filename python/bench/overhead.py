@@ -1,6 +1,7 @@
 """What calling the engine from Python costs (issue 35, "Speed"; docs/PERFORMANCE.md).
 
-1. vibro.simulate on a preset, reading its events, summary and stats, against the same
+1. vibro.simulate on a preset, reading what a user reads of it (run.events, run.summary,
+   run.stats, run.warnings: each is made when first read, so each is read here), against the same
    simulate(model, options) called from C++ (python_engine_call, python/bench/engine_call.cpp,
    built with -DVIBRO_BUILD_BENCH=ON): the difference is the call's overhead (the dict read as a
    scene, the result made into Python values), given as a share of the run. Median CPU times of
@@ -12,6 +13,10 @@
 Usage: /usr/bin/python3 python/bench/overhead.py [BUILD_DIR] [THREADS] [ENGINE_CALL]
 (default build, 2, BUILD_DIR/python/python_engine_call)
 Takes the best of several repetitions: on a shared machine the least disturbed one.
+
+/usr/bin/python3 python/bench/overhead.py BUILD_DIR --calls N [PRESET] makes only N + 1 such calls
+(the first a warm-up, as python_engine_call's), for a count of instructions or allocations by
+python/bench/overhead_counts.sh, which is deterministic where times are not.
 """
 
 import json
@@ -22,18 +27,24 @@ import sys
 import time
 
 build = pathlib.Path(sys.argv[1] if len(sys.argv) > 1 else "build").resolve()
-threads = int(sys.argv[2]) if len(sys.argv) > 2 else 2
-engine_call = pathlib.Path(sys.argv[3] if len(sys.argv) > 3 else build / "python" / "python_engine_call")
+calls_only = len(sys.argv) > 3 and sys.argv[2] == "--calls"
+threads = int(sys.argv[2]) if len(sys.argv) > 2 and not calls_only else 2
+engine_call = pathlib.Path(sys.argv[3] if len(sys.argv) > 3 and not calls_only else build / "python" / "python_engine_call")
 sys.path.insert(0, str(build / "python"))
 import vibro  # noqa: E402
+
+
+def call(scene):
+    run = vibro.simulate(scene)
+    run.events, run.summary, run.stats, run.warnings  # what a caller reads: arrays and Python values
+    return run
 
 
 def python_call_ms(scene, repeats):
     times = []
     for _ in range(repeats):
         start = time.thread_time()
-        run = vibro.simulate(scene)
-        run.events, run.summary, run.stats  # what a caller reads: arrays and Python values
+        run = call(scene)  # noqa: F841 (kept, as a caller keeps it, until the next call)
         times.append((time.thread_time() - start) * 1e3)
     return statistics.median(times)
 
@@ -77,6 +88,11 @@ def sweep_against_cli(repeats=3):
           f"(sweep {pw:.0f} ms), vibro sweep {ct:.0f} ms (sweep {cw:.0f} ms)")
 
 
-simulate_overhead("paper")
-simulate_overhead("paper-fig6")
-sweep_against_cli()
+if calls_only:
+    scene = vibro.preset(sys.argv[4] if len(sys.argv) > 4 else "paper")
+    for _ in range(int(sys.argv[3]) + 1):
+        run = call(scene)
+else:
+    simulate_overhead("paper")
+    simulate_overhead("paper-fig6")
+    sweep_against_cli()

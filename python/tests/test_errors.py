@@ -58,6 +58,11 @@ def test_what_json_cannot_hold_names_its_place():
     assert e.field == "model" and "not a string" in e.message
     e = scene_error(vibro.simulate, "paper")
     assert e.field == "scene"
+    # A str UTF-8 cannot hold (a lone surrogate), as a value and as a key.
+    e = scene_error(vibro.simulate, paper_with(lambda s: s.update(name="\ud800")))
+    assert e.field == "name" and "surrogate" in e.message
+    e = scene_error(vibro.simulate, paper_with(lambda s: s["model"].update({"\ud800": 1})))
+    assert e.field == "model" and "surrogate" in e.message
 
 
 def test_nesting_is_bounded_as_for_text(scene_file):

@@ -6,6 +6,7 @@ import io
 import json
 import math
 import textwrap
+import threading
 
 import numpy as np
 import pytest
@@ -21,10 +22,17 @@ def test_to_json_is_the_command_lines_output(name):
     run = vibro.simulate(vibro.preset(name))
     _, out, _ = run_cli("simulate", "--preset", name)
     assert without_wall_clock(run.to_json()) == without_wall_clock(out)
-    # The parts read as Python values are those of the JSON.
+    assert_parts_are_the_jsons(run)
+
+
+def assert_parts_are_the_jsons(run):
+    """The parts read as Python values are those of the run's JSON: the same values of the same
+    types, the keys in the same order (json.dumps writes both alike only then)."""
     whole = json.loads(run.to_json())
-    assert run.summary == whole["summary"] and run.stats == whole["stats"]
-    assert run.warnings == whole["warnings"] and run.lyapunov == whole.get("lyapunov")
+    for part in ("summary", "stats", "warnings", "lyapunov"):
+        ours = getattr(run, part)
+        assert ours == whole.get(part), part
+        assert json.dumps(ours) == json.dumps(whole.get(part)), part
 
 
 def test_a_scene_of_awkward_doubles_reads_as_the_command_line_reads_its_file(scene_file):
@@ -102,6 +110,7 @@ def test_lyapunov_exponents_when_the_scene_asks():
     scene["lyapunov"] = True
     run = vibro.simulate(scene)
     assert len(run.lyapunov["exponents"]) == 2
+    assert_parts_are_the_jsons(run)
 
 
 def test_the_deadline_stops_a_long_run():
@@ -110,6 +119,8 @@ def test_the_deadline_stops_a_long_run():
     run = vibro.simulate(scene, deadline_ms=50)
     assert run.stats["termination"] == "deadline"
     assert run.stats["t_reached"] < 1e5
+    assert "deadline" in run.stats["message"] and "deadline" in run.answer
+    assert_parts_are_the_jsons(run)
 
 
 def test_threads_share_nothing():
@@ -118,6 +129,23 @@ def test_threads_share_nothing():
     with concurrent.futures.ThreadPoolExecutor(4) as pool:
         together = list(pool.map(lambda n: vibro.simulate(vibro.preset(n)).to_json(), names * 2))
     assert [without_wall_clock(t) for t in together] == alone * 2
+
+
+def test_threads_reading_one_run_get_its_one_summary():
+    # The answer sentence is made with the GIL released: threads that read the summary of the same
+    # run meanwhile all get the one dict the run keeps.
+    for _ in range(20):
+        run = vibro.simulate(vibro.preset("paper"))
+        start = threading.Barrier(4)
+
+        def read(_):
+            start.wait()
+            return run.summary
+
+        with concurrent.futures.ThreadPoolExecutor(4) as pool:
+            summaries = list(pool.map(read, range(4)))
+        assert all(s is run.summary for s in summaries)
+        assert run.answer == run.summary["answer"]
 
 
 def test_numpy_values_in_a_scene_read_as_python_ones():

@@ -24,5 +24,17 @@ TEST(CodePoints, ReplacesMalformedSequencesAsPythonDoes) {
   EXPECT_EQ(code_points("\xF5\x80\x80\x80"), U"\uFFFD\uFFFD\uFFFD\uFFFD");  // no lead
 }
 
+TEST(CodePoints, CountsAndWritesWhatItDecodes) {
+  for (const char* text : {"limiter", "φ̇ ≥ 0 rad/s, Ω", "\xF0\x9F\x98\x80", "", "a\x80z", "a\xCF",
+                           "\xE0\x80\xAF", "\xF4\x90\x80\x80"}) {
+    const std::u32string expected = code_points(text);
+    EXPECT_EQ(code_point_count(text), expected.size()) << text;
+    std::u32string written(expected.size() + 1, U'#');
+    const char32_t* end = write_code_points(text, written.data());
+    EXPECT_EQ(end - written.data(), static_cast<std::ptrdiff_t>(expected.size())) << text;
+    EXPECT_EQ(written, expected + U"#") << text;
+  }
+}
+
 }  // namespace
 }  // namespace vibro::python
