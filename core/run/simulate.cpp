@@ -28,7 +28,8 @@ class Simulation : RunState {
   // Resolves an instant at t and tells the observers; its outcome is instant_.outcome.
   void instant(double t, const std::vector<Body>& before, const InstantContacts& contacts,
                const Vec* unsnapped);
-  // Opens the interval of the last instant's bodies (taken from instant_.outcome).
+  // Opens the interval of the last instant's bodies, taken from instant_.outcome (which gets the
+  // storage of the interval's previous bodies back).
   void open_interval(double t);
   // Integrates the open interval until its first event (true) or t_end or a stop (false).
   bool integrate_to_event(double& t, std::vector<Crossing>& found);
@@ -57,7 +58,10 @@ void Simulation::instant(double t, const std::vector<Body>& before, const Instan
 }
 
 void Simulation::open_interval(double t) {
-  interval_.emplace(model_, std::move(instant_.outcome.bodies), armed_, neighbours_, t, y_, tol_);
+  if (interval_)
+    interval_->reopen(instant_.outcome.bodies, armed_, neighbours_, t, y_, tol_);
+  else
+    interval_.emplace(model_, std::move(instant_.outcome.bodies), armed_, neighbours_, t, y_, tol_);
   if (smooth_)
     stepper_.continue_smoothly(interval_->dynamics(), t, y_);
   else
@@ -120,7 +124,8 @@ RunResult Simulation::run() {
   double t = 0.0;
   const InstantContacts start = initial_contacts(model_, tol_, y_);
   instant(0.0, initial_bodies(model_, y_), start, nullptr);
-  const std::vector<Body>& bodies = instant_.outcome.bodies;  // the last instant's
+  // The last instant's bodies (until an interval takes them).
+  const std::vector<Body>& bodies = instant_.outcome.bodies;
   settled(0.0, bodies);
   bool opened = false;  // the last instant's bodies went to an interval
   std::vector<Crossing> found;
