@@ -446,11 +446,12 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
   atol_ = atol;
   tracks_.assign(watches.size(), WatchTrack{});
   calm_end_ = std::numeric_limits<double>::quiet_NaN();
+  body_accelerations(model, *law_, bodies, t0, y0, accelerations_);
   for (std::size_t w = 0; w < watches.size(); ++w) {
     WatchTrack& track = tracks_[w];
     track.last = evaluate(watches[w], model, bodies, t0, y0);
     if (follows_motion(watches[w].kind))
-      track.closing = closing(watches[w], model, *law_, bodies, t0, y0, true);
+      track.closing = closing(watches[w], model, bodies, accelerations_, t0, y0);
     track.armed = track.last > 0.0;
     track.largest = std::max(0.0, track.closing.value);
     track.form = linear_form(watches[w], bodies);

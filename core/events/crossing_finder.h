@@ -201,6 +201,7 @@ class CrossingFinder {
   std::vector<WatchBracket> brackets_;
   std::vector<Graze> grazes_;
   Vec scratch_, scratch_left_, at_;
+  std::vector<double> accelerations_;  // per body, at the interval's start
 };
 
 }  // namespace vibro
