@@ -103,8 +103,9 @@ InstantContacts initial_contacts(const Model& model, const EventTolerances& tol,
 // The bodies before the first instant: each pellet alone, stuck if it starts at rest.
 std::vector<Body> initial_bodies(const Model& model, const Vec& y);
 
-// Phases 2 to 5, into ws.outcome. `before` are the bodies of the interval that ends at t; y
-// (speeds) and `armed` are updated in place. `contacts` may be ws.contacts.
+// Phases 2 to 5, into ws.outcome. `before` are the bodies of the interval that ends at t (not
+// ws.outcome.bodies, which the join overwrites); y (speeds) and `armed` are updated in place.
+// `contacts` may be ws.contacts; `law` is the model's.
 void resolve_instant(const Model& model, const EventTolerances& tol, const SlidingLaw& law,
                      double t, const std::vector<Body>& before, const InstantContacts& contacts,
                      Vec& y, std::vector<bool>& armed, InstantWorkspace& ws);
