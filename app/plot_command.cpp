@@ -16,6 +16,7 @@
 #include "app/scene_options.h"
 #include "app/sweep_plot_options.h"
 #include "app/usage.h"
+#include "core/analysis/periodic_orbit.h"
 #include "io/saved_results.h"
 #include "io/scene_json.h"
 #include "io/whole_file.h"
@@ -125,7 +126,7 @@ int plot_branch(const PlotOptions& o, const Scene& scene, const json& saved) {
     print_error("--plot", "a periodic motion's branch is drawn as \"bifurcation\" (the default)");
     return 2;
   }
-  auto read = read_orbit_branch(saved);
+  auto read = read_orbit_branch(saved, multiplier_band(scene.sim));
   if (auto* e = std::get_if<FieldError>(&read)) {
     print_error(e->field, e->message);
     return 2;

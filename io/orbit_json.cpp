@@ -116,6 +116,7 @@ json orbit_json(const PeriodicOrbit& o) {
           {"residual", finite_number(o.residual)},
           {"multipliers", multipliers_json(o.multipliers)},
           {"stable", o.stable},
+          {"neutral", o.neutral},
           {"exact_jacobian", o.exact_jacobian},
           {"jacobian_note", o.jacobian_note},
           {"impacts_per_period", finite_number(o.impacts_per_period)},
@@ -131,6 +132,7 @@ json branch_json(const std::vector<BranchPoint>& points) {
                     {"state", states_json(p.state)},
                     {"multipliers", multipliers_json(p.multipliers)},
                     {"stable", p.stable},
+                    {"neutral", p.neutral},
                     {"impacts_per_period", finite_number(p.impacts_per_period)}});
   return list;
 }

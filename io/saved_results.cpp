@@ -6,6 +6,7 @@
 #include <string>
 #include <vector>
 
+#include "core/analysis/periodic_orbit.h"
 #include "io/json_fields.h"
 
 namespace vibro {
@@ -185,7 +186,7 @@ std::variant<SweepResult, FieldError> read_sweep_result(const json& j) {
   });
 }
 
-std::variant<OrbitBranch, FieldError> read_orbit_branch(const json& j) {
+std::variant<OrbitBranch, FieldError> read_orbit_branch(const json& j, double multiplier_band) {
   return caught([&] {
     if (!j.is_object() || !j.contains("branch") || !j["branch"].is_array())
       throw FieldException("branch",
@@ -200,6 +201,8 @@ std::variant<OrbitBranch, FieldError> read_orbit_branch(const json& j) {
       p.state = read_states(required(f, "state"), field + ".state");
       p.multipliers = read_multipliers(required(f, "multipliers"), field + ".multipliers");
       p.stable = f.boolean("stable", false);
+      // A branch saved before "neutral" was written is judged by its multipliers.
+      p.neutral = f.boolean("neutral", !p.stable && neutral_within(p.multipliers, multiplier_band));
       p.impacts_per_period = f.number("impacts_per_period").value_or(std::nan(""));
       branch.points.push_back(std::move(p));
     }

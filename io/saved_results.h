@@ -18,7 +18,10 @@ namespace vibro {
 // a non-finite coordinate (null) as NaN, a Lyapunov exponent of −infinity (null) as none.
 std::variant<SweepResult, FieldError> read_sweep_result(const nlohmann::json& json);
 
-// The branch, its bifurcations, whether it reached its end and why not.
-std::variant<OrbitBranch, FieldError> read_orbit_branch(const nlohmann::json& json);
+// The branch, its bifurcations, whether it reached its end and why not. The JSON says `stable`
+// only: a point not stable reads back neutral where its multipliers are (neutral_within the band
+// its stability was decided to, multiplier_band of the options of the scene that made it).
+std::variant<OrbitBranch, FieldError> read_orbit_branch(const nlohmann::json& json,
+                                                        double multiplier_band);
 
 }  // namespace vibro

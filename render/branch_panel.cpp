@@ -1,6 +1,7 @@
 // The continued branch of a periodic motion (core/analysis/orbit_continuation.h) against its
-// parameter: its state on the stroboscopic section t = kT, stable stretches solid and unstable ones
-// dashed, each bifurcation marked and named. Drawn alone, or over the brute-force bifurcation
+// parameter: its state on the stroboscopic section t = kT, stable stretches solid, unstable ones
+// dashed and neutral ones (a multiplier on the unit circle) dotted, each bifurcation marked and
+// named. Drawn alone, or over the brute-force bifurcation
 // diagram of the same scene, where the two must agree wherever the motion is stable.
 #include <algorithm>
 #include <cmath>
@@ -53,14 +54,47 @@ std::string short_number(double x) {
   return s.str();
 }
 
+// A branch point's stability as drawn: stable solid, unstable dashed, neutral dotted.
+enum class Stability { stable, unstable, neutral };
+
+Stability stability_of(const BranchPoint& p) {
+  return p.stable ? Stability::stable : p.neutral ? Stability::neutral : Stability::unstable;
+}
+
+void stroke_stretch(cairo_t* cr, const std::vector<Point>& line, Stability stability,
+                    const Style& style) {
+  const cairo_line_cap_t cap = cairo_get_line_cap(cr);
+  cairo_move_to(cr, line.front().x, line.front().y);
+  for (const Point& p : line) cairo_line_to(cr, p.x, p.y);
+  set_colour(cr, kInk);
+  const double dash[] = {style.px(6.0), style.px(4.0)}, dots[] = {style.px(1.0), style.px(3.5)};
+  switch (stability) {
+    case Stability::stable:
+      cairo_set_line_width(cr, style.px(2.2));
+      cairo_set_dash(cr, dash, 0, 0.0);
+      break;
+    case Stability::unstable:
+      cairo_set_line_width(cr, style.px(1.6));
+      cairo_set_dash(cr, dash, 2, 0.0);
+      break;
+    case Stability::neutral:  // round dots
+      cairo_set_line_width(cr, style.px(1.8));
+      cairo_set_dash(cr, dots, 2, 0.0);
+      cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+      break;
+  }
+  cairo_stroke(cr);
+  cairo_set_dash(cr, nullptr, 0, 0.0);
+  cairo_set_line_cap(cr, cap);
+}
+
 // The branch's line, one path per stretch of one stability (a segment takes the stability of its
 // far end), broken before each index of `breaks`, whose two ends get open circles.
 void draw_branch_line(cairo_t* cr, const Transform& tr, const OrbitBranch& branch, int pellet,
                       SectionCoordinate coordinate, const std::vector<std::size_t>& breaks,
                       const Style& style, std::vector<LegendEntry>& legend, Obstacles& avoid) {
   const auto& points = branch.points;
-  const double dash[] = {style.px(6.0), style.px(4.0)};
-  bool any_stable = false, any_unstable = false;
+  bool drawn[3] = {false, false, false};  // per Stability
   std::vector<Point> line, ends;
   const auto broken = [&](std::size_t k) {
     return std::find(breaks.begin(), breaks.end(), k) != breaks.end();
@@ -73,23 +107,22 @@ void draw_branch_line(cairo_t* cr, const Transform& tr, const OrbitBranch& branc
     }
     line.push_back(at);
     const bool last = k + 1 == points.size();
-    if (!last && !broken(k + 1) && points[k + 1].stable == points[k].stable && k > 0) continue;
+    const Stability stability = stability_of(points[k]);
+    if (!last && !broken(k + 1) && stability_of(points[k + 1]) == stability && k > 0) continue;
     if (line.size() >= 2) {
-      const bool stable = points[k].stable;
-      (stable ? any_stable : any_unstable) = true;
-      cairo_move_to(cr, line.front().x, line.front().y);
-      for (const Point& p : line) cairo_line_to(cr, p.x, p.y);
-      set_colour(cr, kInk);
-      cairo_set_line_width(cr, style.px(stable ? 2.2 : 1.6));
-      cairo_set_dash(cr, dash, stable ? 0 : 2, 0.0);
-      cairo_stroke(cr);
-      cairo_set_dash(cr, nullptr, 0, 0.0);
+      drawn[static_cast<int>(stability)] = true;
+      stroke_stretch(cr, line, stability, style);
       avoid.lines.push_back(line);
     }
     line = {at};
   }
-  if (any_stable) legend.push_back({"stable periodic motion", kInk, Swatch::line});
-  if (any_unstable) legend.push_back({"unstable periodic motion", kInk, Swatch::dashed_line});
+  if (drawn[static_cast<int>(Stability::stable)])
+    legend.push_back({"stable periodic motion", kInk, Swatch::line});
+  if (drawn[static_cast<int>(Stability::unstable)])
+    legend.push_back({"unstable periodic motion", kInk, Swatch::dashed_line});
+  if (drawn[static_cast<int>(Stability::neutral)])
+    legend.push_back(
+        {"neutral periodic motion (a multiplier on the unit circle)", kInk, Swatch::dotted_line});
   if (ends.empty()) return;
   draw_markers(cr, ends, MarkerShape::circle, style.px(3.5), kWhite, kInk, style.px(1.0));
   // The legend names only what shows: a break outside the plot's window is clipped away.

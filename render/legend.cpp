@@ -40,8 +40,15 @@ void draw_swatch(cairo_t* cr, const LegendEntry& e, Point left_middle, const Sty
     const double dash[] = {style.px(5.0), style.px(3.0)};
     cairo_set_dash(cr, dash, 2, 0.0);
   }
+  const cairo_line_cap_t cap = cairo_get_line_cap(cr);
+  if (e.swatch == Swatch::dotted_line) {  // round dots
+    const double dots[] = {style.px(1.0), style.px(3.0)};
+    cairo_set_dash(cr, dots, 2, 0.0);
+    cairo_set_line_cap(cr, CAIRO_LINE_CAP_ROUND);
+  }
   cairo_stroke(cr);
   cairo_set_dash(cr, nullptr, 0, 0.0);
+  cairo_set_line_cap(cr, cap);
 }
 
 // What a legend box hides: a label costs more than any length of curve. Zero: nothing.

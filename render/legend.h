@@ -13,7 +13,7 @@
 
 namespace vibro::render {
 
-enum class Swatch { line, dashed_line, marker, area };
+enum class Swatch { line, dashed_line, dotted_line, marker, area };
 
 struct LegendEntry {
   std::string label;

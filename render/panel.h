@@ -48,7 +48,7 @@ void draw_sweep_points_panel(cairo_t* cr, const PanelInput<SweepPlot>& in, const
                              const BranchData* over);
 
 // The continued branch of a periodic motion over its parameter (stable solid, unstable dashed,
-// bifurcations marked and named).
+// neutral dotted, bifurcations marked and named).
 void draw_branch_panel(cairo_t* cr, const PanelInput<BranchPlot>& in, const BranchData& branch);
 
 // The branch into a plot's transform, with its legend entries and what the legend should not

@@ -332,9 +332,12 @@ int impacts_per_return(const Point& pt) {
 }
 
 BranchPoint branch_point(const ScaledMap& map, const Point& pt) {
-  return {map.value(pt.v), map.section_state(pt.v), pt.multipliers,
+  return {map.value(pt.v),
+          map.section_state(pt.v),
+          pt.multipliers,
           inside_unit_circle(pt.multipliers, map.band()),
-          static_cast<double>(impacts_per_return(pt)) / map.periods()};
+          static_cast<double>(impacts_per_return(pt)) / map.periods(),
+          neutral_within(pt.multipliers, map.band())};
 }
 
 // Whether the located point is what its kind says: a multiplier at −1 for a period doubling, a

@@ -33,8 +33,11 @@ struct BranchPoint {
   double value = 0.0;
   std::vector<PhasePoint> state;
   std::vector<std::complex<double>> multipliers;  // largest modulus first
-  bool stable = false;
+  bool stable = false;  // every multiplier inside the unit circle (inside_unit_circle)
   double impacts_per_period = 0.0;
+  // Not stable and not unstable: a multiplier on the unit circle within the band the stability is
+  // decided to, none outside it (neutral_within). Neither stable nor neutral: unstable.
+  bool neutral = false;
 };
 
 enum class BifurcationKind { fold, period_doubling, neimark_sacker, grazing };

@@ -292,6 +292,12 @@ bool inside_unit_circle(const std::vector<std::complex<double>>& multipliers, do
                      [band](auto m) { return std::abs(m) < 1.0 - band; });
 }
 
+bool neutral_within(const std::vector<std::complex<double>>& multipliers, double band) {
+  return !inside_unit_circle(multipliers, band) &&
+         std::all_of(multipliers.begin(), multipliers.end(),
+                     [band](auto m) { return std::abs(m) <= 1.0 + band; });
+}
+
 std::optional<Vec> run_from(const Model& m, const SimOptions& options, const Vec& x, double dt,
                             std::vector<bool>* armed) {
   if (armed) *armed = armed_at_start(m);
@@ -434,6 +440,7 @@ void describe(const MapPoint& p, const OrbitSpec& spec, double band, PeriodicOrb
   std::sort(orbit.multipliers.begin(), orbit.multipliers.end(),
             [](auto a, auto b) { return std::abs(a) > std::abs(b); });
   orbit.stable = inside_unit_circle(orbit.multipliers, band);
+  orbit.neutral = neutral_within(orbit.multipliers, band);
   int impacts = 0;
   for (Event e : p.run.events) {
     if (e.kind == EventKind::limiter || e.kind == EventKind::collision) ++impacts;

@@ -81,6 +81,10 @@ std::optional<std::string> off_own_side(const Model& model, const Vec& x);
 double multiplier_band(const SimOptions& options);
 // Whether every multiplier lies inside the unit circle by more than `band`.
 bool inside_unit_circle(const std::vector<std::complex<double>>& multipliers, double band);
+// Whether the multipliers leave the motion neutral, neither stable nor unstable: none outside the
+// unit circle by more than `band`, and one within `band` of it (an area-preserving map's, or the
+// multiplier 1 of a pellet friction holds wherever it stopped).
+bool neutral_within(const std::vector<std::complex<double>>& multipliers, double band);
 
 // The residual P(x) − x with angles compared modulo 2π, and its size with speeds scaled by
 // sqrt(R/g) (rad).
@@ -99,6 +103,7 @@ struct PeriodicOrbit {
   double residual = 0.0;                          // rad, speeds scaled by sqrt(R/g)
   std::vector<std::complex<double>> multipliers;  // eigenvalues of the monodromy matrix
   bool stable = false;                            // all multipliers inside the unit circle
+  bool neutral = false;                           // not stable, not unstable: neutral_within
   bool exact_jacobian = true;
   std::string jacobian_note;
   double impacts_per_period = 0.0;  // limiter impacts and collisions

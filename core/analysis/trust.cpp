@@ -79,43 +79,109 @@ void note_leaving(const Event& e, Leaving& l) {
   for (double v : e.dphi_before) l.largest = std::max(l.largest, std::abs(v));
 }
 
-// by_instant(), and with `leaving` what the instant of each listed event leaves (in the same
-// order).
-std::vector<Event> group_instants(const std::vector<Event>& events, std::vector<Leaving>* leaving) {
-  auto order = [](const Event& x, const Event& y) {
-    return std::tie(x.kind, x.limiter, x.pellets) < std::tie(y.kind, y.limiter, y.pellets);
+// Whether an event lists a speed before and after for each of its pellets (events made by hand
+// may list none).
+bool has_speeds(const Event& e) {
+  return e.dphi_before.size() == e.pellets.size() && e.dphi_after.size() == e.pellets.size();
+}
+
+// Merges event e of one instant into `into`, the instant's event of its kind (and limiter): a
+// pellet new to it joins with the speeds e gives it, a pellet it lists already leaves at the speed
+// e leaves it with. Merged in the order listed, each pellet's speeds are those before the
+// instant's first impact on it and after its last. Speeds are kept only where every event merged
+// lists them.
+void merge_into(Event& into, const Event& e) {
+  const bool speeds = has_speeds(into) && has_speeds(e);
+  if (!speeds) {
+    into.dphi_before.clear();
+    into.dphi_after.clear();
+  }
+  for (std::size_t j = 0; j < e.pellets.size(); ++j) {
+    const auto at = std::find(into.pellets.begin(), into.pellets.end(), e.pellets[j]);
+    if (at != into.pellets.end()) {
+      if (speeds) into.dphi_after[at - into.pellets.begin()] = e.dphi_after[j];
+      continue;
+    }
+    into.pellets.push_back(e.pellets[j]);
+    if (!speeds) continue;
+    into.dphi_before.push_back(e.dphi_before[j]);
+    into.dphi_after.push_back(e.dphi_after[j]);
+  }
+}
+
+// Puts an event's pellets in index order, each with its speeds.
+void sort_pellets(Event& e) {
+  std::vector<std::size_t> order(e.pellets.size());
+  for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
+  std::sort(order.begin(), order.end(),
+            [&](std::size_t x, std::size_t y) { return e.pellets[x] < e.pellets[y]; });
+  const bool speeds = has_speeds(e);
+  Event sorted = e;
+  for (std::size_t j = 0; j < order.size(); ++j) {
+    sorted.pellets[j] = e.pellets[order[j]];
+    if (!speeds) continue;
+    sorted.dphi_before[j] = e.dphi_before[order[j]];
+    sorted.dphi_after[j] = e.dphi_after[order[j]];
+  }
+  e = std::move(sorted);
+}
+
+// The speed at which an impact closes: a limiter impact's pellet on its limiter, a collision's two
+// pellets on each other; 0 for other events and for a collision of more than two.
+double approach_speed(const Event& e) {
+  if (e.kind == EventKind::limiter && !e.dphi_before.empty()) return std::abs(e.dphi_before[0]);
+  if (e.kind == EventKind::collision && e.dphi_before.size() == 2)
+    return std::abs(e.dphi_before[0] - e.dphi_before[1]);
+  return 0.0;
+}
+
+// A run's events by_instant(), and for each listed event what the trust check reads of the events
+// it merges.
+struct Listed {
+  std::vector<Event> events;
+  std::vector<Leaving> leaving;  // what the instant of each event leaves
+  // The approach_speed of the first impact merged into each event: the one whose closing the
+  // instant was found at (when it comes first) and whose angles' round-off moves it.
+  std::vector<double> approach;
+};
+
+Listed group_instants(const std::vector<Event>& events) {
+  struct Merged {
+    Event event;
+    double approach;
   };
-  std::vector<Event> out;
-  std::vector<Leaving> left;
+  auto order = [](const Merged& x, const Merged& y) {
+    return std::tie(x.event.kind, x.event.limiter, x.event.pellets) <
+           std::tie(y.event.kind, y.event.limiter, y.event.pellets);
+  };
+  Listed out;
   for (std::size_t i = 0; i < events.size();) {
     const double t = events[i].t;
-    std::vector<Event> instant;
+    std::vector<Merged> instant;
     Leaving instant_left;
     for (; i < events.size() && events[i].t <= t + kTrustPolicy.same_instant * (1.0 + std::abs(t));
          ++i) {
       const Event& e = events[i];
       const bool merges = e.kind == EventKind::collision || e.kind == EventKind::limiter;
-      auto same = std::find_if(instant.begin(), instant.end(), [&](const Event& x) {
-        return merges && x.kind == e.kind && x.limiter == e.limiter;
+      auto same = std::find_if(instant.begin(), instant.end(), [&](const Merged& x) {
+        return merges && x.event.kind == e.kind && x.event.limiter == e.limiter;
       });
-      if (same == instant.end()) {
-        instant.push_back(e);
-        same = instant.end() - 1;
-      } else {
-        same->pellets.insert(same->pellets.end(), e.pellets.begin(), e.pellets.end());
-      }
+      if (same == instant.end())
+        instant.push_back({e, approach_speed(e)});
+      else
+        merge_into(same->event, e);
       note_leaving(e, instant_left);
-      std::vector<int>& pellets = same->pellets;
-      if (merges) {
-        std::sort(pellets.begin(), pellets.end());
-        pellets.erase(std::unique(pellets.begin(), pellets.end()), pellets.end());
-      }
     }
+    for (Merged& m : instant)
+      if (m.event.kind == EventKind::collision || m.event.kind == EventKind::limiter)
+        sort_pellets(m.event);
     std::stable_sort(instant.begin(), instant.end(), order);
-    out.insert(out.end(), instant.begin(), instant.end());
-    left.insert(left.end(), instant.size(), instant_left);
+    for (Merged& m : instant) {
+      out.events.push_back(std::move(m.event));
+      out.approach.push_back(m.approach);
+    }
+    out.leaving.insert(out.leaving.end(), instant.size(), instant_left);
   }
-  if (leaving) *leaving = std::move(left);
   return out;
 }
 
@@ -170,14 +236,10 @@ double trust_end(const std::vector<Event>& run, const std::vector<Event>& shadow
 }
 
 // The round-off of an impact's time from the round-off of the angles it is found at: a hundred
-// ulps of the angle over the speed of approach. Pellets near 7 rad meeting at 1e-3 rad/s
-// collide at times that round-off alone moves by 1e-11 s; every run agreed with its shadow to
-// 1e-14 s, a reference at rtol 1e-13 put them 7e-11 s away.
-double placement_round_off(const Event& e) {
-  double approach = 0.0;
-  if (e.kind == EventKind::limiter && !e.dphi_before.empty()) approach = std::abs(e.dphi_before[0]);
-  if (e.kind == EventKind::collision && e.dphi_before.size() == 2)
-    approach = std::abs(e.dphi_before[0] - e.dphi_before[1]);
+// ulps of the angle over the speed of approach (Listed::approach). Pellets near 7 rad meeting at
+// 1e-3 rad/s collide at times that round-off alone moves by 1e-11 s; every run agreed with its
+// shadow to 1e-14 s, a reference at rtol 1e-13 put them 7e-11 s away.
+double placement_round_off(const Event& e, double approach) {
   if (!(approach > 0.0)) return 0.0;
   return kTrustPolicy.placement_round_off_ulps * std::numeric_limits<double>::epsilon() *
          (1.0 + std::abs(e.phi)) / approach;
@@ -380,7 +442,7 @@ double largest_of_estimates(const Model& model, const Stats& st) {
 }  // namespace
 
 std::vector<Event> by_instant(const std::vector<Event>& events) {
-  return group_instants(events, nullptr);
+  return group_instants(events).events;
 }
 
 ShadowOptions check_options(const SimOptions& run) {
@@ -455,9 +517,9 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
   r.trusted_until = t_common;
   const EventTolerances tol = event_tolerances(model);
   const double time_scale = tol.time_scale;
-  std::vector<Leaving> left_a, left_b;
-  const std::vector<Event> a = group_instants(run.events, &left_a),
-                           b = group_instants(shadow.events, &left_b);
+  const Listed listed_a = group_instants(run.events), listed_b = group_instants(shadow.events);
+  const std::vector<Event>&a = listed_a.events, &b = listed_b.events;
+  const std::vector<Leaving>&left_a = listed_a.leaving, &left_b = listed_b.leaving;
   const std::size_t n = std::min(a.size(), b.size());
   const StartShifts shifts(model, shadow, budget_ms);
   std::size_t k = 0;
@@ -472,7 +534,7 @@ TrustReport compare_runs(const Model& model, const RunResult& run, const RunResu
     const double round_off =
         std::max({kTrustPolicy.time_round_off_ulps * std::numeric_limits<double>::epsilon() *
                       (time_scale + t),
-                  placement_round_off(a[k]), std::abs(shift.round_off)});
+                  placement_round_off(a[k], listed_a.approach[k]), std::abs(shift.round_off)});
     // Times that differ by more than a tenth of the time to the neighbouring events, and by
     // more than the tolerance explains (a thousand times rtol over the time scale and the time
     // run: sensitive dynamics amplified them), leave the events' order and spacing unresolved,

@@ -49,7 +49,10 @@ Model check_model(const Model& model);
 // collision of every pellet they involve (in index order), the impacts on one limiter as one, the
 // other events as listed; within an instant in a fixed order. How a cascade is listed depends on
 // which gaps its instant found closed (within the contact distance, one collision of three
-// pellets; a hair apart, thirty collisions of alternating pairs), its outcome does not.
+// pellets; a hair apart, thirty collisions of alternating pairs), its outcome does not. A merged
+// event lists one speed per pellet, in its pellets' order: dphi_before before the instant's first
+// impact on that pellet, dphi_after after its last (none where an event merged lists none); its
+// t and phi are those of the first event merged (the pellets it merges touch there).
 std::vector<Event> by_instant(const std::vector<Event>& events);
 
 struct TrustReport {

@@ -58,6 +58,10 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
 
 std::optional<Bracket> CrossingFinder::scan(WatchTrack& track, const WatchFunction& fn,
                                             const StepView& step, const Samples& s) {
+  if (track.curvature_pending) {
+    track.closing = fn.closing_at(t_start_, y_start_, true);
+    track.curvature_pending = false;
+  }
   // A watch calm() found calm over a step it judged is searched at the step's end alone.
   const std::size_t end = s.times.size() - 1;
   const bool end_alone = s.judged && track.calm;
@@ -71,6 +75,7 @@ std::optional<Bracket> CrossingFinder::scan(WatchTrack& track, const WatchFuncti
       now = at_end ? track.end_closing : fn.closing_at(s.times[k], s.states[k]);
       if (auto b = turned(track, fn, step, t_before, s.times[k], g, now)) return b;
       track.closing = now;
+      track.curvature_pending = false;
     }
     if (g > 0.0) track.armed = true;
     track.last = g;
@@ -265,11 +270,17 @@ bool formable(const Watch& w, const StepPolynomials& p) {
 bool watch_polynomial(const Watch& w, const LinearForm& form, const StepPolynomials& p,
                       std::array<double, kMaxPolynomialDegree + 1>& q, int& degree) {
   if (!formable(w, p)) return false;
-  std::fill(q.begin(), q.begin() + p.degree + 1, 0.0);  // q beyond the degree is not read
+  // Σ_j weight_j·c_j[k] summed from 0.0, as a zeroed q summed into (the first term's −0 is +0);
+  // q beyond the degree is not read.
   for (int j = 0; j < form.terms; ++j) {
     const std::span<const double> c = p.component(form.index[j]);
-    for (int k = 0; k <= p.degree; ++k) q[k] += form.weight[j] * c[k];
+    const double weight = form.weight[j];
+    if (j == 0)
+      for (int k = 0; k <= p.degree; ++k) q[k] = 0.0 + weight * c[k];
+    else
+      for (int k = 0; k <= p.degree; ++k) q[k] += weight * c[k];
   }
+  if (form.terms == 0) std::fill(q.begin(), q.begin() + p.degree + 1, 0.0);
   q[0] += form.constant - (w.deflation != 0 ? w.g0 : 0.0);
   degree = p.degree;
   if (w.deflation == 0 || w.t0 != p.t0) return true;
@@ -321,16 +332,21 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
   // polynomial is its value, and its derivative the rate closing() gives (a gap's speeds' or a
   // speed's acceleration), without the state.
   if (fn.watch.deflation == 0) {
-    track.last = polynomial_value(poly, h);
-    if (follows_motion(fn.watch.kind)) {
-      track.closing = Closing{track.last, polynomial_rate(poly, h), 0.0};
-      track.largest = std::max(track.largest, track.closing.value);
+    if (!follows_motion(fn.watch.kind)) {
+      track.last = polynomial_value(poly, h);
+      return std::nullopt;
     }
+    const ValueAndRate end = polynomial_value_and_rate(poly, h);
+    track.last = end.value;
+    track.closing = Closing{end.value, end.rate, 0.0};
+    track.curvature_pending = false;
+    track.largest = std::max(track.largest, track.closing.value);
     return std::nullopt;
   }
   track.last = fn.value(step.t(), y_end);
   if (follows_motion(fn.watch.kind)) {
     track.closing = fn.closing_at(step.t(), y_end);
+    track.curvature_pending = false;
     track.largest = std::max(track.largest, track.closing.value);
   }
   return std::nullopt;
@@ -445,13 +461,15 @@ void CrossingFinder::start(const std::vector<Watch>& watches, const Model& model
   rtol_ = rtol;
   atol_ = atol;
   tracks_.assign(watches.size(), WatchTrack{});
+  y_start_ = y0;
   calm_end_ = std::numeric_limits<double>::quiet_NaN();
-  body_accelerations(model, *law_, bodies, t0, y0, accelerations_);
   for (std::size_t w = 0; w < watches.size(); ++w) {
     WatchTrack& track = tracks_[w];
     track.last = evaluate(watches[w], model, bodies, t0, y0);
-    if (follows_motion(watches[w].kind))
-      track.closing = closing(watches[w], model, bodies, accelerations_, t0, y0);
+    if (follows_motion(watches[w].kind)) {
+      track.closing = closing(watches[w], model, *law_, bodies, t0, y0);
+      track.curvature_pending = true;
+    }
     track.armed = track.last > 0.0;
     track.largest = std::max(0.0, track.closing.value);
     track.form = linear_form(watches[w], bodies);

@@ -58,6 +58,10 @@ struct WatchTrack {
   Closing end_closing;
   // The watch as a linear function of the state (linear_form), fixed for the interval.
   std::optional<LinearForm> form;
+  // `closing` is the interval start's without its curvature, which costs the bodies'
+  // accelerations and is read only by a scan's first prediction (CrossingFinder::scan takes it
+  // then); a step served by polynomials replaces it unread.
+  bool curvature_pending = false;
 };
 
 // One watch of the interval with what its value depends on: the function the phases search.
@@ -201,7 +205,7 @@ class CrossingFinder {
   std::vector<WatchBracket> brackets_;
   std::vector<Graze> grazes_;
   Vec scratch_, scratch_left_, at_;
-  std::vector<double> accelerations_;  // per body, at the interval's start
+  Vec y_start_;  // the state at the interval's start, for a pending curvature
 };
 
 }  // namespace vibro

@@ -60,6 +60,25 @@ void bernstein(std::span<const double> c, double h, Coefficients& b) {
     for (int i = d; i >= r; --i) b[i] += b[i - 1];
 }
 
+// Whether every Bernstein coefficient of p (c[0..d]) on [0, h] lies above `level`: bernstein()'s
+// sums, each coefficient judged as soon as it is final (b[r − 1] after Pascal's round r − 1), so
+// a polynomial that dips stops at its first low coefficient with the same verdict.
+bool bernstein_above(std::span<const double> c, double h, double level) {
+  const int d = static_cast<int>(c.size()) - 1;
+  Coefficients b;
+  double power = 1.0, binomial = 1.0;  // h^k, C(d, k)
+  for (int k = 0; k <= d; ++k) {
+    b[k] = c[k] * power / binomial;
+    power *= h;
+    binomial = binomial * (d - k) / (k + 1);
+  }
+  for (int r = 1; r <= d; ++r) {
+    if (!(b[r - 1] > level)) return false;
+    for (int i = d; i >= r; --i) b[i] += b[i - 1];
+  }
+  return b[d] > level;
+}
+
 // The sign changes of b[0..d], zeros skipped.
 int sign_changes(const Coefficients& b, int d) {
   int changes = 0, last = 0;
@@ -69,6 +88,18 @@ int sign_changes(const Coefficients& b, int d) {
     if (sign != 0) last = sign;
   }
   return changes;
+}
+
+// Whether |c[0]| exceeds Σ_{k≥1} |c[k]|·h^k by far more than round-off: then every Bernstein
+// coefficient of p on [0, h] has c[0]'s sign and lies farther from zero than bernstein()'s
+// round-off (each is c[0] plus a combination of the c[k]·h^k with weights in [0, 1], computed
+// to a few d·ε of |c[0]| + Σ|c[k]|·h^k), so roots_inside would find no sign change: it answers
+// 0 at the cost of one pass instead of the O(d²) coefficients.
+bool clear_of_zero(std::span<const double> c, double h) {
+  double spread = 0.0;
+  for (std::size_t k = c.size() - 1; k >= 1; --k) spread = (spread + std::abs(c[k])) * h;
+  const double c0 = std::abs(c[0]);
+  return c0 - spread > 1e-12 * (c0 + spread);
 }
 
 // The real roots of p (c[0..d]) strictly inside (0, h), increasing; returns how many. Where p's
@@ -81,6 +112,7 @@ int roots_inside(std::span<const double> c, double h, double* roots) {
   int d = static_cast<int>(c.size()) - 1;
   while (d > 0 && c[d] == 0.0) --d;
   if (d <= 0) return 0;
+  if (clear_of_zero(c.first(d + 1), h)) return 0;
   {
     Coefficients b{};
     bernstein(c.first(d + 1), h, b);
@@ -95,9 +127,9 @@ int roots_inside(std::span<const double> c, double h, double* roots) {
       }
     }
   }
-  Coefficients derivative{};
+  Coefficients derivative;
   for (int k = 1; k <= d; ++k) derivative[k - 1] = k * c[k];
-  std::array<double, kMaxPolynomialDegree> turns{};
+  std::array<double, kMaxPolynomialDegree> turns;
   const int m = roots_inside(std::span<const double>(derivative.data(), d), h, turns.data());
   const std::span<const double> p = c.first(d + 1);
   int n = 0;
@@ -157,6 +189,18 @@ double polynomial_rate(std::span<const double> c, double tau) {
   return r;
 }
 
+ValueAndRate polynomial_value_and_rate(std::span<const double> c, double tau) {
+  // polynomial_value's steps p ← p·τ + c[k] and polynomial_rate's r ← r·τ + k·c[k], from the
+  // top down, side by side in one pass.
+  double p = 0.0, r = 0.0;
+  for (std::size_t k = c.size(); k-- > 1;) {
+    p = p * tau + c[k];
+    r = r * tau + static_cast<double>(k) * c[k];
+  }
+  if (!c.empty()) p = p * tau + c[0];
+  return {p, r};
+}
+
 bool stays_above(std::span<const double> c, double h, double level) {
   const int d = static_cast<int>(c.size()) - 1;
   if (d < 0 || d > kMaxPolynomialDegree) return false;
@@ -164,11 +208,7 @@ bool stays_above(std::span<const double> c, double h, double level) {
   for (int k = d; k >= 1; --k) spread = (spread + std::abs(c[k])) * h;
   if (c[0] - spread > level) return true;
   if (quadratic_stays_above(c, h, level)) return true;
-  Coefficients b{};
-  bernstein(c, h, b);
-  for (int i = 0; i <= d; ++i)
-    if (!(b[i] > level)) return false;
-  return true;
+  return bernstein_above(c, h, level);
 }
 
 std::optional<PolynomialBracket> first_polynomial_crossing(std::span<const double> c, double h,
@@ -178,11 +218,13 @@ std::optional<PolynomialBracket> first_polynomial_crossing(std::span<const doubl
   const int d = static_cast<int>(c.size()) - 1;
   Coefficients derivative{}, second{};
   for (int k = 1; k <= d; ++k) derivative[k - 1] = k * c[k];
-  for (int k = 2; k <= d; ++k) second[k - 2] = k * (k - 1) * c[k];
   const auto dp = std::span<const double>(derivative.data(), std::max(d, 1));
   const auto ddp = std::span<const double>(second.data(), std::max(d - 1, 1));
-  std::array<double, kMaxPolynomialDegree> turns{};
+  std::array<double, kMaxPolynomialDegree> turns;
   const int m = roots_inside(dp, h, turns.data());
+  // The curvature is read at the turning points only.
+  if (m > 0)
+    for (int k = 2; k <= d; ++k) second[k - 2] = k * (k - 1) * c[k];
   double a = 0.0, pa = polynomial_value(c, 0.0);
   if (!(pa > 0.0)) return std::nullopt;
   for (int i = 0; i <= m; ++i) {

@@ -17,6 +17,12 @@ double polynomial_value(std::span<const double> c, double tau);
 // p'(τ), by Horner's rule on the derivative's coefficients k·c[k].
 double polynomial_rate(std::span<const double> c, double tau);
 
+// Both, in one pass: the same values to the bit.
+struct ValueAndRate {
+  double value = 0.0, rate = 0.0;
+};
+ValueAndRate polynomial_value_and_rate(std::span<const double> c, double tau);
+
 // Whether p stays above `level` over [0, h], proven by a bound: c[0] − Σ_{k≥1} |c[k]|·h^k
 // first, then its quadratic part's least value on [0, h] less Σ_{k≥3} |c[k]|·h^k, then the least
 // of p's Bernstein coefficients on [0, h] (p lies in their convex hull).

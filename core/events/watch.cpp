@@ -121,51 +121,29 @@ const Body& body_of(const std::vector<Body>& bodies, int i) {
 
 }  // namespace
 
-namespace {
-
-// closing() with each body's acceleration from accel(body).
-template <class Acceleration>
-Closing closing_from(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
-                     const Vec& y, bool with_curvature, Acceleration accel) {
+Closing closing(const Watch& w, const Model& model, const SlidingLaw& law,
+                const std::vector<Body>& bodies, double t, const Vec& y, bool with_curvature) {
   Closing c;
   c.value = raw_value(w, model, bodies, t, y) - (w.deflation != 0 ? w.g0 : 0.0);
   switch (w.kind) {
     case WatchKind::gap:
       c.rate = y[dphi_index(w.other)] - y[dphi_index(w.pellet)];
       if (with_curvature)
-        c.curvature = accel(body_of(bodies, w.other)) - accel(body_of(bodies, w.pellet));
+        c.curvature = acceleration_of(model, law, body_of(bodies, w.other), t, y) -
+                      acceleration_of(model, law, body_of(bodies, w.pellet), t, y);
       break;
     case WatchKind::limiter:
       c.rate = -bodies[w.body].s * y[dphi_index(w.pellet)];
-      if (with_curvature) c.curvature = -bodies[w.body].s * accel(bodies[w.body]);
+      if (with_curvature)
+        c.curvature = -bodies[w.body].s * acceleration_of(model, law, bodies[w.body], t, y);
       break;
     case WatchKind::reversal:
-      c.rate = bodies[w.body].s * accel(bodies[w.body]);
+      c.rate = bodies[w.body].s * acceleration_of(model, law, bodies[w.body], t, y);
       break;
     default:
       break;
   }
   return c;
-}
-
-}  // namespace
-
-Closing closing(const Watch& w, const Model& model, const SlidingLaw& law,
-                const std::vector<Body>& bodies, double t, const Vec& y, bool with_curvature) {
-  return closing_from(w, model, bodies, t, y, with_curvature,
-                      [&](const Body& b) { return acceleration_of(model, law, b, t, y); });
-}
-
-void body_accelerations(const Model& model, const SlidingLaw& law, const std::vector<Body>& bodies,
-                        double t, const Vec& y, std::vector<double>& accelerations) {
-  accelerations.clear();
-  for (const Body& b : bodies) accelerations.push_back(acceleration_of(model, law, b, t, y));
-}
-
-Closing closing(const Watch& w, const Model& model, const std::vector<Body>& bodies,
-                std::span<const double> accelerations, double t, const Vec& y) {
-  return closing_from(w, model, bodies, t, y, true,
-                      [&](const Body& b) { return accelerations[&b - bodies.data()]; });
 }
 
 bool depends_on_time_alone(const Watch& w, const Model& model, const std::vector<Body>& bodies) {

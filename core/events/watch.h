@@ -4,7 +4,6 @@
 #pragma once
 
 #include <optional>
-#include <span>
 #include <vector>
 
 #include "core/events/event.h"
@@ -74,13 +73,6 @@ struct Closing {
 Closing closing(const Watch& w, const Model& model, const SlidingLaw& law,
                 const std::vector<Body>& bodies, double t, const Vec& y,
                 bool with_curvature = false);
-// Each body's acceleration at (t, y) as closing() takes it (the sliding law's; a held body's 0),
-// computed once for all the watches of an interval's start; and closing() with its curvature
-// from them, the same values.
-void body_accelerations(const Model& model, const SlidingLaw& law, const std::vector<Body>& bodies,
-                        double t, const Vec& y, std::vector<double>& accelerations);
-Closing closing(const Watch& w, const Model& model, const std::vector<Body>& bodies,
-                std::span<const double> accelerations, double t, const Vec& y);
 // The watch's own value, not deflated.
 double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                  const Vec& y);

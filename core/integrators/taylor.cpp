@@ -34,6 +34,7 @@ void Taylor::start(const OdeSystem& sys, double t0, const Vec& y0) {
   coefficients_.resize(static_cast<std::size_t>(n_) * (order_ + 1));
   poly_ = {t0, order_, coefficients_};
   stepped_ = false;
+  dense_kept_ = false;
 }
 
 namespace {
@@ -100,6 +101,7 @@ double Taylor::step_size() {
 
 StepStatus Taylor::step(double t_limit) {
   stepped_ = false;  // the series is overwritten: until the step is taken, dense() is y()
+  dense_kept_ = false;
   if (!sys_->taylor_coefficients(t_, y_, order_, coefficients_)) return StepStatus::solver_failure;
   ++stats_.rhs_evals;
   if (!finite_coefficients(coefficients_)) return StepStatus::non_finite;
@@ -125,11 +127,18 @@ void Taylor::dense(double t, Vec& out) const {
     out = y_;
     return;
   }
+  if (dense_kept_ && t == dense_t_) {
+    out = dense_y_;
+    return;
+  }
   out.resize(n_);
   const double tau = t - t_prev_;
   const std::size_t n1 = static_cast<std::size_t>(order_) + 1;
   for (int i = 0; i < n_; ++i)
     out[i] = horner(std::span<const double>(coefficients_).subspan(i * n1, n1), tau);
+  dense_y_ = out;
+  dense_t_ = t;
+  dense_kept_ = true;
 }
 
 }  // namespace vibro::integrators

@@ -58,7 +58,12 @@ class Taylor final : public Stepper {
   double t_ = 0.0, t_prev_ = 0.0;
   bool stepped_ = false;  // a step since start(): the polynomials describe [t_prev_, t_]
   Vec y_, y_next_;
-  Vec scale_;                         // step_size's tolerance scale per component
+  Vec scale_;  // step_size's tolerance scale per component
+  // The last dense state of this step and its time: an event's instant is asked for several times
+  // (the recheck, the grazes, the driver, the polisher), each the same evaluation.
+  mutable double dense_t_ = 0.0;
+  mutable bool dense_kept_ = false;
+  mutable Vec dense_y_;
   std::vector<double> coefficients_;  // the last step's series, (order_ + 1) per component
   StepPolynomials poly_;
   StepperStats stats_;

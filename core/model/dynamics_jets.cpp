@@ -31,7 +31,7 @@ typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
 // Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, from
 // ju[j] = {j·u[j], j·u[j]} (j = 1..k) and CS up to k − 1: integrators::sin_cos_coefficient's
 // sums, term for term and in the same order, both in one pass.
-void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
+[[gnu::always_inline]] inline void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
   Pair sc = {0.0, 0.0};  // {Σ j·u[j]·C[k−j], Σ j·u[j]·S[k−j]}
   int j = 1;
   for (; j < k; j += 2) {  // two terms per pass, added one after the other
@@ -45,7 +45,7 @@ void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
 // Coefficients k and k + 1 of the product v·g, from vv[j] = {v[j], v[j]}: each summed over j
 // ascending as integrators::product_coefficient does, in the two lanes of one pass (lane 1's
 // last term, j = k + 1, added after it).
-Pair product_pair(const Pair* vv, const double* g, int k) {
+[[gnu::always_inline]] inline Pair product_pair(const Pair* vv, const double* g, int k) {
   auto g_pair = [&](int j) {  // {g[k − j], g[k − j + 1]}, copied out of the doubles
     Pair x;
     std::memcpy(&x, g + (k - j), sizeof x);
@@ -62,16 +62,189 @@ Pair product_pair(const Pair* vv, const double* g, int k) {
   return sum;
 }
 
+// What one body's jets read: the model's constants, the body's, and where its series go.
+struct BodyJets {
+  const Model& model;
+  const Body& body;
+  const SlidingLaw& law;
+  double M, damping;  // the body's mass and damping
+  int side;           // its side of the bilateral law's normal force
+  double t0;
+  int order;
+  double* state;    // the components' series, (order + 1) each
+  double* scratch;  // kJetSeries·(order + 1) doubles
+};
+
+// The series one body's jets work in, laid out in BodyJets::scratch (kJetSeries·n1 doubles).
+struct JetSeries {
+  Pair* CS;    // {cos u, sin u}, n1 pairs
+  Pair* ju;    // {j·u[j], j·u[j]}, n1 pairs
+  double* Q;   // v²
+  double* F;   // the body's force
+  double* N;   // the normal force
+  double* Fi;  // one member's force
+  double* G;   // that force less friction's
+  Pair* vv;    // {v[j], v[j]}, n1 pairs
+};
+
+JetSeries jet_series(double* scratch, std::size_t n1) {
+  return {reinterpret_cast<Pair*>(scratch),
+          reinterpret_cast<Pair*>(scratch + 2 * n1),
+          scratch + 4 * n1,
+          scratch + 5 * n1,
+          scratch + 6 * n1,
+          scratch + 7 * n1,
+          scratch + 8 * n1,
+          reinterpret_cast<Pair*>(scratch + 9 * n1)};
+}
+
+// Adds pellet i's force F0 cos(Ωt + ψ) as a series in τ = t − t0 to into[0..order].
+void add_force(const BodyJets& in, int i, double* into) {
+  const Forcing& f = in.model.pellets[i].force;
+  if (f.active())
+    add_cosine_series(f.F0, f.Omega, f.Omega * in.t0 + f.psi, in.order,
+                      std::span<double>(into, static_cast<std::size_t>(in.order) + 1));
+}
+
+// Coefficient k of v², the square the motion reads: 0 without friction or a damper (kSquares),
+// where v² enters neither the motion nor the work.
+template <bool kSquares>
+double square(const JetSeries& x, int k) {
+  if constexpr (kSquares)
+    return x.Q[k];
+  else
+    return 0.0;
+}
+
+// The jets of one sliding body's motion: its leader's angle u and speed v give every member's
+// acceleration (as SlidingLaw::acceleration, its damping C·v last); coefficient k + 1 of each
+// state component is coefficient k of its rate over k + 1. Leaves v², the normal force and v in
+// pairs in x for the work (member_work_jets).
+template <bool kFriction, bool kSquares, bool kAlone>
+void motion_jets(const BodyJets& in, const JetSeries& x) {
+  const Body& body = in.body;
+  const int order = in.order;
+  const std::size_t n1 = static_cast<std::size_t>(order) + 1;
+  auto component = [&](int i) { return in.state + static_cast<std::size_t>(i) * n1; };
+  const int L = body.leader();
+  const double* const u = component(phi_index(L));
+  const double* const v = component(dphi_index(L));
+  std::fill(x.F, x.F + n1, 0.0);
+  if constexpr (kAlone)
+    add_force(in, L, x.F);
+  else
+    for (int i : body.members) add_force(in, i, x.F);
+  const SlidingLaw& law = in.law;
+  const double R = law.R, gR = law.gR, mu = law.mu, M = in.M, damping = in.damping;
+  const int s = body.s, side = in.side;
+  const bool paper = law.paper;
+  const double sigma = paper ? 1.0 : side;  // n = R·σ·(v² + gR·cos u)
+  x.CS[0] = Pair{std::cos(u[0]), std::sin(u[0])};
+  double* const phi = component(phi_index(L));
+  double* const dphi = component(dphi_index(L));
+  for (int k = 0; k < order; ++k) {
+    if (k > 0) {
+      const double juk = k * u[k];
+      x.ju[k] = Pair{juk, juk};
+      sin_cos_pair(x.ju, x.CS, k);
+    }
+    x.vv[k] = Pair{v[k], v[k]};
+    const double Sk = x.CS[k][1], Ck = x.CS[k][0];
+    if constexpr (kSquares) x.Q[k] = product_coefficient({v, n1}, {v, n1}, k);
+    const double v2 = square<kSquares>(x, k);
+    double acc = paper ? x.F[k] / (M * R) - s * mu * v2 - gR * (Sk + s * mu * Ck)
+                       : x.F[k] / (M * R) - gR * Sk - s * mu * side * (v2 + gR * Ck);
+    acc -= damping * v[k];
+    if constexpr (kFriction) x.N[k] = R * sigma * (x.Q[k] + gR * Ck);
+    if constexpr (kAlone) {
+      phi[k + 1] = dphi[k] / (k + 1);
+      dphi[k + 1] = acc / (k + 1);
+    } else {
+      for (int i : body.members) {
+        component(phi_index(i))[k + 1] = component(dphi_index(i))[k] / (k + 1);
+        component(dphi_index(i))[k + 1] = acc / (k + 1);
+      }
+    }
+  }
+}
+
+// The jets of member i's work: its rate R·v·(F_i − m_i·s·μ·n) − m_i·R²·c_i·v², from the series
+// motion_jets left in x; coefficient k + 1 is coefficient k of the rate over k + 1.
+template <bool kFriction, bool kSquares, bool kAlone>
+void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
+  const int order = in.order;
+  const std::size_t n1 = static_cast<std::size_t>(order) + 1;
+  if constexpr (!kAlone) {
+    std::fill(x.Fi, x.Fi + n1, 0.0);
+    add_force(in, i, x.Fi);
+  }
+  const double* const Fm = kAlone ? x.F : x.Fi;
+  const Pellet& p = in.model.pellets[i];
+  const double R = in.law.R, mu = in.law.mu;
+  const double ms_mu = p.m * in.body.s * mu, damper = p.m * R * R * p.c;  // damper·v²: its power
+  // Without friction n is 0 and G is the force itself: Fm[k] − (±0) is Fm[k] (never −0).
+  const double* g = Fm;
+  if constexpr (kFriction) {
+    for (int k = 0; k < order; ++k) x.G[k] = Fm[k] - ms_mu * x.N[k];
+    g = x.G;
+  }
+  double* const w = in.state + static_cast<std::size_t>(work_index(i)) * n1;
+  // Without v² (no friction, no damper) damper·Q[k] is a zero that changes nothing.
+  auto rate = [&](int k, double product) {
+    if constexpr (kSquares)
+      return (R * product - damper * x.Q[k]) / (k + 1);
+    else
+      return R * product / (k + 1);
+  };
+  int k = 0;
+  for (; k + 1 < order; k += 2) {
+    const Pair product = product_pair(x.vv, g, k);
+    w[k + 1] = rate(k, product[0]);
+    w[k + 2] = rate(k + 1, product[1]);
+  }
+  const double* const v = in.state + static_cast<std::size_t>(dphi_index(in.body.leader())) * n1;
+  if (k < order) w[k + 1] = rate(k, product_coefficient({v, n1}, {g, n1}, k));
+}
+
+// The jets of one sliding body (SegmentDynamics::body_jets), specialised by what the model has,
+// decided once per call: kFriction (μ ≠ 0: v² and the normal force enter the motion and the
+// work), kSquares (v² is needed: friction or a damper's power), kAlone (one member, whose force
+// is the body's). Every variant does the general case's operations in its order; a series the
+// general case keeps at zero is read as the literal 0.0, the same value.
+template <bool kFriction, bool kSquares, bool kAlone>
+void sliding_jets(const BodyJets& in) {
+  static_assert(kSquares || !kFriction);
+  const JetSeries x = jet_series(in.scratch, static_cast<std::size_t>(in.order) + 1);
+  motion_jets<kFriction, kSquares, kAlone>(in, x);
+  if constexpr (kAlone)
+    member_work_jets<kFriction, kSquares, kAlone>(in, x, in.body.leader());
+  else
+    for (int i : in.body.members) member_work_jets<kFriction, kSquares, kAlone>(in, x, i);
+}
+
+template <bool kFriction, bool kSquares>
+void sliding_jets_of(const BodyJets& in) {
+  if (in.body.members.size() == 1)
+    sliding_jets<kFriction, kSquares, true>(in);
+  else
+    sliding_jets<kFriction, kSquares, false>(in);
+}
+
 }  // namespace
 
 bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
                                           std::span<double> out) const {
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
-  for (Eigen::Index i = 0; i < y0.size(); ++i) {
-    const std::span<double> c = out.subspan(static_cast<std::size_t>(i) * n1, n1);
-    c[0] = y0[i];
-    std::fill(c.begin() + 1, c.end(), 0.0);  // a held body's state stays
-  }
+  for (Eigen::Index i = 0; i < y0.size(); ++i) out[static_cast<std::size_t>(i) * n1] = y0[i];
+  // A held body's state stays; a sliding body's jets write every coefficient past the first of
+  // its members' components.
+  for (const Body& body : bodies_)
+    if (body.mode != Mode::sliding)
+      for (int p : body.members)
+        for (int i = phi_index(p); i <= work_index(p); ++i) {
+          const auto c = out.begin() + static_cast<std::ptrdiff_t>(i * n1);
+          std::fill(c + 1, c + static_cast<std::ptrdiff_t>(n1), 0.0);
+        }
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     if (bodies_[b].mode == Mode::sliding) body_jets(b, t0, order, out);
   return true;
@@ -82,102 +255,26 @@ bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
 // R·v·(F_i − m_i·s·μ·n) − m_i·R²·c_i·v².
 // Coefficient k + 1 of each state component is coefficient k of its rate over k + 1.
 // Each series is computed by the same operations in the same order as the right-hand side's
-// terms; the shortcuts below (a series that is zero, a term that is zero) change no bit.
+// terms; the shortcuts (a series that is zero, a term that is zero) change no bit.
 void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<double> out) const {
   const Body& body = bodies_[b];
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
-  double* const state = out.data();
-  auto component = [&](int i) { return state + static_cast<std::size_t>(i) * n1; };
-  const int L = body.leader();
-  const double* const u = component(phi_index(L));
-  const double* const v = component(dphi_index(L));
   std::array<double, kJetSeries * kStackTerms> stack;
   double* scratch = stack.data();
   if (n1 > kStackTerms) {
     jet_scratch_.resize(kJetSeries * n1);
     scratch = jet_scratch_.data();
   }
-  Pair* const CS = reinterpret_cast<Pair*>(scratch);  // n1 pairs
-  Pair* const ju = reinterpret_cast<Pair*>(scratch + 2 * n1);
-  double* const Q = scratch + 4 * n1;
-  double* const F = scratch + 5 * n1;
-  double* const N = scratch + 6 * n1;
-  double* const Fi = scratch + 7 * n1;
-  double* const G = scratch + 8 * n1;
-  Pair* const vv = reinterpret_cast<Pair*>(scratch + 9 * n1);
-  auto add_force = [&](int i, double* into) {
-    const Forcing& f = model_.pellets[i].force;
-    if (f.active())
-      add_cosine_series(f.F0, f.Omega, f.Omega * t0 + f.psi, order, std::span<double>(into, n1));
-  };
-  std::fill(F, F + n1, 0.0);
-  for (int i : body.members) add_force(i, F);
-  const double R = law_.R, gR = law_.gR, mu = law_.mu, M = mass_[b], damping = damping_[b];
-  const int s = body.s, side = normal_side_[b];
-  const double sigma = law_.paper ? 1.0 : side;  // n = R·σ·(v² + gR·cos u)
-  // Without friction v² and n enter neither the motion nor the work, unless a damper's power
-  // needs v²: they stay 0.
+  const BodyJets in{model_,          body, law_,  mass_[b],   damping_[b],
+                    normal_side_[b], t0,   order, out.data(), scratch};
   const bool damped = std::any_of(body.members.begin(), body.members.end(),
                                   [&](int i) { return model_.pellets[i].c != 0.0; });
-  const bool squares = mu != 0.0 || damped;
-  if (!squares) std::fill(Q, Q + n1, 0.0);
-  if (mu == 0.0) std::fill(N, N + n1, 0.0);
-  const double S0 = std::sin(u[0]), C0 = std::cos(u[0]);
-  CS[0] = Pair{C0, S0};
-  const bool alone = body.members.size() == 1;  // its force is the body's
-  double* const phi = component(phi_index(L));
-  double* const dphi = component(dphi_index(L));
-  for (int k = 0; k < order; ++k) {
-    if (k > 0) {
-      const double juk = k * u[k];
-      ju[k] = Pair{juk, juk};
-      sin_cos_pair(ju, CS, k);
-    }
-    const double Sk = CS[k][1], Ck = CS[k][0];
-    if (squares) Q[k] = product_coefficient({v, n1}, {v, n1}, k);
-    double acc = law_.paper ? F[k] / (M * R) - s * mu * Q[k] - gR * (Sk + s * mu * Ck)
-                            : F[k] / (M * R) - gR * Sk - s * mu * side * (Q[k] + gR * Ck);
-    acc -= damping * v[k];
-    if (mu != 0.0) N[k] = R * sigma * (Q[k] + gR * Ck);
-    if (alone) {
-      phi[k + 1] = dphi[k] / (k + 1);
-      dphi[k + 1] = acc / (k + 1);
-      continue;
-    }
-    for (int i : body.members) {
-      component(phi_index(i))[k + 1] = component(dphi_index(i))[k] / (k + 1);
-      component(dphi_index(i))[k + 1] = acc / (k + 1);
-    }
-  }
-  for (int j = 0; j < order; ++j) vv[j] = Pair{v[j], v[j]};
-  for (int i : body.members) {
-    if (!alone) {
-      std::fill(Fi, Fi + n1, 0.0);
-      add_force(i, Fi);
-    }
-    const double* const Fm = alone ? F : Fi;
-    const Pellet& p = model_.pellets[i];
-    const double ms_mu = p.m * s * mu, damper = p.m * R * R * p.c;  // damper·v² is its power
-    // Without friction n is 0 and G is the force itself: Fm[k] − (±0) is Fm[k] (never −0).
-    const double* g = Fm;
-    if (mu != 0.0) {
-      for (int k = 0; k < order; ++k) G[k] = Fm[k] - ms_mu * N[k];
-      g = G;
-    }
-    double* const w = component(work_index(i));
-    // Coefficient k of the work's rate over k + 1. Without v² (no friction, no damper)
-    // damper·Q[k] is a zero that changes nothing.
-    auto rate = [&](int k, double product) {
-      return squares ? (R * product - damper * Q[k]) / (k + 1) : R * product / (k + 1);
-    };
-    int k = 0;
-    for (; k + 1 < order; k += 2) {
-      const Pair product = product_pair(vv, g, k);
-      w[k + 1] = rate(k, product[0]);
-      w[k + 2] = rate(k + 1, product[1]);
-    }
-    if (k < order) w[k + 1] = rate(k, product_coefficient({v, n1}, {g, n1}, k));
-  }
+  if (law_.mu != 0.0)
+    sliding_jets_of<true, true>(in);
+  else if (damped)
+    sliding_jets_of<false, true>(in);
+  else
+    sliding_jets_of<false, false>(in);
 }
 
 }  // namespace vibro

@@ -304,6 +304,20 @@ TEST(PolynomialRoots, ABoundProvesAStepClearOfZeroWithoutIsolatingRoots) {
   EXPECT_FALSE(stays_above(std::vector<double>{0.21, -1.0, 1.0}, 1.0, 0.0));  // two roots
 }
 
+// The end value and rate the finder takes in one pass are polynomial_value's and
+// polynomial_rate's, to the bit, at every length and either parity.
+TEST(PolynomialRoots, ValueAndRateInOnePassAreTheSeparateOnesBitForBit) {
+  std::vector<double> c;
+  for (int n = 0; n <= 20; ++n) {
+    for (double tau : {0.0, 1e-3, 0.37, -0.2, 1.7}) {
+      const ValueAndRate both = polynomial_value_and_rate(c, tau);
+      EXPECT_EQ(both.value, polynomial_value(c, tau)) << "n = " << n << ", tau = " << tau;
+      EXPECT_EQ(both.rate, polynomial_rate(c, tau)) << "n = " << n << ", tau = " << tau;
+    }
+    c.push_back(std::sin(1.3 * n + 0.2) / (1.0 + n));
+  }
+}
+
 TEST(PolynomialRoots, ATouchOfZeroIsAMinimumNotACrossing) {
   const std::vector<double> c = {0.25 + 1e-13, -1.0, 1.0};  // (τ − 0.5)² + 1e-13
   PolynomialMinima minima;

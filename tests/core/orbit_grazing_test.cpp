@@ -80,6 +80,7 @@ TEST(OrbitGrazing, AnAreaPreservingBranchStaysNeutralUpToItsGrazing) {
     if (p.impacts_per_period != 0.0) continue;
     ++neutral;
     EXPECT_FALSE(p.stable) << "at Ω = " << p.value;
+    EXPECT_TRUE(p.neutral) << "at Ω = " << p.value;
     for (const auto& mu : p.multipliers) EXPECT_NEAR(std::abs(mu), 1.0, 1e-10);
   }
   EXPECT_GE(neutral, 5);
@@ -87,6 +88,31 @@ TEST(OrbitGrazing, AnAreaPreservingBranchStaysNeutralUpToItsGrazing) {
   const std::vector<double> g = grazings(b);
   ASSERT_FALSE(g.empty()) << b.message;
   EXPECT_NEAR(g.front(), grazing, 1e-5);
+}
+
+// Far from the stop the forced pendulum's small swing is frictionless and never strikes: its map
+// keeps areas, its multipliers lie on the unit circle, and the motion is neutral, not unstable.
+TEST(OrbitGrazing, AFrictionlessSwingThatNeverStrikesIsNeutral) {
+  const Model model =
+      stop_scene(0.01035936, 15.06011952143807, M_PI / 2, 0.0, 0.01506011952143807, 1.0, 0.7);
+  OrbitSpec spec;
+  spec.transient = 0;
+  spec.guess = {{0.0, 0.01506011952143807}};
+  const PeriodicOrbit orbit = find_periodic_orbit(model, tight(), spec);
+  ASSERT_TRUE(orbit.converged) << orbit.message;
+  EXPECT_EQ(orbit.impacts_per_period, 0.0);
+  EXPECT_FALSE(orbit.stable);
+  EXPECT_TRUE(orbit.neutral);
+  ContinuationSpec c;
+  c.parameter = "model.pellets[0].Omega";
+  c.to = 16.0;
+  c.max_points = 12;
+  const OrbitBranch b = continue_orbit(model, tight(), orbit, c);
+  ASSERT_GE(b.points.size(), 3u) << b.message;
+  for (const BranchPoint& p : b.points) {
+    EXPECT_FALSE(p.stable) << "at Ω = " << p.value;
+    EXPECT_TRUE(p.neutral) << "at Ω = " << p.value;
+  }
 }
 
 // Reproducer 2: the same scene with the section at phase π, where the swing's far end lies on

@@ -416,6 +416,44 @@ TEST(TrustPolicy, EventsWithinTheSameInstantAreOneInstant) {
   EXPECT_EQ(by_instant(events).size(), 2u);
 }
 
+// Two collisions of three pellets at one instant, listed with their pellets out of index order
+// (the one behind first): 2 strikes 1, then 1 strikes 0. Merged, each pellet has the speed it met
+// its first impact with and the one its last impact left it with, beside it.
+std::vector<Event> cascade_of_three(double t, double slow) {
+  auto collision = [&](std::vector<int> pellets, std::vector<double> before,
+                       std::vector<double> after) {
+    Event e = collision_at(t);
+    e.phi = 7.0;
+    e.pellets = std::move(pellets);
+    e.dphi_before = std::move(before);
+    e.dphi_after = std::move(after);
+    return e;
+  };
+  return {collision({2, 1}, {1.0 + slow, 1.0}, {1.0, 1.0 + slow}),
+          collision({1, 0}, {1.0 + slow, 0.5}, {0.5, 1.0 + slow})};
+}
+
+TEST(TrustPolicy, AMergedCollisionListsEachPelletsSpeedsBesideIt) {
+  const std::vector<Event> listed = by_instant(cascade_of_three(1.0, 2.0));
+  ASSERT_EQ(listed.size(), 1u);
+  EXPECT_EQ(listed[0].pellets, (std::vector<int>{0, 1, 2}));
+  EXPECT_EQ(listed[0].dphi_before, (std::vector<double>{0.5, 1.0, 3.0}));
+  EXPECT_EQ(listed[0].dphi_after, (std::vector<double>{3.0, 0.5, 1.0}));
+}
+
+// The round-off of a merged collision's time is its first impact's: pellets near 7 rad closing at
+// 1e-3 rad/s.
+TEST(TrustPolicy, AMergedCollisionsRoundOffIsItsFirstImpacts) {
+  const Model model = testing::preset("paper").model;
+  RunResult run;
+  run.events = cascade_of_three(1.0, 1e-3);
+  run.stats.t_reached = 2.0;
+  run.stats.rtol = 1e-14;
+  const double round_off =
+      kTrustPolicy.placement_round_off_ulps * std::numeric_limits<double>::epsilon() * 8.0 / 1e-3;
+  EXPECT_NEAR(compare_runs(model, run, run).event_time_error, round_off, 1e-6 * round_off);
+}
+
 TEST(TrustPolicy, TheShadowFollowsThePolicy) {
   SimOptions run;
   run.rtol = 1e-8;

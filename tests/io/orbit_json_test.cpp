@@ -182,9 +182,10 @@ TEST(OrbitJson, TheResultHasTheShapeOfTheApiAndNoNaN) {
   const json j = orbit_result_json(synthetic_result());
   EXPECT_TRUE(has_keys(j, {"orbit", "branch", "bifurcations", "reached", "message"}));
   const json& o = j["orbit"];
-  EXPECT_TRUE(has_keys(o, {"periods", "t0", "state", "impacts_per_period", "residual",
-                           "multipliers", "stable", "events", "converged", "admissible", "message",
-                           "iterations", "exact_jacobian", "jacobian_note", "period", "stats"}));
+  EXPECT_TRUE(
+      has_keys(o, {"periods", "t0", "state", "impacts_per_period", "residual", "multipliers",
+                   "stable", "neutral", "events", "converged", "admissible", "message",
+                   "iterations", "exact_jacobian", "jacobian_note", "period", "stats"}));
   EXPECT_TRUE(o["state"][0]["dphi"].is_null());
   EXPECT_EQ(o["state"][0]["phi"], 0.15);
   EXPECT_TRUE(o["residual"].is_null());
@@ -192,8 +193,8 @@ TEST(OrbitJson, TheResultHasTheShapeOfTheApiAndNoNaN) {
   EXPECT_EQ(o["events"][0]["kind"], "limiter");
   EXPECT_EQ(o["events"][0]["limiter"], 0);
   ASSERT_EQ(j["branch"].size(), 2u);
-  EXPECT_TRUE(
-      has_keys(j["branch"][1], {"value", "state", "multipliers", "stable", "impacts_per_period"}));
+  EXPECT_TRUE(has_keys(j["branch"][1], {"value", "state", "multipliers", "stable", "neutral",
+                                        "impacts_per_period"}));
   EXPECT_EQ(j["branch"][1]["value"], 6.1);
   ASSERT_EQ(j["bifurcations"].size(), 2u);
   EXPECT_EQ(j["bifurcations"][0]["kind"], "period_doubling");

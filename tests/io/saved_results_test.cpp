@@ -103,12 +103,23 @@ TEST(SavedResults, ABranchReadsBackWithItsBifurcations) {
   sent.branch.bifurcations.push_back(
       {BifurcationKind::grazing, 5.2, {{0.3, 0.0}}, std::nullopt, {}, false});
   sent.branch.message = "a fold ahead";
-  const auto read = read_orbit_branch(json::parse(orbit_result_json(sent).dump()));
+  // Neutral: its multipliers lie on the unit circle. A branch saved without "neutral" is judged
+  // by them (point 3), one that says it is read as it says (point 4).
+  sent.branch.points.push_back({5.3, {{0.25, 0.0}}, {{0.6, 0.8}, {0.6, -0.8}}, false, 0.0, true});
+  sent.branch.points.push_back({5.4, {{0.25, 0.0}}, {{0.5, 0.0}, {0.4, 0.0}}, false, 0.0, true});
+  json saved = json::parse(orbit_result_json(sent).dump());
+  EXPECT_EQ(saved["branch"][3]["neutral"], true);
+  saved["branch"][3].erase("neutral");
+  const auto read = read_orbit_branch(saved, 1e-10);
   ASSERT_TRUE(std::holds_alternative<OrbitBranch>(read)) << std::get<FieldError>(read).message;
   const OrbitBranch& back = std::get<OrbitBranch>(read);
-  ASSERT_EQ(back.points.size(), 3u);
+  ASSERT_EQ(back.points.size(), 5u);
+  EXPECT_TRUE(back.points[4].neutral);
   EXPECT_EQ(back.points[1].value, 5.1);
   EXPECT_FALSE(back.points[1].stable);
+  EXPECT_FALSE(back.points[1].neutral);
+  EXPECT_FALSE(back.points[3].stable);
+  EXPECT_TRUE(back.points[3].neutral);
   EXPECT_EQ(back.points[2].state[0].dphi, -1.0 / 3.0);
   EXPECT_EQ(back.points[0].multipliers[1], std::complex<double>(-1.25, 0.0));
   ASSERT_EQ(back.bifurcations.size(), 2u);
@@ -118,7 +129,7 @@ TEST(SavedResults, ABranchReadsBackWithItsBifurcations) {
   EXPECT_EQ(back.message, "a fold ahead");
   json wrong = orbit_result_json(sent);
   wrong["bifurcations"][0]["kind"] = "cusp";
-  const auto refused = read_orbit_branch(wrong);
+  const auto refused = read_orbit_branch(wrong, 1e-10);
   ASSERT_TRUE(std::holds_alternative<FieldError>(refused));
   EXPECT_EQ(std::get<FieldError>(refused).field, "bifurcations[0].kind");
 }

@@ -1,8 +1,9 @@
-// The branch plot: a continued periodic motion drawn stable solid and unstable dashed, its
-// bifurcations marked and named in the legend and beside the marks (as text in SVG), alone or
-// over the bifurcation diagram of the same parameter; without a branch it is refused.
+// The branch plot: a continued periodic motion drawn stable solid, unstable dashed and neutral
+// dotted, its bifurcations marked and named in the legend and beside the marks (as text in SVG),
+// alone or over the bifurcation diagram of the same parameter; without a branch it is refused.
 #include <gtest/gtest.h>
 
+#include <cmath>
 #include <string>
 #include <utility>
 #include <vector>
@@ -76,6 +77,35 @@ TEST(BranchPlot, DrawsStableAndUnstableStretchesAndNamesTheDoubling) {
   EXPECT_GT(dark_pixels(testing::decode_png(png.bytes)), 2000);  // the curve, not only text
   const RenderResult pdf = draw(c, ImageFormat::pdf);
   ASSERT_TRUE(pdf.ok());
+}
+
+// A frictionless forced pendulum's small swing, far from its stop, never strikes: its map keeps
+// areas and its multipliers lie on the unit circle. Its branch is drawn neutral (dotted, named so),
+// not unstable.
+TEST(BranchPlot, DrawsANeutralBranchDottedNotUnstable) {
+  Model model;
+  model.pellets = {{0.1, 0.0, 0.01506, {0.01035936, 15.06011952143807, M_PI / 2}}};
+  model.limiters = {{1.0, 0.7, false, -1, {}}};
+  OrbitSpec spec;
+  spec.transient = 0;
+  spec.guess = {{0.0, 0.01506}};
+  const PeriodicOrbit orbit = find_periodic_orbit(model, options(), spec);
+  ASSERT_TRUE(orbit.converged) << orbit.message;
+  Continued c;
+  c.spec = {"model.pellets[0].Omega", 16.0, 12};
+  c.branch = continue_orbit(model, options(), orbit, c.spec);
+  ASSERT_GE(c.branch.points.size(), 3u) << c.branch.message;
+  FigureSpec figure;
+  figure.plots = {BranchPlot{}};
+  const RenderResult svg = render_figure(figure, model, RunResult{}, ImageFormat::svg,
+                                         {nullptr, std::nullopt, {{c.branch, c.spec}}});
+  ASSERT_TRUE(svg.ok()) << svg.error->message;
+  const std::string text(svg.bytes.begin(), svg.bytes.end());
+  EXPECT_EQ(testing::count_of(text, ">unstable periodic motion<"), 0);
+  EXPECT_EQ(testing::count_of(text, ">stable periodic motion<"), 0);
+  EXPECT_EQ(testing::count_of(text, ">neutral periodic motion (a multiplier on the unit circle)<"),
+            1);
+  EXPECT_GE(testing::count_of(text, "stroke-linecap:round"), 2);  // the line and its swatch
 }
 
 TEST(BranchPlot, DrawsOverTheBifurcationDiagramOfTheSameParameter) {

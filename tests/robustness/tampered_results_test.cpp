@@ -14,6 +14,7 @@
 #include <string>
 #include <vector>
 
+#include "core/analysis/periodic_orbit.h"
 #include "core/analysis/sweep.h"
 #include "io/orbit_json.h"
 #include "io/saved_results.h"
@@ -232,7 +233,7 @@ TEST(TamperedResults, AContinuedBranchIsRefusedOrDrawn) {
   const ContinuationSpec& continuation = *scene.periodic_orbit->continuation;
   Tally tally;
   const auto plot = [&](const json& doc, const std::string& what) {
-    const auto read = read_orbit_branch(doc);
+    const auto read = read_orbit_branch(doc, multiplier_band(scene.sim));
     if (tally.refuses(read, what)) return;
     const OrbitBranch& branch = std::get<OrbitBranch>(read);
     const OrbitFigure figure{&branch, &continuation};

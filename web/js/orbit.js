@@ -24,6 +24,13 @@ function disarmed(o) {
   return off.length ? `; ${off.join(' and ')} disarmed` : '';
 }
 
+// A motion's stability as a sentence starts: neutral when a multiplier lies on the unit circle
+// within the tolerance (an area-preserving motion), neither stable nor unstable.
+function stability(o) {
+  if (o.stable) return 'A stable';
+  return o.neutral ? 'A neutral' : 'An unstable';
+}
+
 // Lines that say what was found, for a person: whether it is a motion, stable or not, its
 // multipliers and impacts, and what the checks said.
 export function describeOrbit(answer) {
@@ -39,7 +46,7 @@ export function describeOrbit(answer) {
     ];
   const n = o.periods === 1 ? "period-1" : `period-${o.periods}`;
   const lines = [
-    `${o.stable ? 'A stable' : 'An unstable'} ${n} motion with ${digits(o.impacts_per_period, 3)} ${
+    `${stability(o)} ${n} motion with ${digits(o.impacts_per_period, 3)} ${
         o.impacts_per_period === 1 ? 'impact' : 'impacts'} per forcing period (T = ${
         digits(o.period)} s), returning within ${digits(o.residual, 2)}.`,
     `State at t = ${digits(o.t0)} s: ${
