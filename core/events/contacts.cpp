@@ -28,7 +28,7 @@ std::vector<Neighbours> circular_neighbours(const Vec& y, int n) {
 }
 
 void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact,
-                   std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
+                   std::vector<bool>& at_limiter, const std::vector<PairContact>& apart,
                    std::vector<PairContact>& pairs) {
   for (std::size_t pass = 0; pass <= neighbours.size(); ++pass) {
     bool changed = false;
@@ -61,24 +61,50 @@ void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double con
   }
 }
 
-std::vector<std::vector<int>> chains(const PelletLinks& links) {
+namespace {
+
+// Each chain of the links in turn, into the empty vector `next()` returns: the chains in the
+// order of their pellets' lowest index, each behind to ahead.
+template <class Next>
+void for_each_chain(const PelletLinks& links, std::vector<bool>& placed, Next next) {
   const int n = links.size();
-  std::vector<std::vector<int>> out;
-  std::vector<bool> placed(n, false);
+  placed.assign(n, false);
   for (int start = 0; start < n; ++start) {
     if (placed[start]) continue;
     int first = start;
     for (int guard = 0; links.behind(first) >= 0 && links.behind(first) != start && guard < n;
          ++guard)
       first = links.behind(first);
-    std::vector<int> members;
+    std::vector<int>& members = next();
     for (int i = first, guard = 0; i >= 0 && !placed[i] && guard < n; i = links.ahead(i), ++guard) {
       members.push_back(i);
       placed[i] = true;
     }
-    out.push_back(std::move(members));
   }
+}
+
+}  // namespace
+
+std::vector<std::vector<int>> chains(const PelletLinks& links) {
+  std::vector<std::vector<int>> out;
+  std::vector<bool> placed;
+  for_each_chain(links, placed, [&]() -> std::vector<int>& { return out.emplace_back(); });
   return out;
+}
+
+void chains_as_bodies(const PelletLinks& links, std::vector<bool>& placed,
+                      std::vector<Body>& bodies) {
+  std::size_t count = 0;
+  for_each_chain(links, placed, [&]() -> std::vector<int>& {
+    if (count == bodies.size()) bodies.emplace_back();
+    Body& body = bodies[count++];
+    std::vector<int> members = std::move(body.members);
+    body = Body{};
+    body.members = std::move(members);
+    body.members.clear();
+    return body.members;
+  });
+  bodies.resize(count);
 }
 
 namespace {
@@ -156,13 +182,14 @@ bool move_as_one(double approach, double press, double k_c, const JoinCriteria& 
 
 }  // namespace
 
-std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
-                                const std::vector<PairContact>& pairs,
-                                const std::vector<LimiterContact>& limiter_contacts,
-                                const std::vector<bool>& armed, const JoinCriteria& criteria) {
+void join_touching(const Model& model, const SlidingLaw& law, double t, const Vec& y,
+                   const std::vector<PairContact>& pairs,
+                   const std::vector<LimiterContact>& limiter_contacts,
+                   const std::vector<bool>& armed, const JoinCriteria& criteria,
+                   JoinScratch& scratch, std::vector<Body>& bodies) {
   const JoinScene scene{model, t, y, limiter_contacts, armed};
-  const SlidingLaw law(model);
-  PelletLinks links(model.size());
+  PelletLinks& links = scratch.links;
+  links.reset(model.size());
   // Chains grow until nothing more joins: a pair's press depends on the chains behind and ahead.
   for (bool grew = true; grew;) {
     grew = false;
@@ -180,12 +207,17 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
       }
     }
   }
+  chains_as_bodies(links, scratch.placed, bodies);
+}
+
+std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
+                                const std::vector<PairContact>& pairs,
+                                const std::vector<LimiterContact>& limiter_contacts,
+                                const std::vector<bool>& armed, const JoinCriteria& criteria) {
+  JoinScratch scratch;
   std::vector<Body> bodies;
-  for (std::vector<int>& members : chains(links)) {
-    Body body;
-    body.members = std::move(members);
-    bodies.push_back(std::move(body));
-  }
+  join_touching(model, SlidingLaw(model), t, y, pairs, limiter_contacts, armed, criteria, scratch,
+                bodies);
   return bodies;
 }
 

@@ -6,6 +6,7 @@
 
 #include "core/events/impacts.h"
 #include "core/integrators/ode.h"
+#include "core/model/dynamics.h"
 #include "core/model/model.h"
 #include "core/model/motion.h"
 
@@ -28,15 +29,18 @@ std::vector<Neighbours> circular_neighbours(const Vec& y, int n);
 // cascade among several pellets closes their gaps geometrically, and only treating the
 // near-touching ones together ends it in bounded work (and never lets round-off push one pellet
 // through another).
+// `at_limiter` (per pellet) is updated: a pellet snapped onto one at a limiter is at it too.
 void snap_touching(Vec& y, const std::vector<Neighbours>& neighbours, double contact,
-                   std::vector<bool> at_limiter, const std::vector<PairContact>& apart,
+                   std::vector<bool>& at_limiter, const std::vector<PairContact>& apart,
                    std::vector<PairContact>& pairs);
 
 // Pellets linked into chains of touching ones: for each pellet, its neighbour behind and ahead in
 // its chain, −1 at a chain's ends.
 class PelletLinks {
  public:
-  explicit PelletLinks(int n) : links_(n) {}
+  explicit PelletLinks(int n = 0) : links_(n) {}
+  // n pellets, none linked (the storage kept).
+  void reset(int n) { links_.assign(n, Link{}); }
   int size() const { return static_cast<int>(links_.size()); }
   void link(const PairContact& p) {
     links_[p.behind].ahead = p.ahead;
@@ -58,6 +62,10 @@ class PelletLinks {
 // The chains, each behind to ahead, in the order of their pellets' lowest index; every pellet
 // in one. A closed ring starts at the pellet ahead of its lowest index.
 std::vector<std::vector<int>> chains(const PelletLinks& links);
+// The same chains as the members of `bodies`, one body each, their other fields at Body's
+// defaults; the bodies' storage is reused. `placed`: scratch.
+void chains_as_bodies(const PelletLinks& links, std::vector<bool>& placed,
+                      std::vector<Body>& bodies);
 
 // When touching pellets move on as one body: their forces press them together, and they would
 // otherwise collide again at once — equal speeds within `v_merge`, a remaining chatter between
@@ -75,5 +83,16 @@ std::vector<Body> join_touching(const Model& model, double t, const Vec& y,
                                 const std::vector<PairContact>& pairs,
                                 const std::vector<LimiterContact>& limiter_contacts,
                                 const std::vector<bool>& armed, const JoinCriteria& criteria);
+// What join_touching reuses from one instant to the next.
+struct JoinScratch {
+  PelletLinks links;
+  std::vector<bool> placed;  // per pellet
+};
+// The same, written into `bodies` (their storage reused).
+void join_touching(const Model& model, const SlidingLaw& law, double t, const Vec& y,
+                   const std::vector<PairContact>& pairs,
+                   const std::vector<LimiterContact>& limiter_contacts,
+                   const std::vector<bool>& armed, const JoinCriteria& criteria,
+                   JoinScratch& scratch, std::vector<Body>& bodies);
 
 }  // namespace vibro

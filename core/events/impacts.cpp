@@ -87,48 +87,46 @@ std::optional<Event> group_limit(const Model& model, const std::vector<int>& mem
 
 // The limit of an endless cascade from the state y0 and limiters armed0 before it: each group
 // of touching pellets (a limiter between two pellets keeps them in two groups) takes its
-// group_limit. y and armed are set to what the limit leaves; each event counts the `impacts`
-// the sweeps resolved before the limit was taken.
-std::vector<Event> plastic_limit(const Model& model, Vec& y, const Vec& y0,
-                                 std::vector<bool>& armed, const std::vector<bool>& armed0,
-                                 const std::vector<LimiterContact>& lc,
-                                 const std::vector<PairContact>& pc, int impacts) {
+// group_limit, and its events replace those of the sweeps (from `first` on in `events`). y and
+// armed are set to what the limit leaves; each event counts the `impacts` the sweeps resolved
+// before the limit was taken.
+void plastic_limit(const Model& model, Vec& y, const Vec& y0, std::vector<bool>& armed,
+                   const std::vector<bool>& armed0, const std::vector<LimiterContact>& lc,
+                   const std::vector<PairContact>& pc, int impacts, std::size_t first,
+                   EventList& events) {
   y = y0;
   armed = armed0;
   PelletLinks links(model.size());
   for (const PairContact& p : pc)
     if (!separated_by_limiter(model, lc, armed0, p)) links.link(p);
-  std::vector<Event> events;
+  events.shrink_to(first);
   for (const std::vector<int>& members : chains(links)) {
     std::optional<Event> e = group_limit(model, members, y0, armed, lc);
     if (!e) continue;
     e->impacts_resolved = impacts;
     for (int i : members) y[dphi_index(i)] = e->dphi_after.front();
     if (e->limiter >= 0) strike_limiter(model, armed, e->limiter);
-    events.push_back(std::move(*e));
+    events.add() = std::move(*e);
   }
-  return events;
 }
 
 // One sweep's limiter impacts, in the contacts' order: each contact whose pellet approaches its
 // armed limiter faster than v_eps rebounds with the limiter's k. Returns how many.
 int strike_limiters(const Model& model, Vec& y, std::vector<bool>& armed,
-                    const std::vector<LimiterContact>& lc, double v_eps,
-                    std::vector<Event>& events) {
+                    const std::vector<LimiterContact>& lc, double v_eps, EventList& events) {
   int impacts = 0;
   for (const LimiterContact& c : lc) {
     const Limiter& lim = model.limiters[c.limiter];
     double& v = y[dphi_index(c.pellet)];
     if (!armed[c.limiter] || !lim.acts_on(c.pellet) || v * c.side >= -v_eps) continue;
-    Event e;
+    Event& e = events.add();
     e.kind = EventKind::limiter;
-    e.pellets = {c.pellet};
+    e.pellets.push_back(c.pellet);
     e.limiter = c.limiter;
-    e.dphi_before = {v};
+    e.dphi_before.push_back(v);
     v = -lim.k * v;
-    e.dphi_after = {v};
+    e.dphi_after.push_back(v);
     strike_limiter(model, armed, c.limiter);
-    events.push_back(std::move(e));
     ++impacts;
   }
   return impacts;
@@ -138,19 +136,18 @@ int strike_limiters(const Model& model, Vec& y, std::vector<bool>& armed,
 // limiter between them, collides by Newton's law. Returns how many.
 int collide_pairs(const Model& model, Vec& y, const std::vector<bool>& armed,
                   const std::vector<LimiterContact>& lc, const std::vector<PairContact>& pc,
-                  double v_eps, std::vector<Event>& events) {
+                  double v_eps, EventList& events) {
   int impacts = 0;
   for (const PairContact& p : pc) {
     double& vb = y[dphi_index(p.behind)];
     double& va = y[dphi_index(p.ahead)];
     if (vb - va <= v_eps || separated_by_limiter(model, lc, armed, p)) continue;
-    Event e;
+    Event& e = events.add();
     e.kind = EventKind::collision;
-    e.pellets = {p.behind, p.ahead};
-    e.dphi_before = {vb, va};
+    e.pellets.assign({p.behind, p.ahead});
+    e.dphi_before.assign({vb, va});
     collide(model.pellets[p.behind].m, model.pellets[p.ahead].m, model.k_c, vb, va);
-    e.dphi_after = {vb, va};
-    events.push_back(std::move(e));
+    e.dphi_after.assign({vb, va});
     ++impacts;
   }
   return impacts;
@@ -160,9 +157,10 @@ int collide_pairs(const Model& model, Vec& y, const std::vector<bool>& armed,
 
 int shared_by_closings(const Model& model, const Vec& y, const std::vector<bool>& armed,
                        const std::vector<LimiterContact>& lc, const std::vector<PairContact>& pc,
-                       double v_eps) {
+                       double v_eps, ImpactScratch& scratch) {
   auto v = [&](int i) { return y[dphi_index(i)]; };
-  std::vector<int> closings(model.size(), 0);
+  std::vector<int>& closings = scratch.closings;
+  closings.assign(model.size(), 0);
   for (const LimiterContact& c : lc)
     if (armed[c.limiter] && model.limiters[c.limiter].acts_on(c.pellet) &&
         v(c.pellet) * c.side < -v_eps)
@@ -177,33 +175,54 @@ int shared_by_closings(const Model& model, const Vec& y, const std::vector<bool>
   return -1;
 }
 
-std::vector<Event> resolve_impacts(const Model& model, Vec& y, std::vector<bool>& armed,
-                                   const std::vector<LimiterContact>& limiter_contacts,
-                                   const std::vector<PairContact>& pair_contacts,
-                                   const ImpactOptions& options) {
-  std::vector<LimiterContact> lc = limiter_contacts;
+int shared_by_closings(const Model& model, const Vec& y, const std::vector<bool>& armed,
+                       const std::vector<LimiterContact>& lc, const std::vector<PairContact>& pc,
+                       double v_eps) {
+  ImpactScratch scratch;
+  return shared_by_closings(model, y, armed, lc, pc, v_eps, scratch);
+}
+
+void resolve_impacts(const Model& model, Vec& y, std::vector<bool>& armed,
+                     const std::vector<LimiterContact>& limiter_contacts,
+                     const std::vector<PairContact>& pair_contacts, const ImpactOptions& options,
+                     ImpactScratch& scratch, EventList& events) {
+  std::vector<LimiterContact>& lc = scratch.limiters;
+  lc.assign(limiter_contacts.begin(), limiter_contacts.end());
   std::sort(lc.begin(), lc.end(), [](const LimiterContact& a, const LimiterContact& b) {
     return a.pellet != b.pellet ? a.pellet < b.pellet : a.limiter < b.limiter;
   });
-  std::vector<PairContact> pc = pair_contacts;
+  std::vector<PairContact>& pc = scratch.pairs;
+  pc.assign(pair_contacts.begin(), pair_contacts.end());
   auto place = [&](int i) {
     const double w = std::fmod(y[phi_index(i)], kTwoPi);
     return w < 0.0 ? w + kTwoPi : w;
   };
-  std::stable_sort(pc.begin(), pc.end(), [&](const PairContact& a, const PairContact& b) {
-    return place(a.behind) < place(b.behind);
-  });
-  const Vec y0 = y;
-  const std::vector<bool> armed0 = armed;
-  std::vector<Event> events;
+  // Insertion sort: stable, and the few pairs of an instant need no buffer (std::stable_sort
+  // allocates one).
+  for (std::size_t k = 1; k < pc.size(); ++k)
+    for (std::size_t j = k; j > 0 && place(pc[j].behind) < place(pc[j - 1].behind); --j)
+      std::swap(pc[j], pc[j - 1]);
+  scratch.y0 = y;
+  scratch.armed0 = armed;
+  const std::size_t first = events.size();
   int impacts = 0;
   for (int sweep = 0; sweep < options.max_sweeps; ++sweep) {
     const int struck = strike_limiters(model, y, armed, lc, options.v_eps, events);
     const int collided = collide_pairs(model, y, armed, lc, pc, options.v_eps, events);
-    if (struck + collided == 0) return events;
+    if (struck + collided == 0) return;
     impacts += struck + collided;
   }
-  return plastic_limit(model, y, y0, armed, armed0, lc, pc, impacts);
+  plastic_limit(model, y, scratch.y0, armed, scratch.armed0, lc, pc, impacts, first, events);
+}
+
+std::vector<Event> resolve_impacts(const Model& model, Vec& y, std::vector<bool>& armed,
+                                   const std::vector<LimiterContact>& limiter_contacts,
+                                   const std::vector<PairContact>& pair_contacts,
+                                   const ImpactOptions& options) {
+  ImpactScratch scratch;
+  EventList events;
+  resolve_impacts(model, y, armed, limiter_contacts, pair_contacts, options, scratch, events);
+  return {events.begin(), events.end()};
 }
 
 }  // namespace vibro

@@ -7,6 +7,7 @@
 #include <vector>
 
 #include "core/events/event.h"
+#include "core/events/event_list.h"
 #include "core/integrators/ode.h"
 #include "core/model/model.h"
 #include "core/model/motion.h"
@@ -55,6 +56,20 @@ int shared_by_closings(const Model& model, const Vec& y, const std::vector<bool>
                        const std::vector<LimiterContact>& limiter_contacts,
                        const std::vector<PairContact>& pair_contacts, double v_eps);
 
+// What resolve_impacts and shared_by_closings reuse from one instant to the next (sized by the
+// model's pellets and an instant's contacts), so that they allocate nothing once sized.
+struct ImpactScratch {
+  std::vector<LimiterContact> limiters;  // the contacts in the order they are resolved
+  std::vector<PairContact> pairs;
+  Vec y0;                     // the state before the impacts
+  std::vector<bool> armed0;   // the limiters armed before them
+  std::vector<int> closings;  // per pellet: the contacts closing on it
+};
+int shared_by_closings(const Model& model, const Vec& y, const std::vector<bool>& armed,
+                       const std::vector<LimiterContact>& limiter_contacts,
+                       const std::vector<PairContact>& pair_contacts, double v_eps,
+                       ImpactScratch& scratch);
+
 // Resolves the impacts among the contacts on the state y (core/model/motion.h): its speeds are
 // updated in place, its angles order the pair contacts (by increasing phi mod 2π) and are left
 // as they are. `armed` holds every limiter's state and is updated (a mobile limiter is disarmed
@@ -64,5 +79,10 @@ std::vector<Event> resolve_impacts(const Model& model, Vec& y, std::vector<bool>
                                    const std::vector<LimiterContact>& limiter_contacts,
                                    const std::vector<PairContact>& pair_contacts,
                                    const ImpactOptions& options = {});
+// The same, the impacts appended to `events`.
+void resolve_impacts(const Model& model, Vec& y, std::vector<bool>& armed,
+                     const std::vector<LimiterContact>& limiter_contacts,
+                     const std::vector<PairContact>& pair_contacts, const ImpactOptions& options,
+                     ImpactScratch& scratch, EventList& events);
 
 }  // namespace vibro

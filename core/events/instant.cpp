@@ -4,19 +4,14 @@
 #include <algorithm>
 #include <cmath>
 #include <optional>
+#include <span>
+#include <utility>
 
 #include "core/events/chatter.h"
 #include "core/model/dynamics.h"
 
 namespace vibro {
 namespace {
-
-// One pellet as the instant meets it, and the limiter its impacts struck.
-struct Arrival {
-  double v = 0.0;   // rad/s: its speed after the snap, before any impact
-  int body = -1;    // its body in the interval that ends at the instant (bodies partition pellets)
-  int struck = -1;  // the limiter it struck at this instant (its last such impact), or −1
-};
 
 // What the phases read: the instant's inputs, and each pellet's arrival.
 struct Instant {
@@ -25,15 +20,15 @@ struct Instant {
   double t;                         // s
   const std::vector<Body>& before;  // the bodies of the interval that ends at t
   const InstantContacts& contacts;  // from the snap
-  std::vector<Arrival> pellets;     // one per pellet of the model
+  std::vector<Arrival>& pellets;    // one per pellet of the model
 };
 
-std::vector<Arrival> arrivals(const Model& model, const std::vector<Body>& before, const Vec& y) {
-  std::vector<Arrival> pellets(model.size());
+void arrive(const Model& model, const std::vector<Body>& before, const Vec& y,
+            std::vector<Arrival>& pellets) {
+  pellets.assign(model.size(), Arrival{});
   for (int i = 0; i < model.size(); ++i) pellets[i].v = y[dphi_index(i)];
   for (std::size_t b = 0; b < before.size(); ++b)
     for (int i : before[b].members) pellets[i].body = static_cast<int>(b);
-  return pellets;
 }
 
 // J: pellet i's kinetic energy at speed v (rad/s).
@@ -41,11 +36,10 @@ double kinetic(const Model& model, int i, double v) {
   return 0.5 * model.pellets[i].m * model.R * model.R * v * v;
 }
 
-// The event at time t, with the angle of its first pellet.
-Event stamped(Event e, double t, const Vec& y) {
+// The event put at time t, with the angle of its first pellet.
+void stamp(Event& e, double t, const Vec& y) {
   e.t = t;
   if (!e.pellets.empty()) e.phi = y[phi_index(e.pellets[0])];
-  return e;
 }
 
 // The limiter a body is pressed against, if any: a contact of this instant.
@@ -62,40 +56,44 @@ Support support_of(const Body& body, const InstantContacts& contacts,
   return {};
 }
 
-// Phase 2: the impacts among the contacts (impacts.h), written into the speeds of y; each listed
-// at t, its pellets touched, and the kinetic energy they change counted. Returns them unstamped,
-// for the chatter phase to read who struck whom.
-std::vector<Event> strike(Instant& in, Vec& y, std::vector<bool>& armed, InstantOutcome& out) {
+// Phase 2: the impacts among the contacts (impacts.h), written into the speeds of y and listed
+// first in out.events; each at t, its pellets touched, and the kinetic energy they change
+// counted. Returns how many, for the chatter phase to read who struck whom.
+std::size_t strike(Instant& in, Vec& y, std::vector<bool>& armed, InstantOutcome& out,
+                   ImpactScratch& scratch) {
   const Model& model = in.model;
   const InstantContacts& c = in.contacts;
-  out.unordered = shared_by_closings(model, y, armed, c.limiters, c.pairs, in.tol.v_eps);
-  std::vector<Event> impacts =
-      resolve_impacts(model, y, armed, c.limiters, c.pairs, ImpactOptions{.v_eps = in.tol.v_eps});
+  out.unordered = shared_by_closings(model, y, armed, c.limiters, c.pairs, in.tol.v_eps, scratch);
+  resolve_impacts(model, y, armed, c.limiters, c.pairs, ImpactOptions{.v_eps = in.tol.v_eps},
+                  scratch, out.events);
   // At the plastic limit no order of the impacts changes the outcome.
-  if (std::any_of(impacts.begin(), impacts.end(),
+  if (std::any_of(out.events.begin(), out.events.end(),
                   [](const Event& e) { return e.impacts_resolved > 0; }))
     out.unordered = -1;
   for (int i = 0; i < model.size(); ++i)
     out.kinetic_change += kinetic(model, i, y[dphi_index(i)]) - kinetic(model, i, in.pellets[i].v);
-  for (const Event& e : impacts) {
+  for (Event& e : out.events) {
     for (int i : e.pellets) out.touched[i] = true;
     if (e.kind == EventKind::limiter) in.pellets[e.pellets[0]].struck = e.limiter;
-    out.events.push_back(stamped(e, in.t, y));
+    stamp(e, in.t, y);
   }
-  return impacts;
+  return out.events.size();
 }
 
-// Phase 3: the bodies after the impacts (contacts.h, join_touching); the pairs a separation
-// watch parted stay apart.
-std::vector<Body> join_bodies(const Instant& in, const Vec& y, const std::vector<bool>& armed) {
-  std::vector<PairContact> joinable = in.contacts.pairs;
+// Phase 3: the bodies after the impacts (contacts.h, join_touching), into ws.outcome.bodies;
+// the pairs a separation watch parted stay apart.
+void join_bodies(const Instant& in, const SlidingLaw& law, const Vec& y,
+                 const std::vector<bool>& armed, InstantWorkspace& ws) {
+  std::vector<PairContact>& joinable = ws.joinable;
+  joinable.assign(in.contacts.pairs.begin(), in.contacts.pairs.end());
   const std::vector<PairContact>& parting = in.contacts.parting;
   std::erase_if(joinable, [&](const PairContact& p) {
     return std::find(parting.begin(), parting.end(), p) != parting.end();
   });
   const JoinCriteria criteria{in.tol.v_merge, in.tol.chatter_time,
                               place_radii(in.tol, y).flight_round_off};
-  return join_touching(in.model, in.t, y, joinable, in.contacts.limiters, armed, criteria);
+  join_touching(in.model, law, in.t, y, joinable, in.contacts.limiters, armed, criteria, ws.join,
+                ws.outcome.bodies);
 }
 
 // A merge is plastic: a body moves with its momentum's speed (rad/s), unless that drives it into
@@ -122,7 +120,7 @@ double merged_speed(const Model& model, const Body& body, const Support& support
 // its members and the limiter leaves at one fraction of that speed, the same at every impact
 // after: the cascade is linear in the speed.
 double series_restitution(const Instant& in, const Body& body, int limiter, double speed,
-                          const std::vector<Event>& impacts) {
+                          std::span<const Event> impacts) {
   if (body.members.size() == 1) return in.model.limiters[limiter].k;
   auto member = [&](int i) {
     return std::find(body.members.begin(), body.members.end(), i) != body.members.end();
@@ -137,8 +135,9 @@ double series_restitution(const Instant& in, const Body& body, int limiter, doub
   return v0 != 0.0 ? -speed / v0 : -1.0;
 }
 
-Event chatter_event(const Body& body, int limiter, double speed, const ChatterSeries& series) {
-  Event e;
+// The chatter event of a body leaving `limiter` at `speed`, summed as `series` says.
+void fill_chatter(Event& e, const Body& body, int limiter, double speed,
+                  const ChatterSeries& series) {
   e.kind = EventKind::chatter;
   e.pellets = body.members;
   e.limiter = limiter;
@@ -146,7 +145,6 @@ Event chatter_event(const Body& body, int limiter, double speed, const ChatterSe
   e.dphi_after.assign(body.members.size(), 0.0);
   e.impacts_resolved = series.impacts;
   e.t_accumulation = series.t_star;
-  return e;
 }
 
 // Phase 4: a body leaving at `speed` (rad/s) the armed limiter it struck at this instant,
@@ -154,25 +152,26 @@ Event chatter_event(const Body& body, int limiter, double speed, const ChatterSe
 // last less than the chatter time: their series is summed (chatter.h) into one chatter event at
 // its accumulation time, and the body is left at rest against that limiter (speed 0, support
 // set, the kinetic energy it had counted as lost).
-void sum_chatter(const Instant& in, const std::vector<Event>& impacts,
-                 const std::vector<bool>& armed, const Body& body, double a_free, double& speed,
-                 Support& support, Vec& y, InstantOutcome& out) {
+void sum_chatter(const Instant& in, std::size_t impacts, const std::vector<bool>& armed,
+                 const Body& body, double a_free, double& speed, Support& support, Vec& y,
+                 InstantOutcome& out) {
   int struck = -1;
   for (int i : body.members) struck = std::max(struck, in.pellets[i].struck);
   if (!(std::abs(speed) > in.tol.v_eps) || struck < 0 || !armed[struck]) return;
-  const double k = series_restitution(in, body, struck, speed, impacts);
+  const double k = series_restitution(in, body, struck, speed, out.events.view().first(impacts));
   if (k < 0.0) return;
   const int side = speed > 0.0 ? 1 : -1;
   const double theta = in.model.limiters[struck].angle;
   const auto series = chatter_series(in.model, in.t, theta, side, std::abs(speed), k, a_free);
   if (!series || series->t_next / (1.0 - series->r) > in.tol.chatter_time) return;
-  const Event e = chatter_event(body, struck, speed, *series);
   for (int i : body.members) {
     out.kinetic_change -= kinetic(in.model, i, speed);
     y[dphi_index(i)] = 0.0;
     out.touched[i] = true;
   }
-  out.events.push_back(stamped(e, series->t_star, y));
+  Event& e = out.events.add();
+  fill_chatter(e, body, struck, speed, *series);
+  stamp(e, series->t_star, y);
   speed = 0.0;
   support = {struck, side};
 }
@@ -223,11 +222,17 @@ bool snapped_to_a_halt(const Body& held, double v, bool touched, const Body& now
   return now.mode != Mode::sliding || now.s != held.s;
 }
 
-// Phase 5's event for a body now in its mode at `speed`: a member that reached zero speed (its
-// body was sliding) makes a reversal, or a stick where the body now holds; a member let go from a
-// hold makes a release if the body slides. None otherwise.
-std::optional<Event> mode_change(const Instant& in, const Body& body, double speed,
-                                 const std::vector<bool>& touched) {
+// How a body's motion changed at the instant: the kind of its event and the limiter it names.
+struct ModeChange {
+  EventKind kind;
+  int limiter;
+};
+
+// Phase 5's event for a body now in its mode: a member that reached zero speed (its body was
+// sliding) makes a reversal, or a stick where the body now holds; a member let go from a hold
+// makes a release if the body slides. None otherwise.
+std::optional<ModeChange> mode_change(const Instant& in, const Body& body,
+                                      const std::vector<bool>& touched) {
   bool reversed = false, released = false;
   int left = -1;  // the limiter a released member rested against
   for (int i : body.members) {
@@ -240,26 +245,18 @@ std::optional<Event> mode_change(const Instant& in, const Body& body, double spe
       if (held.mode == Mode::resting) left = held.limiter;
     }
   }
-  Event e;
-  if (reversed) {
-    e.kind = body.mode == Mode::sliding ? EventKind::reversal : EventKind::stick;
-    e.limiter = body.mode == Mode::resting ? body.limiter : -1;
-  } else if (released && body.mode == Mode::sliding) {
-    e.kind = EventKind::release;
-    e.limiter = left;
-  } else {
-    return std::nullopt;
-  }
-  e.pellets = body.members;
-  e.dphi_before.assign(body.members.size(), 0.0);
-  e.dphi_after.assign(body.members.size(), speed);
-  return e;
+  if (reversed)
+    return ModeChange{body.mode == Mode::sliding ? EventKind::reversal : EventKind::stick,
+                      body.mode == Mode::resting ? body.limiter : -1};
+  if (released && body.mode == Mode::sliding) return ModeChange{EventKind::release, left};
+  return std::nullopt;
 }
 
 // Phases 4 and 5 for one body of the join: its plastic merge, its chatter, its mode, its speed
-// written into y, and the event that says how its motion changed.
-void settle(const Instant& in, const std::vector<Event>& impacts, const std::vector<bool>& armed,
-            Body& body, Vec& y, InstantOutcome& out) {
+// written into y, and the event that says how its motion changed. The first `impacts` events
+// of `out` are the instant's impacts.
+void settle(const Instant& in, std::size_t impacts, const std::vector<bool>& armed, Body& body,
+            Vec& y, InstantOutcome& out) {
   const double phi = y[phi_index(body.leader())];
   const double a_free = body_free_acceleration(in.model, body, in.t, phi);
   Support support = support_of(body, in.contacts, armed);
@@ -270,9 +267,15 @@ void settle(const Instant& in, const std::vector<Event>& impacts, const std::vec
   set_mode(body, speed, support, a_free, capacity, pulled_way(body, in.contacts), in.tol);
   if (std::abs(speed) <= in.tol.v_eps) speed = 0.0;
   for (int i : body.members) y[dphi_index(i)] = speed;
-  const std::optional<Event> e = mode_change(in, body, speed, out.touched);
-  if (!e) return;
-  out.events.push_back(stamped(*e, in.t, y));
+  const std::optional<ModeChange> change = mode_change(in, body, out.touched);
+  if (!change) return;
+  Event& e = out.events.add();
+  e.kind = change->kind;
+  e.limiter = change->limiter;
+  e.pellets = body.members;
+  e.dphi_before.assign(body.members.size(), 0.0);
+  e.dphi_after.assign(body.members.size(), speed);
+  stamp(e, in.t, y);
   for (int i : body.members) out.touched[i] = true;
 }
 
@@ -291,16 +294,27 @@ std::vector<Body> initial_bodies(const Model& model, const Vec& y) {
   return bodies;
 }
 
+void resolve_instant(const Model& model, const EventTolerances& tol, const SlidingLaw& law,
+                     double t, const std::vector<Body>& before, const InstantContacts& contacts,
+                     Vec& y, std::vector<bool>& armed, InstantWorkspace& ws) {
+  arrive(model, before, y, ws.arrivals);
+  Instant in{model, tol, t, before, contacts, ws.arrivals};
+  InstantOutcome& out = ws.outcome;
+  out.events.clear();
+  out.touched.assign(model.size(), false);
+  out.kinetic_change = 0.0;
+  out.unordered = -1;
+  const std::size_t impacts = strike(in, y, armed, out, ws.impacts);
+  join_bodies(in, law, y, armed, ws);
+  for (Body& body : out.bodies) settle(in, impacts, armed, body, y, out);
+}
+
 InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, double t,
                                const std::vector<Body>& before, const InstantContacts& contacts,
                                Vec& y, std::vector<bool>& armed) {
-  Instant in{model, tol, t, before, contacts, arrivals(model, before, y)};
-  InstantOutcome out;
-  out.touched.assign(model.size(), false);
-  const std::vector<Event> impacts = strike(in, y, armed, out);
-  out.bodies = join_bodies(in, y, armed);
-  for (Body& body : out.bodies) settle(in, impacts, armed, body, y, out);
-  return out;
+  InstantWorkspace ws;
+  resolve_instant(model, tol, SlidingLaw(model), t, before, contacts, y, armed, ws);
+  return std::move(ws.outcome);
 }
 
 }  // namespace vibro

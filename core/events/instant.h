@@ -18,10 +18,12 @@
 
 #include "core/events/contacts.h"
 #include "core/events/event.h"
+#include "core/events/event_list.h"
 #include "core/events/event_tolerances.h"
 #include "core/events/impacts.h"
 #include "core/events/interval.h"
 #include "core/events/watch.h"
+#include "core/model/dynamics.h"
 #include "core/model/model.h"
 #include "core/model/motion.h"
 
@@ -48,7 +50,7 @@ struct InstantContacts {
 // What an instant leaves behind.
 struct InstantOutcome {
   std::vector<Body> bodies;     // the next interval's bodies, with their modes
-  std::vector<Event> events;    // with times and angles
+  EventList events;             // with times and angles
   std::vector<bool> touched;    // per pellet: its motion interval ends here
   double kinetic_change = 0.0;  // J: kinetic energy gained at the instant (≤ 0: impact losses)
   // A pellet two of the instant's impacts closed on at once (shared_by_closings), whose order
@@ -57,8 +59,39 @@ struct InstantOutcome {
   int unordered = -1;
 };
 
+// One pellet as the instant meets it, and the limiter its impacts struck.
+struct Arrival {
+  double v = 0.0;   // rad/s: its speed after the snap, before any impact
+  int body = -1;    // its body in the interval that ends at the instant (bodies partition pellets)
+  int struck = -1;  // the limiter it struck at this instant (its last such impact), or −1
+};
+
+// What a run's instants reuse from one to the next: the contacts the snap lists, the outcome
+// the phases leave, and their scratch. Everything in it is sized by the model (its pellets and
+// limiters are fixed) and by the instant's contacts, so a run's instants stop allocating once it
+// has met its largest. One per run (a run is one thread's).
+struct InstantWorkspace {
+  InstantContacts contacts;  // phase 1's result
+  InstantOutcome outcome;    // phases 2 to 5's
+  // Phase 1's scratch.
+  std::vector<bool> at_limiter;  // per pellet
+  std::vector<Crossing> ordered;
+  std::vector<LimiterContact> limiters;
+  std::vector<PairContact> apart;
+  Vec before_touching;  // the state before touching pellets are snapped onto one place
+  // Phases 2 to 5's.
+  std::vector<Arrival> arrivals;  // per pellet
+  std::vector<PairContact> joinable;
+  ImpactScratch impacts;
+  JoinScratch join;
+};
+
 // Phase 1 at the end of an interval: the crossings (sorted by time, within one instant) of the
-// interval's watches, snapped in y. `armed` says which limiters act.
+// interval's watches, snapped in y, into ws.contacts. `armed` says which limiters act.
+void snap(const Model& model, const EventTolerances& tol, const MotionInterval& interval,
+          const std::vector<Crossing>& crossings, const std::vector<Neighbours>& neighbours,
+          const std::vector<bool>& armed, Vec& y, InstantWorkspace& ws);
+// The same, returned.
 InstantContacts snap(const Model& model, const EventTolerances& tol, const MotionInterval& interval,
                      const std::vector<Crossing>& crossings,
                      const std::vector<Neighbours>& neighbours, const std::vector<bool>& armed,
@@ -70,8 +103,13 @@ InstantContacts initial_contacts(const Model& model, const EventTolerances& tol,
 // The bodies before the first instant: each pellet alone, stuck if it starts at rest.
 std::vector<Body> initial_bodies(const Model& model, const Vec& y);
 
-// Phases 2 to 5. `before` are the bodies of the interval that ends at t; y (speeds) and `armed`
-// are updated in place.
+// Phases 2 to 5, into ws.outcome. `before` are the bodies of the interval that ends at t (not
+// ws.outcome.bodies, which the join overwrites); y (speeds) and `armed` are updated in place.
+// `contacts` may be ws.contacts; `law` is the model's.
+void resolve_instant(const Model& model, const EventTolerances& tol, const SlidingLaw& law,
+                     double t, const std::vector<Body>& before, const InstantContacts& contacts,
+                     Vec& y, std::vector<bool>& armed, InstantWorkspace& ws);
+// The same, returned.
 InstantOutcome resolve_instant(const Model& model, const EventTolerances& tol, double t,
                                const std::vector<Body>& before, const InstantContacts& contacts,
                                Vec& y, std::vector<bool>& armed);

@@ -18,13 +18,30 @@ MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
                                const std::vector<Neighbours>& neighbours, double t, const Vec& y,
                                const EventTolerances& tol)
     : model_(model), bodies_(std::move(bodies)), dynamics_(model, bodies_, y) {
+  open(armed, neighbours, t, y, tol);
+}
+
+void MotionInterval::reopen(std::vector<Body>& bodies, const std::vector<bool>& armed,
+                            const std::vector<Neighbours>& neighbours, double t, const Vec& y,
+                            const EventTolerances& tol) {
+  bodies_.swap(bodies);
+  watches_.clear();
+  first_integrals_.clear();
+  anything_moves_ = false;
+  forced_rest_ = false;
+  dynamics_.reset(y);
+  open(armed, neighbours, t, y, tol);
+}
+
+void MotionInterval::open(const std::vector<bool>& armed, const std::vector<Neighbours>& neighbours,
+                          double t, const Vec& y, const EventTolerances& tol) {
   const PlaceRadii radii = place_radii(tol, y);
   for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) add_body_watches(b, armed, y, radii);
-  Vec dydt(y.size());
-  dynamics_.rhs(t, y, dydt);
-  deflate_reversals_from_rest(t, y, dydt);
-  if (model.friction != FrictionLaw::paper) add_normal_watches(t, y, dydt);
-  add_gap_watches(neighbours, t, y, dydt, radii.contact, tol.v_eps);
+  dydt_.resize(y.size());
+  dynamics_.rhs(t, y, dydt_);
+  deflate_reversals_from_rest(t, y, dydt_);
+  if (model_.friction != FrictionLaw::paper) add_normal_watches(t, y, dydt_);
+  add_gap_watches(neighbours, t, y, dydt_, radii.contact, tol.v_eps);
 }
 
 void MotionInterval::add_body_watches(int b, const std::vector<bool>& armed, const Vec& y,
@@ -80,7 +97,8 @@ void MotionInterval::add_normal_watches(double t, const Vec& y, const Vec& dydt)
 
 void MotionInterval::add_gap_watches(const std::vector<Neighbours>& neighbours, double t,
                                      const Vec& y, const Vec& dydt, double contact, double v_eps) {
-  std::vector<int> body_of(model_.size());
+  std::vector<int>& body_of = body_of_;
+  body_of.resize(model_.size());
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     for (int i : bodies_[b].members) body_of[i] = static_cast<int>(b);
   for (const Neighbours& nb : neighbours) {

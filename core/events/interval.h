@@ -22,6 +22,12 @@ class MotionInterval {
   MotionInterval(const Model& model, std::vector<Body> bodies, const std::vector<bool>& armed,
                  const std::vector<Neighbours>& neighbours, double t, const Vec& y,
                  const EventTolerances& tol);
+  // Becomes the interval that starts at (t, y) with `bodies`, in place of this one, whose
+  // storage it reuses: it takes the contents of `bodies` and leaves there the bodies it had
+  // (their storage for the caller's next ones).
+  void reopen(std::vector<Body>& bodies, const std::vector<bool>& armed,
+              const std::vector<Neighbours>& neighbours, double t, const Vec& y,
+              const EventTolerances& tol);
   // The dynamics read the bodies in place.
   MotionInterval(const MotionInterval&) = delete;
   MotionInterval& operator=(const MotionInterval&) = delete;
@@ -37,6 +43,9 @@ class MotionInterval {
   double first_integral_residual(const Vec& y) const;
 
  private:
+  // The watches and first integrals of the bodies_ from (t, y), into empty lists.
+  void open(const std::vector<bool>& armed, const std::vector<Neighbours>& neighbours, double t,
+            const Vec& y, const EventTolerances& tol);
   // A body's own watches: a sliding one's reversal and next limiter (and its first integral,
   // where one applies), a held one's release if a force can pull it, each cut's separation.
   void add_body_watches(int b, const std::vector<bool>& armed, const Vec& y,
@@ -59,6 +68,9 @@ class MotionInterval {
   SegmentDynamics dynamics_;                                   // reads bodies_, declared before it
   bool anything_moves_ = false;
   bool forced_rest_ = false;
+  // Scratch of open(): the state's rates at the start, and each pellet's body.
+  Vec dydt_;
+  std::vector<int> body_of_;
 };
 
 }  // namespace vibro

@@ -10,6 +10,7 @@
 //   met_limiters         a pellet meets a limiter only if none lies between them
 #include <algorithm>
 #include <cmath>
+#include <utility>
 
 #include "core/events/instant.h"
 #include "core/model/dynamics.h"
@@ -32,11 +33,10 @@ bool held_on_angle(const Model& model, const PlaceRadii& radii, const std::vecto
 // limiter that holds them (one sliding away after a stop went past its limiter by round-off);
 // with each of them its body, whose members lie at one place (a member the limiter does not stop
 // was moved halfway, taking the body off the angle).
-std::vector<bool> on_limiters(const Model& model, const PlaceRadii& radii,
-                              const std::vector<Body>& bodies, const std::vector<bool>& armed,
-                              const Vec& y) {
+void on_limiters(const Model& model, const PlaceRadii& radii, const std::vector<Body>& bodies,
+                 const std::vector<bool>& armed, const Vec& y, std::vector<bool>& on) {
   const int n = model.size();
-  std::vector<bool> on(n, false);
+  on.assign(n, false);
   for (const Body& body : bodies)
     if (body.mode == Mode::resting)
       for (int i : body.members) on[i] = true;
@@ -46,7 +46,6 @@ std::vector<bool> on_limiters(const Model& model, const PlaceRadii& radii,
   for (const Body& body : bodies)
     if (std::any_of(body.members.begin(), body.members.end(), [&](int i) { return on[i]; }))
       for (int i : body.members) on[i] = true;
-  return on;
 }
 
 // The side of a limiter a pellet starting on its angle is on: away from where it moves, or
@@ -248,10 +247,11 @@ void add_standing(const Model& model, const EventTolerances& tol, const PlaceRad
 // Each contact moved to the pellet nearest its limiter, without repeats: two bodies arriving
 // together at a limiter, the limiter meets the frontmost pellet, not the one behind (taken as
 // touching it, that one put the limiter between itself and the body ahead).
-std::vector<LimiterContact> frontmost(const Model& model, const PlaceRadii& radii,
-                                      const std::vector<Neighbours>& neighbours,
-                                      const std::vector<LimiterContact>& limiters, const Vec& y) {
-  std::vector<LimiterContact> fronts;
+void frontmost(const Model& model, const PlaceRadii& radii,
+               const std::vector<Neighbours>& neighbours,
+               const std::vector<LimiterContact>& limiters, const Vec& y,
+               std::vector<LimiterContact>& fronts) {
+  fronts.clear();
   for (LimiterContact lc : limiters) {
     for (int guard = 0; guard < model.size(); ++guard) {
       const int q =
@@ -261,19 +261,17 @@ std::vector<LimiterContact> frontmost(const Model& model, const PlaceRadii& radi
     }
     if (std::find(fronts.begin(), fronts.end(), lc) == fronts.end()) fronts.push_back(lc);
   }
-  return fronts;
 }
 
 // The neighbours an armed limiter between them keeps apart.
-std::vector<PairContact> kept_apart(const Model& model, const std::vector<Neighbours>& neighbours,
-                                    const std::vector<LimiterContact>& limiters,
-                                    const std::vector<bool>& armed) {
-  std::vector<PairContact> apart;
+void kept_apart(const Model& model, const std::vector<Neighbours>& neighbours,
+                const std::vector<LimiterContact>& limiters, const std::vector<bool>& armed,
+                std::vector<PairContact>& apart) {
+  apart.clear();
   for (const Neighbours& nb : neighbours) {
     const PairContact pair{nb.behind, nb.ahead};
     if (separated_by_limiter(model, limiters, armed, pair)) apart.push_back(pair);
   }
-  return apart;
 }
 
 // A pellet snapped onto a limiter's angle (onto a pellet there that the limiter does not stop)
@@ -331,54 +329,77 @@ int meets_limiter(const LimiterContact& c, const InstantContacts& contacts, cons
 
 // The limiter contacts that remain once each is given to the pellet its limiter meets, without
 // repeats: a pellet meets a limiter only if no pellet lies between them.
-std::vector<LimiterContact> met_limiters(const Model& model, const InstantContacts& c) {
-  std::vector<LimiterContact> met;
+void met_limiters(const Model& model, const InstantContacts& c, std::vector<LimiterContact>& met) {
+  met.clear();
   for (const LimiterContact& contact : c.limiters) {
     const int pellet = meets_limiter(contact, c, model);
     const LimiterContact m{pellet, contact.limiter, contact.side};
     if (pellet >= 0 && std::find(met.begin(), met.end(), m) == met.end()) met.push_back(m);
   }
-  return met;
 }
 
-InstantContacts no_contacts(int n) {
-  InstantContacts c;
-  c.pellets.assign(n, {});
-  return c;
+// No contacts yet, for n pellets (the storage kept).
+void no_contacts(int n, InstantContacts& c) {
+  c.limiters.clear();
+  c.pairs.clear();
+  c.parting.clear();
+  c.pellets.assign(n, PelletAtInstant{});
+}
+
+// The crossings with the limiter arrivals first, each part in its order.
+void limiters_first(const MotionInterval& interval, const std::vector<Crossing>& crossings,
+                    std::vector<Crossing>& ordered) {
+  ordered.clear();
+  auto arrival = [&](const Crossing& x) {
+    return interval.watches()[x.watch].kind == WatchKind::limiter;
+  };
+  for (const Crossing& x : crossings)
+    if (arrival(x)) ordered.push_back(x);
+  for (const Crossing& x : crossings)
+    if (!arrival(x)) ordered.push_back(x);
 }
 
 }  // namespace
+
+void snap(const Model& model, const EventTolerances& tol, const MotionInterval& interval,
+          const std::vector<Crossing>& crossings, const std::vector<Neighbours>& neighbours,
+          const std::vector<bool>& armed, Vec& y, InstantWorkspace& ws) {
+  InstantContacts& c = ws.contacts;
+  no_contacts(model.size(), c);
+  // One set of radii for the whole instant, from the angles before any snap.
+  const PlaceRadii radii = place_radii(tol, y);
+  std::vector<bool>& at_limiter = ws.at_limiter;
+  on_limiters(model, radii, interval.bodies(), armed, y, at_limiter);
+  // Arrivals at limiters first: a pellet that meets one arriving at the same instant meets it on
+  // the limiter's angle, not halfway.
+  limiters_first(interval, crossings, ws.ordered);
+  for (const Crossing& crossing : ws.ordered)
+    snap_crossing(model, interval, crossing, y, at_limiter, c);
+  add_standing(model, tol, radii, interval, neighbours, y, c.limiters);
+  frontmost(model, radii, neighbours, c.limiters, y, ws.limiters);
+  std::swap(c.limiters, ws.limiters);
+  for (const LimiterContact& lc : c.limiters) at_limiter[lc.pellet] = true;
+  kept_apart(model, neighbours, c.limiters, armed, ws.apart);
+  ws.before_touching = y;
+  snap_touching(y, neighbours, radii.contact, at_limiter, ws.apart, c.pairs);
+  add_snapped_on_angle(model, radii, armed, ws.before_touching, y, c.limiters);
+  add_body_pairs(interval.bodies(), c.pairs);
+  met_limiters(model, c, ws.limiters);
+  std::swap(c.limiters, ws.limiters);
+}
 
 InstantContacts snap(const Model& model, const EventTolerances& tol, const MotionInterval& interval,
                      const std::vector<Crossing>& crossings,
                      const std::vector<Neighbours>& neighbours, const std::vector<bool>& armed,
                      Vec& y) {
-  InstantContacts c = no_contacts(model.size());
-  // One set of radii for the whole instant, from the angles before any snap.
-  const PlaceRadii radii = place_radii(tol, y);
-  std::vector<bool> at_limiter = on_limiters(model, radii, interval.bodies(), armed, y);
-  // Arrivals at limiters first: a pellet that meets one arriving at the same instant meets it on
-  // the limiter's angle, not halfway.
-  std::vector<Crossing> ordered = crossings;
-  std::stable_partition(ordered.begin(), ordered.end(), [&](const Crossing& x) {
-    return interval.watches()[x.watch].kind == WatchKind::limiter;
-  });
-  for (const Crossing& crossing : ordered)
-    snap_crossing(model, interval, crossing, y, at_limiter, c);
-  add_standing(model, tol, radii, interval, neighbours, y, c.limiters);
-  c.limiters = frontmost(model, radii, neighbours, c.limiters, y);
-  for (const LimiterContact& lc : c.limiters) at_limiter[lc.pellet] = true;
-  const std::vector<PairContact> apart = kept_apart(model, neighbours, c.limiters, armed);
-  const Vec unsnapped = y;
-  snap_touching(y, neighbours, radii.contact, at_limiter, apart, c.pairs);
-  add_snapped_on_angle(model, radii, armed, unsnapped, y, c.limiters);
-  add_body_pairs(interval.bodies(), c.pairs);
-  c.limiters = met_limiters(model, c);
-  return c;
+  InstantWorkspace ws;
+  snap(model, tol, interval, crossings, neighbours, armed, y, ws);
+  return std::move(ws.contacts);
 }
 
 InstantContacts initial_contacts(const Model& model, const EventTolerances& tol, Vec& y) {
-  InstantContacts c = no_contacts(model.size());
+  InstantContacts c;
+  no_contacts(model.size(), c);
   for (int i = 0; i < model.size(); ++i) {
     const double phi = y[phi_index(i)];
     for (int l = 0; l < limiter_count(model); ++l) {

@@ -67,15 +67,20 @@ double longest_step(const Model& model) {
 
 SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bodies, const Vec& y)
     : model_(model), bodies_(bodies), law_(model) {
-  mass_.reserve(bodies.size());
-  damping_.reserve(bodies.size());
-  normal_side_.reserve(bodies.size());
-  for (const Body& b : bodies) {
-    mass_.push_back(body_mass(model, b));
-    damping_.push_back(body_damping(model, b));
+  reset(y);
+}
+
+void SegmentDynamics::reset(const Vec& y) {
+  mass_.clear();
+  damping_.clear();
+  normal_side_.clear();
+  damped_ = false;
+  for (const Body& b : bodies_) {
+    mass_.push_back(body_mass(model_, b));
+    damping_.push_back(body_damping(model_, b));
     const int L = b.leader();
-    normal_side_.push_back(normal_per_mass(model, y[phi_index(L)], y[dphi_index(L)]) >= 0.0 ? 1
-                                                                                            : -1);
+    normal_side_.push_back(normal_per_mass(model_, y[phi_index(L)], y[dphi_index(L)]) >= 0.0 ? 1
+                                                                                             : -1);
     damped_ = damped_ || damping_.back() != 0.0;
   }
 }

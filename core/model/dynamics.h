@@ -90,6 +90,9 @@ class SegmentDynamics final : public OdeSystem {
  public:
   // The bilateral law's normal force of each sliding body is taken on the side it has at y.
   SegmentDynamics(const Model& model, const std::vector<Body>& bodies, const Vec& y);
+  // The equations of the bodies now in the vector it reads (a new interval's), the bilateral
+  // law's sides again from y; its storage kept.
+  void reset(const Vec& y);
   // Sets a body's side of the normal force's zero (±1): one starting on the zero takes the side
   // it moves to.
   void set_normal_side(int body, int side) { normal_side_[body] = side; }

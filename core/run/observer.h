@@ -27,7 +27,7 @@ struct InstantView {
   const Vec& y_before;
   const std::vector<Body>& bodies_before;
   // What happened, in order, at their own times (a chatter may accumulate past t_end).
-  const std::vector<Event>& events;
+  std::span<const Event> events;
   const std::vector<Body>& bodies_after;
   const std::vector<bool>& touched;  // per pellet: an event ended its motion interval
   double kinetic_change = 0.0;       // J: what the impacts changed

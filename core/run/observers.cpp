@@ -97,7 +97,7 @@ void PathKeeper::on_instant(const InstantView& in) {
     path_.push_back({in.t,
                      in.bodies_before,
                      to_vector(in.y_before),
-                     in.events,
+                     {in.events.begin(), in.events.end()},
                      in.bodies_after,
                      {},
                      to_vector(in.y_after),

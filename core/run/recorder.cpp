@@ -137,17 +137,25 @@ void Recorder::close_warning(int pellet, double t) {
     warning_of_[pellet] = static_cast<int>(warnings_.size());
     stretches_[pellet] = 0;
     warnings_.push_back({"negative_normal_force", "", pellet, since, t});
+    warning_stretches_.push_back(0);
   }
-  Warning& warning = warnings_[warning_of_[pellet]];
-  warning.t_end = t;
-  const int n = ++stretches_[pellet];
-  std::ostringstream msg;
-  msg << "pellet " << pellet + 1 << ": the normal force g cos(phi) + R dphi^2 is negative ";
-  if (n > 1) msg << "in " << n << " stretches, each sooner after the last than it lasted, ";
-  msg << "from t = " << warning.t_begin << " s to " << t
-      << " s; there the paper's friction law pushes the pellet along (not physical)";
-  warning.message = msg.str();
+  warnings_[warning_of_[pellet]].t_end = t;
+  warning_stretches_[warning_of_[pellet]] = ++stretches_[pellet];
 }
+
+namespace {
+
+// The message of a negative-normal-force warning that holds n stretches.
+std::string negative_normal_message(const Warning& warning, int n) {
+  std::ostringstream msg;
+  msg << "pellet " << warning.pellet + 1 << ": the normal force g cos(phi) + R dphi^2 is negative ";
+  if (n > 1) msg << "in " << n << " stretches, each sooner after the last than it lasted, ";
+  msg << "from t = " << warning.t_begin << " s to " << warning.t_end
+      << " s; there the paper's friction law pushes the pellet along (not physical)";
+  return msg.str();
+}
+
+}  // namespace
 
 void Recorder::end_branch(int pellet) {
   if (track_of_[pellet] >= 0) flush_pending(track_of_[pellet]);
@@ -157,6 +165,8 @@ void Recorder::end_branch(int pellet) {
 void Recorder::finish(double t, RunResult& result) {
   for (std::size_t k = 0; k < tracks_.size(); ++k) flush_pending(static_cast<int>(k));
   for (int i = 0; i < model_.size(); ++i) close_warning(i, t);
+  for (std::size_t w = 0; w < warnings_.size(); ++w)
+    warnings_[w].message = negative_normal_message(warnings_[w], warning_stretches_[w]);
   result.tracks = std::move(tracks_);
   result.warnings = std::move(warnings_);
 }

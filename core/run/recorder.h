@@ -66,7 +66,8 @@ class Recorder {
   std::vector<double> stretch_length_;
   std::vector<int> warning_of_;
   std::vector<int> stretches_;
-  std::vector<Warning> warnings_;
+  std::vector<Warning> warnings_;       // their messages written at finish()
+  std::vector<int> warning_stretches_;  // per warning: the stretches it holds
 };
 
 }  // namespace vibro

@@ -33,7 +33,7 @@ Vec initial_state(const Model& model) {
 
 // An instant of reversals alone leaves the state as it was and every body sliding: the stepper
 // goes on with its step size (Stepper::continue_smoothly).
-bool only_reversals(const std::vector<Event>& events) {
+bool only_reversals(const EventList& events) {
   return !events.empty() && std::all_of(events.begin(), events.end(), [](const Event& e) {
     return e.kind == EventKind::reversal;
   });

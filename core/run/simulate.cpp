@@ -25,9 +25,12 @@ class Simulation : RunState {
   RunResult run();
 
  private:
-  std::vector<Body> instant(double t, const std::vector<Body>& before,
-                            const InstantContacts& contacts, const Vec* unsnapped);
-  void open_interval(double t, std::vector<Body> bodies);
+  // Resolves an instant at t and tells the observers; its outcome is instant_.outcome.
+  void instant(double t, const std::vector<Body>& before, const InstantContacts& contacts,
+               const Vec* unsnapped);
+  // Opens the interval of the last instant's bodies, taken from instant_.outcome (which gets the
+  // storage of the interval's previous bodies back).
+  void open_interval(double t);
   // Integrates the open interval until its first event (true) or t_end or a stop (false).
   bool integrate_to_event(double& t, std::vector<Crossing>& found);
   // The step's first crossings, searched on its dense output (first: its first sample searched).
@@ -36,25 +39,29 @@ class Simulation : RunState {
   std::optional<MotionInterval> interval_;
   CrossingFinder finder_;
   RootPolisher polisher_{model_};
-  Vec unsnapped_;  // the state before an instant's snap
-  Vec y_before_;   // the state an instant starts from, snapped
+  const SlidingLaw law_{model_};
+  InstantWorkspace instant_;  // the instants' contacts, outcome and scratch
+  Vec unsnapped_;             // the state before an instant's snap
+  Vec y_before_;              // the state an instant starts from, snapped
 };
 
-// Resolves an instant at t and tells the observers; returns the next interval's bodies.
-std::vector<Body> Simulation::instant(double t, const std::vector<Body>& before,
-                                      const InstantContacts& contacts, const Vec* unsnapped) {
+void Simulation::instant(double t, const std::vector<Body>& before, const InstantContacts& contacts,
+                         const Vec* unsnapped) {
   y_before_ = y_;
-  InstantOutcome out =
-      resolve_instant(model_, unsnapped ? tol_ : start_tol_, t, before, contacts, y_, armed_);
+  resolve_instant(model_, unsnapped ? tol_ : start_tol_, law_, t, before, contacts, y_, armed_,
+                  instant_);
+  const InstantOutcome& out = instant_.outcome;
   note_instant(t, out);
-  const InstantView view{t,          unsnapped,   y_before_,          before, out.events,
+  const InstantView view{t,          unsnapped,   y_before_,          before, out.events.view(),
                          out.bodies, out.touched, out.kinetic_change, y_};
   for (RunObserver* o : observers_) o->on_instant(view);
-  return std::move(out.bodies);
 }
 
-void Simulation::open_interval(double t, std::vector<Body> bodies) {
-  interval_.emplace(model_, std::move(bodies), armed_, neighbours_, t, y_, tol_);
+void Simulation::open_interval(double t) {
+  if (interval_)
+    interval_->reopen(instant_.outcome.bodies, armed_, neighbours_, t, y_, tol_);
+  else
+    interval_.emplace(model_, std::move(instant_.outcome.bodies), armed_, neighbours_, t, y_, tol_);
   if (smooth_)
     stepper_.continue_smoothly(interval_->dynamics(), t, y_);
   else
@@ -116,11 +123,15 @@ RunResult Simulation::run() {
   for (RunObserver* o : observers_) o->on_start(y_);
   double t = 0.0;
   const InstantContacts start = initial_contacts(model_, tol_, y_);
-  std::vector<Body> bodies = instant(0.0, initial_bodies(model_, y_), start, nullptr);
+  instant(0.0, initial_bodies(model_, y_), start, nullptr);
+  // The last instant's bodies (until an interval takes them).
+  const std::vector<Body>& bodies = instant_.outcome.bodies;
   settled(0.0, bodies);
+  bool opened = false;  // the last instant's bodies went to an interval
   std::vector<Crossing> found;
   while (!stopped_ && !ended_ && t < opt_.t_end) {
-    open_interval(t, std::exchange(bodies, {}));
+    open_interval(t);
+    opened = true;
     if (interval_->at_rest_for_good()) {
       t = opt_.t_end;
       settled(t, interval_->bodies());
@@ -128,8 +139,9 @@ RunResult Simulation::run() {
     }
     if (!integrate_to_event(t, found) || !advances(t)) break;
     unsnapped_ = y_;
-    const InstantContacts contacts = snap(model_, tol_, *interval_, found, neighbours_, armed_, y_);
-    bodies = instant(t, interval_->bodies(), contacts, &unsnapped_);
+    snap(model_, tol_, *interval_, found, neighbours_, armed_, y_, instant_);
+    instant(t, interval_->bodies(), instant_.contacts, &unsnapped_);
+    opened = false;
     settled(t, bodies);
     over_budget(t);
   }
@@ -137,8 +149,8 @@ RunResult Simulation::run() {
     t = std::max(t, opt_.t_end);
   else if (!std::isfinite(y_.sum()))
     y_ = stepper_.y();  // the last finite state
-  const bool at_rest = bodies.empty() && interval_->at_rest_for_good();
-  const std::vector<Body>& last = bodies.empty() ? interval_->bodies() : bodies;
+  const bool at_rest = opened && interval_->at_rest_for_good();
+  const std::vector<Body>& last = opened ? interval_->bodies() : bodies;
   const MotionInterval* open = interval_ ? &*interval_ : nullptr;
   const EndView end{t, std::min(t, opt_.t_end), y_, last, open, stopped_, ended_, at_rest};
   return finish(end, finder_.first_graze());

@@ -50,7 +50,8 @@ TEST(Contacts, NearTouchingPelletsAreSnappedOntoOnePlaceTheOneAtALimiterStayingP
   Vec y = angles({0.3, 0.3 + 1e-12, 1.0});
   std::vector<Neighbours> nb = circular_neighbours(y, 3);
   std::vector<PairContact> pairs;
-  snap_touching(y, nb, 1e-10, {false, false, false}, none, pairs);
+  std::vector<bool> at_limiter = {false, false, false};
+  snap_touching(y, nb, 1e-10, at_limiter, none, pairs);
   EXPECT_EQ(y[phi_index(1)], 0.3);
   EXPECT_EQ(y[phi_index(2)], 1.0);  // far from both: untouched
   ASSERT_EQ(pairs.size(), 1u);
@@ -58,12 +59,14 @@ TEST(Contacts, NearTouchingPelletsAreSnappedOntoOnePlaceTheOneAtALimiterStayingP
   // The one ahead at a limiter: the one behind comes to it.
   y = angles({0.3, 0.3 + 1e-12, 1.0});
   pairs.clear();
-  snap_touching(y, nb, 1e-10, {false, true, false}, none, pairs);
+  at_limiter = {false, true, false};
+  snap_touching(y, nb, 1e-10, at_limiter, none, pairs);
   EXPECT_EQ(y[phi_index(0)], 0.3 + 1e-12);
   // A limiter between them: they never touch.
   y = angles({0.3, 0.3 + 1e-12, 1.0});
   pairs.clear();
-  snap_touching(y, nb, 1e-10, {false, false, false}, {{0, 1}}, pairs);
+  at_limiter = {false, false, false};
+  snap_touching(y, nb, 1e-10, at_limiter, {{0, 1}}, pairs);
   EXPECT_TRUE(pairs.empty());
   EXPECT_EQ(y[phi_index(1)], 0.3 + 1e-12);
 }
@@ -73,7 +76,8 @@ TEST(Contacts, NearTouchingPelletsSnapAlongAChainOntoTheOneAtALimiter) {
   Vec y = angles({0.3 - 2e-12, 0.3 - 1e-12, 0.3});
   const std::vector<Neighbours> nb = circular_neighbours(y, 3);
   std::vector<PairContact> pairs;
-  snap_touching(y, nb, 1e-10, {false, false, true}, {}, pairs);
+  std::vector<bool> at_limiter = {false, false, true};
+  snap_touching(y, nb, 1e-10, at_limiter, {}, pairs);
   EXPECT_EQ(y[phi_index(0)], 0.3);
   EXPECT_EQ(y[phi_index(1)], 0.3);
   EXPECT_EQ(pairs.size(), 2u);
