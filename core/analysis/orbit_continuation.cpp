@@ -502,6 +502,8 @@ class Continuation {
   void walk_off_grazing(const GrazingImpact& impact, double grazing);
   bool walk_on_impact();
   void report_grazing(double value, const Vec& x, bool impacting);
+  bool admit(const Point& pt);
+  bool record(const Point& pt);
   void restart_at(Point next);
   // The way the branch goes in the parameter's own units (+1: to larger values).
   double heading() const { return t_[n_] * unit_ > 0.0 ? 1.0 : -1.0; }
@@ -551,6 +553,7 @@ class Continuation {
   double ds_ = 0.0;
   std::size_t jump_tried_at_ = 0;  // branch points when the last grazing jump was tried
   double walk_ = 2e-3;             // walk_on_impact's step, of the unit
+  bool ended_ = false;             // a point was inadmissible (admit): the branch ends before it
 };
 
 OrbitBranch Continuation::run() {
@@ -565,9 +568,10 @@ OrbitBranch Continuation::run() {
   keep_clear();
   t_ = tangent(here_, t_);
   sig_ = signature(here_, t_, map_.band());
-  branch_.points.push_back(branch_point(map_, here_));
+  record(here_);
   ds_ = std::min(0.05, 2.0 / spec_.max_points);
   while (static_cast<int>(branch_.points.size()) < spec_.max_points) {
+    if (ended_) return branch_;
     if (cancelled()) {
       branch_.message = "cancelled";
       return branch_;
@@ -598,6 +602,7 @@ OrbitBranch Continuation::run() {
     }
     move_to(std::move(next));
   }
+  if (ended_) return branch_;
   std::ostringstream why;
   why << "stopped at " << spec_.parameter << " = " << branch_.points.back().value << " after "
       << spec_.max_points << " points (periodic_orbit.continuation.max_points)";
@@ -823,13 +828,14 @@ std::optional<Continuation::Step> Continuation::step_on_impact(const GrazingImpa
 // Takes `next` as the branch's next point, its bifurcations noted; false where it is past `to`
 // (the branch then ends there).
 bool Continuation::take(Step next) {
+  if (ended_) return false;
   note_bifurcations(next);
   if (past_to(next.point)) {
     finish_at_to(next.point);
     return false;
   }
   move_to(std::move(next));
-  return true;
+  return !ended_;
 }
 
 // Just past a grazing from the non-impacting side the map's square root is still close: the
@@ -879,7 +885,33 @@ void Continuation::report_grazing(double value, const Vec& x, bool impacting) {
   branch_.bifurcations.push_back(
       {BifurcationKind::grazing, value, map_.section_state(v), {}, {}, impacting});
   const Point at = map_.evaluate(v);
-  if (at.ok) branch_.points.push_back(branch_point(map_, at));
+  if (at.ok) record(at);
+}
+
+// Whether the motion at pt is one the scene's pellets can make: each in the turn of every fixed
+// limiter acting on it that it starts in, on its own side of one it lies on (decided from its
+// motion), and the pellets in the order they start in (off_own_side). The map refuses to run
+// from a state that is not; this check stands at every point the branch takes, so that a jump
+// that lands on another motion ends the branch, saying why, and never reaches `to` on it.
+bool Continuation::admit(const Point& pt) {
+  if (ended_) return false;
+  const double p = map_.value(pt.v);
+  const std::optional<std::string> off = off_own_side(map_.at(p), map_.state(pt.v));
+  if (!off) return true;
+  std::ostringstream why;
+  why << "the branch ends at " << spec_.parameter << " = " << p << ": the motion there puts "
+      << *off;
+  branch_.message = why.str();
+  branch_.reached = false;
+  ended_ = true;
+  return false;
+}
+
+// Adds pt to the branch where it is admissible (admit).
+bool Continuation::record(const Point& pt) {
+  if (!admit(pt)) return false;
+  branch_.points.push_back(branch_point(map_, pt));
+  return true;
 }
 
 // Goes on from `next`, a motion just past a grazing, along the parameter the way the branch went,
@@ -890,7 +922,7 @@ void Continuation::restart_at(Point next) {
   t_ = tangent(here_, way * along_parameter());
   keep_clear();
   sig_ = signature(here_, t_, map_.band());
-  branch_.points.push_back(branch_point(map_, here_));
+  record(here_);
   ds_ = 1e-3;
 }
 
@@ -918,7 +950,7 @@ std::vector<BranchPoint> Continuation::walk_back(const Point& across, double ste
     Vec predicted = walk.v;
     predicted[n_] = here_.v[n_] + way * dp;
     const Point p = correct(map_, predicted, along_parameter(), tol_);
-    if (!p.ok) break;
+    if (!p.ok || off_own_side(map_.at(map_.value(p.v)), map_.state(p.v))) break;
     nearer.push_back(branch_point(map_, p));
     walk = p;
   }
@@ -971,7 +1003,7 @@ void Continuation::finish_at_to(const Point& next) {
     on[n_] = end_;
     end = correct(map_, on, along_parameter(), tol_);
   }
-  branch_.points.push_back(branch_point(map_, end.ok ? end : next));
+  if (!record(end.ok ? end : next)) return;
   branch_.reached = true;
   if (progress_) progress_(1.0);
 }
@@ -981,6 +1013,7 @@ void Continuation::move_to(Step next) {
   t_ = std::move(next.t);
   keep_clear();
   sig_ = signature(here_, t_, map_.band());
+  if (!admit(here_)) return;
   // Steps shortened to a crawl (before a grazing) add nothing a figure shows.
   if (std::abs(map_.value(here_.v) - branch_.points.back().value) > 1e-6 * std::abs(unit_) ||
       ds_ > 1e-4)

@@ -266,5 +266,41 @@ TEST(OrbitGrazing, TheBranchCrossesTheGrazingFromTheNonImpactingSide) {
   }
 }
 
+// Pellet 2, unforced, rests on its own stop (acting on it alone) from above, and the forced
+// pellet 1 swings up toward it: at A = δ it grazes pellet 2, a collision of zero speed. With pellet
+// 2 started exactly on the stop's angle, the side of the stop it is on is decided from its motion
+// (gravity presses it down onto the stop: above it), as the simulator decides it. The crossing
+// past that grazing used to land on the pellets swapped, pellet 2 below its own stop, a motion
+// the scene never reaches, report the grazing 1.4e-3 off and run on to `to` on it without a word.
+// Now every branch point is checked: the grazing is found where the start off the stop's angle
+// (phi0 = 0.0011, pellet 2 falling onto the stop) finds it, and the branch ends there saying why.
+TEST(OrbitGrazing, APelletStartedOnItsStopStaysOnItsOwnSideAlongTheBranch) {
+  for (double phi0 : {0.0010478, 0.0011}) {
+    SCOPED_TRACE(testing::Message() << "pellet 2 from " << phi0);
+    Model m = stop_scene(0.0005139459, 3.0563183734683137, 0.0, 0.001, 0.0, 0.0010478, 0.8);
+    m.pellets.push_back({kMass, phi0, 0.0, {}});
+    m.limiters[0].pellets = {1};
+    OrbitSpec spec;
+    spec.transient = 0;
+    spec.guess = {{0.001, 0.0}, {0.0010478, 0.0}};
+    const PeriodicOrbit start = find_periodic_orbit(m, tight(), spec);
+    ASSERT_TRUE(start.converged) << start.message;
+    ContinuationSpec c;
+    c.parameter = "model.pellets[0].Omega";
+    c.to = 3.3220851885525153;
+    c.max_points = 300;
+    const OrbitBranch b = continue_orbit(m, tight(), start, c);
+    EXPECT_FALSE(b.reached);
+    EXPECT_FALSE(b.message.empty());
+    const std::vector<double> g = grazings(b);
+    ASSERT_EQ(g.size(), 1u) << b.message;
+    EXPECT_NEAR(g.front(), 3.132086, 1e-6);
+    for (const BranchPoint& p : b.points) {
+      EXPECT_GE(p.state[1].phi, 0.0010478 * (1.0 - 1e-9)) << "at Ω = " << p.value;
+      EXPECT_LE(p.state[0].phi, p.state[1].phi * (1.0 + 1e-9)) << "at Ω = " << p.value;
+    }
+  }
+}
+
 }  // namespace
 }  // namespace vibro
