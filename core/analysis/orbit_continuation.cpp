@@ -494,7 +494,7 @@ class Continuation {
   bool cross_grazing();
   bool jump_grazing();
   bool jump_from_impacting(const SlowImpact& slow);
-  bool jump_from_free();
+  bool jump_from_free(const Turn& turn);
   std::optional<Point> impacting_at(const GrazingImpact& impact, double p, double time,
                                     const Vec& before) const;
   std::optional<Step> step_on_impact(const GrazingImpact& impact, double p) const;
@@ -504,7 +504,7 @@ class Continuation {
   void report_grazing(double value, const Vec& x, bool impacting);
   bool admit(const Point& pt);
   bool record(const Point& pt);
-  void restart_at(Point next);
+  void restart_at(Point next, bool turned = false);
   // The way the branch goes in the parameter's own units (+1: to larger values).
   double heading() const { return t_[n_] * unit_ > 0.0 ? 1.0 : -1.0; }
   struct Grazing;
@@ -745,8 +745,15 @@ std::optional<Continuation::Grazing> Continuation::grazing_ahead(const GrazingIm
 bool Continuation::jump_grazing() {
   for (const Limiter& l : map_.at(map_.value(here_.v)).limiters)
     if (l.mobile) return false;
+  // The stop grazed is the limiter whose gap's minimum touches zero: the slowest limiter impact
+  // (its speed times the time scale) or the turn nearest a limiter, whichever is nearer zero. A
+  // motion that strikes one stop fast may graze another from its free side.
+  const Model here = map_.at(map_.value(here_.v));
   const SlowImpact slow = slowest_impact(here_.map.run);
-  return slow.pellet >= 0 ? jump_from_impacting(slow) : jump_from_free();
+  const Turn turn = nearest_turn(here, here_.map.run);
+  if (slow.pellet >= 0 && (turn.pellet < 0 || slow.speed * time_scale(here) <= turn.gap))
+    return jump_from_impacting(slow);
+  return jump_from_free(turn);
 }
 
 // On the impacting side near a grazing: the impact's speed goes to zero like a square root of
@@ -773,22 +780,28 @@ bool Continuation::jump_from_impacting(const SlowImpact& slow) {
 // the corrector on the map cannot step onto (the square root): the impacting motion a step past
 // the grazing is solved on the impact instead (core/analysis/grazing_orbit.h), from the grazing
 // motion, and the branch goes on from it.
-bool Continuation::jump_from_free() {
-  const Turn turn = nearest_turn(map_.at(map_.value(here_.v)), here_.map.run);
+bool Continuation::jump_from_free(const Turn& turn) {
   if (turn.pellet < 0) return false;
   const std::optional<Grazing> g = grazing_ahead(turn, false);
   if (!g) return false;
-  const double pn =
-      g->value + heading() * std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
-  const std::optional<Vec> before =
-      run_from(without_limiter(map_.at(pn), turn.limiter), map_.options(), g->x, g->turn);
-  if (!before) return false;
-  std::optional<Point> next = impacting_at(turn, pn, g->turn, *before);
-  if (!next) return false;
-  report_grazing(g->value, g->x, false);
-  restart_at(std::move(*next));
-  walk_off_grazing(turn, g->value);
-  return true;
+  const double step = std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
+  // Past the grazing the impacting motion is sought first; where the only one there strikes
+  // moving away from the limiter (no impact at all), the impacting motions lie on the side the
+  // branch came from: the branch turns back at the grazing (a fold of the branch there) and
+  // goes on along them, the parameter heading back.
+  for (const double way : {1.0, -1.0}) {
+    const double pn = g->value + way * heading() * step;
+    const std::optional<Vec> before =
+        run_from(without_limiter(map_.at(pn), turn.limiter), map_.options(), g->x, g->turn);
+    if (!before) continue;
+    std::optional<Point> next = impacting_at(turn, pn, g->turn, *before);
+    if (!next) continue;
+    report_grazing(g->value, g->x, false);
+    restart_at(std::move(*next), way < 0.0);
+    walk_off_grazing(turn, g->value);
+    return true;
+  }
+  return false;
 }
 
 // The impacting motion at value p, solved on the impact from a guess of its time and the state
@@ -880,7 +893,20 @@ bool Continuation::walk_on_impact() {
 
 // Records a grazing at `value`, where the motion's state on the section is x, approached from the
 // side where the motion has the impact (`impacting`) or not, and draws the grazing motion.
+// A grazing already reported at that value, approached from the same side, closes the branch on
+// itself (an isola: the jumps through its grazings lead round it): the branch ends there, saying
+// so, instead of going round again.
 void Continuation::report_grazing(double value, const Vec& x, bool impacting) {
+  for (const Bifurcation& b : branch_.bifurcations)
+    if (b.kind == BifurcationKind::grazing && b.approached_impacting == impacting &&
+        std::abs(b.value - value) <= 1e-6 * std::abs(unit_)) {
+      std::ostringstream why;
+      why << "the branch closes on itself at the grazing at " << spec_.parameter << " = " << value
+          << ", met before: it does not reach " << spec_.to;
+      branch_.message = why.str();
+      ended_ = true;
+      return;
+    }
   const Vec v = map_.scaled(x, value);
   branch_.bifurcations.push_back(
       {BifurcationKind::grazing, value, map_.section_state(v), {}, {}, impacting});
@@ -914,10 +940,10 @@ bool Continuation::record(const Point& pt) {
   return true;
 }
 
-// Goes on from `next`, a motion just past a grazing, along the parameter the way the branch went,
-// with a small step.
-void Continuation::restart_at(Point next) {
-  const double way = t_[n_] > 0.0 ? 1.0 : -1.0;
+// Goes on from `next`, a motion just past a grazing, along the parameter the way the branch went
+// (back where it `turned` there), with a small step.
+void Continuation::restart_at(Point next, bool turned) {
+  const double way = (t_[n_] > 0.0 ? 1.0 : -1.0) * (turned ? -1.0 : 1.0);
   here_ = std::move(next);
   t_ = tangent(here_, way * along_parameter());
   keep_clear();

@@ -302,5 +302,47 @@ TEST(OrbitGrazing, APelletStartedOnItsStopStaysOnItsOwnSideAlongTheBranch) {
   }
 }
 
+// A motion that strikes the stop at −0.09 fast on every swing grazes a second stop, at 0.06, on
+// its other side. The grazing jump used to start from the slowest limiter impact of any limiter
+// (the fast one on the other stop) and the branch ended at the grazing. Now it jumps from the stop
+// grazed: the motions striking both stops lie on the side the branch came from (the only
+// "impacting" motion past the grazing strikes moving away from the stop), so the branch turns back
+// there onto them, folds at Ω ≈ 3.027 and loses that impact again at a second grazing, closing on
+// itself: it ends where it meets its first grazing again, saying so, and never reaches `to`. Its
+// motions striking both stops are those a periodic-orbit search finds from their states.
+TEST(OrbitGrazing, AMotionStrikingOneStopGrazesTheOtherAndTurnsBack) {
+  Model m = stop_scene(0.05139459, 3.06, 0.0, 0.0, 0.0, 0.06, 0.8);
+  m.limiters.push_back({-0.09, 0.8, false, -1, {}});
+  const Reproducer r{m, {0.04114439270724999, 0.03604975156863822}, 3.5};
+  const OrbitBranch b = follow(r);
+  ASSERT_GE(b.bifurcations.size(), 3u) << b.message;
+  EXPECT_EQ(b.bifurcations[0].kind, BifurcationKind::grazing);
+  EXPECT_NEAR(b.bifurcations[0].value, 3.255791, 1e-5);
+  EXPECT_EQ(b.bifurcations[0].approached_impacting, false);
+  EXPECT_EQ(b.bifurcations[1].kind, BifurcationKind::fold);
+  EXPECT_FALSE(b.reached);
+  EXPECT_NE(b.message.find("closes on itself"), std::string::npos) << b.message;
+  int compared = 0;
+  for (const BranchPoint& p : b.points) {
+    // The grazing motion itself (its impact of zero speed counted) is no solve's to compare.
+    if (p.impacts_per_period != 2.0 || compared == 3 ||
+        std::abs(p.value - b.bifurcations[0].value) < 1e-6)
+      continue;
+    Model at = m;
+    at.pellets[0].force.Omega = p.value;
+    OrbitSpec spec;
+    spec.transient = 0;
+    spec.guess = p.state;
+    const PeriodicOrbit o = find_periodic_orbit(at, tight(), spec);
+    ASSERT_TRUE(o.converged) << "at Ω = " << p.value << ": " << o.message;
+    EXPECT_EQ(o.impacts_per_period, 2.0) << "at Ω = " << p.value;
+    EXPECT_NEAR(o.state[0].phi, p.state[0].phi, 1e-9) << "at Ω = " << p.value;
+    EXPECT_NEAR(o.state[0].dphi, p.state[0].dphi, 1e-8) << "at Ω = " << p.value;
+    EXPECT_LT(p.value, b.bifurcations[0].value);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 3);
+}
+
 }  // namespace
 }  // namespace vibro
