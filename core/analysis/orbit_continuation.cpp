@@ -246,8 +246,25 @@ bool crossed(BifurcationKind k, const Signature& a, const Signature& b) {
 }
 
 // Where a motion is near a grazing: an impact's speed (times the time scale) or a turn's distance
-// to a limiter below this, rad.
+// to a limiter below this, rad, at most (near_grazing).
 constexpr double kNearGrazing = 1e-3;
+
+// How near zero a gap must come to count as near a grazing (rad; impact speeds times the time
+// scale): kNearGrazing, or a tenth of the motion's half-swing (the largest half-range of a
+// pellet's angles over the return: the state x and its events) where that is smaller. A gap is
+// small only against the motion's own scale: at a swing of 1e-3 rad every impact would be slow
+// and every turn near a limiter by an absolute 1e-3 rad.
+double near_grazing(const RunResult& run, const Vec& x) {
+  double swing = 0.0;
+  for (Eigen::Index i = 0; 2 * i < x.size(); ++i) {
+    double lo = x[2 * i], hi = x[2 * i];
+    for (const Event& e : run.events)
+      if (!e.pellets.empty() && e.pellets[0] == i)
+        lo = std::min(lo, e.phi), hi = std::max(hi, e.phi);
+    swing = std::max(swing, 0.5 * (hi - lo));
+  }
+  return std::min(kNearGrazing, 0.1 * swing);
+}
 
 // The turn of the motion that comes nearest to a limiter acting on its pellet, as the impact it
 // becomes where it reaches the limiter, its distance to it (rad) and its time (s from the
@@ -273,7 +290,7 @@ Turn nearest_turn(const Model& model, const RunResult& run) {
   return g;
 }
 
-// The nearest an impact, or a turn near a grazing (kNearGrazing), comes to the section, and the
+// The nearest an impact, or a turn near a grazing (near_grazing), comes to the section, and the
 // middle of the longest stretch without them, as times from the section (s). Such a turn is where
 // an impact appears at the grazing: on the section, the grazing motion's state would lie on the
 // limiter, and the impacting motions past it would start at their impact.
@@ -282,11 +299,12 @@ struct Clearance {
   double middle = 0.0;
 };
 
-Clearance clearance(const Model& model, const RunResult& run, double span) {
+Clearance clearance(const Model& model, const RunResult& run, const Vec& x, double span) {
   std::vector<double> times = {0.0};
   for (const Event& e : run.events)
     if (is_impact(e)) times.push_back(e.t);
-  if (const Turn turn = nearest_turn(model, run); turn.gap < kNearGrazing) times.push_back(turn.t);
+  if (const Turn turn = nearest_turn(model, run); turn.gap < near_grazing(run, x))
+    times.push_back(turn.t);
   std::sort(times.begin(), times.end());
   times.push_back(span);
   Clearance c;
@@ -507,6 +525,11 @@ class Continuation {
   void restart_at(Point next, bool turned = false);
   // The way the branch goes in the parameter's own units (+1: to larger values).
   double heading() const { return t_[n_] * unit_ > 0.0 ? 1.0 : -1.0; }
+  // How far the parameter may go from `from` the way `way` (±1): to `to` where that lies ahead,
+  // unbounded where the branch heads away from it (turned back at a fold or a grazing).
+  double room(double from, double way) const {
+    return (spec_.to - from) * way > 0.0 ? std::abs(spec_.to - from) : INFINITY;
+  }
   struct Grazing;
   std::optional<Grazing> grazing_across(const Step& next) const;
   struct Grazing {
@@ -628,7 +651,7 @@ Continuation::Step Continuation::step_to(const Vec& predicted) const {
 void Continuation::keep_clear() {
   const Model m = map_.at(map_.value(here_.v));
   const double T = forcing_period(m);
-  const Clearance c = clearance(m, here_.map.run, map_.periods() * T);
+  const Clearance c = clearance(m, here_.map.run, here_.map.x, map_.periods() * T);
   if (c.nearest >= 0.05 * T) return;
   const Vec moved = map_.shift_phase(here_, c.middle);
   here_ = map_.evaluate(map_.scaled(moved, map_.value(here_.v)));
@@ -647,12 +670,17 @@ bool Continuation::cross_grazing() {
   std::ostringstream why;
   why << "the branch could not be followed past " << spec_.parameter << " = "
       << map_.value(here_.v);
-  if (grazing_distance(map_.at(map_.value(here_.v)), here_.map.run, here_.map.x) > kNearGrazing) {
+  const Model here = map_.at(map_.value(here_.v));
+  if (grazing_distance(here, here_.map.run, here_.map.x) >
+      near_grazing(here_.map.run, here_.map.x)) {
     branch_.message = why.str() + ": no nearby motion continues it";
     return false;
   }
-  const Model here = map_.at(map_.value(here_.v));
-  const bool impacting = slowest_impact(here_.map.run).speed * time_scale(here) <= kNearGrazing;
+  // Approached from the impacting side where the slowest limiter impact is near a grazing and
+  // nearer zero than the turn nearest a limiter (the one grazed, as in jump_grazing).
+  const double slow = slowest_impact(here_.map.run).speed * time_scale(here);
+  const bool impacting = slow <= near_grazing(here_.map.run, here_.map.x) &&
+                         slow <= nearest_turn(here, here_.map.run).gap;
   branch_.bifurcations.push_back({BifurcationKind::grazing,
                                   map_.value(here_.v),
                                   map_.section_state(here_.v),
@@ -717,10 +745,10 @@ std::optional<Continuation::Grazing> Continuation::grazing_across(const Step& ne
 }
 
 // The grazing of `impact` ahead of the branch: the free motion (the scene without that limiter) at
-// the branch's value and at values further on (1e-3 to 0.1 of the unit, not past `to`) until the
-// overshoot of its turn past the limiter changes sign, located by refine_grazing. `impacting`: the
-// branch's motion has that impact (the free motion overshoots here). None where the sign does not
-// change.
+// the branch's value and at values further on (1e-3 to 0.1 of the unit, not past `to` ahead) until
+// the overshoot of its turn past the limiter changes sign, located by refine_grazing. `impacting`:
+// the branch's motion has that impact (the free motion overshoots here). None where the sign does
+// not change.
 std::optional<Continuation::Grazing> Continuation::grazing_ahead(const GrazingImpact& impact,
                                                                  bool impacting) const {
   const double angle = map_.at(map_.value(here_.v)).limiters[impact.limiter].angle;
@@ -729,7 +757,7 @@ std::optional<Continuation::Grazing> Continuation::grazing_ahead(const GrazingIm
   if (!here || (here->overshoot > 0.0) != impacting) return std::nullopt;
   for (double d : {1e-3, 1e-2, 3e-2, 0.1}) {
     double p = p0 + heading() * d * std::abs(unit_);
-    if ((p - spec_.to) * heading() > 0.0) p = spec_.to;
+    if (room(p0, heading()) < INFINITY && (p - spec_.to) * heading() > 0.0) p = spec_.to;
     const std::optional<FreeMotion> there = free_at(impact, angle, p, here->x);
     if (!there || (there->overshoot > 0.0) == impacting) continue;
     return impacting ? refine_grazing(impact, angle, p0, *here, p, *there)
@@ -765,7 +793,7 @@ bool Continuation::jump_from_impacting(const SlowImpact& slow) {
   if (!g) return false;
   const double angle = map_.at(map_.value(here_.v)).limiters[slow.limiter].angle;
   const double pn =
-      g->value + heading() * std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
+      g->value + heading() * std::min(1e-3 * std::abs(unit_), room(g->value, heading()));
   const std::optional<FreeMotion> n = free_at(slow, angle, pn, g->beyond);
   if (!n || n->overshoot >= 0.0) return false;
   Point next = map_.evaluate(map_.scaled(n->x, pn));
@@ -784,13 +812,14 @@ bool Continuation::jump_from_free(const Turn& turn) {
   if (turn.pellet < 0) return false;
   const std::optional<Grazing> g = grazing_ahead(turn, false);
   if (!g) return false;
-  const double step = std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
   // Past the grazing the impacting motion is sought first; where the only one there strikes
   // moving away from the limiter (no impact at all), the impacting motions lie on the side the
   // branch came from: the branch turns back at the grazing (a fold of the branch there) and
   // goes on along them, the parameter heading back.
   for (const double way : {1.0, -1.0}) {
-    const double pn = g->value + way * heading() * step;
+    const double pn =
+        g->value +
+        way * heading() * std::min(1e-3 * std::abs(unit_), room(g->value, way * heading()));
     const std::optional<Vec> before =
         run_from(without_limiter(map_.at(pn), turn.limiter), map_.options(), g->x, g->turn);
     if (!before) continue;
@@ -860,14 +889,14 @@ void Continuation::walk_off_grazing(const GrazingImpact& impact, double grazing)
   const double way = heading();
   for (double d = 2e-3; d < 0.05; d *= 2.0) {
     if (cancelled() || static_cast<int>(branch_.points.size()) >= spec_.max_points) return;
-    const double p = grazing + way * std::min(d * std::abs(unit_), std::abs(spec_.to - grazing));
+    const double p = grazing + way * std::min(d * std::abs(unit_), room(grazing, way));
     std::optional<Step> next = step_on_impact(impact, p);
     if (!next || !take(std::move(*next))) return;
   }
 }
 
 // The corrector on the map crawls (steps below 1e-3) on a motion with a slow limiter impact (its
-// speed times the time scale below kNearGrazing): near a grazing the map's square root leaves
+// speed times the time scale below near_grazing): near a grazing the map's square root leaves
 // Newton's method a small basin, and from a predictor off the branch it cycles between a motion
 // with the impact and one without. The next point is solved on that impact instead, smooth there,
 // a parameter step of walk_ of the unit on (doubled after each success, halved after a failure,
@@ -878,9 +907,10 @@ bool Continuation::walk_on_impact() {
   for (const Limiter& l : here.limiters)
     if (l.mobile) return false;
   const SlowImpact slow = slowest_impact(here_.map.run);
-  if (slow.pellet < 0 || slow.speed * time_scale(here) > kNearGrazing) return false;
+  if (slow.pellet < 0 || slow.speed * time_scale(here) > near_grazing(here_.map.run, here_.map.x))
+    return false;
   const double from = map_.value(here_.v);
-  const double p = from + heading() * std::min(walk_ * std::abs(unit_), std::abs(spec_.to - from));
+  const double p = from + heading() * std::min(walk_ * std::abs(unit_), room(from, heading()));
   std::optional<Step> next = step_on_impact(slow, p);
   if (!next || slowest_impact(next->point.map.run).limiter != slow.limiter) {
     walk_ /= 2.0;

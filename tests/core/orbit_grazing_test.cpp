@@ -342,6 +342,31 @@ TEST(OrbitGrazing, AMotionStrikingOneStopGrazesTheOtherAndTurnsBack) {
     ++compared;
   }
   EXPECT_EQ(compared, 3);
+  ASSERT_FALSE(b.points.empty());
+  EXPECT_NEAR(b.points.back().value, b.bifurcations[0].value, 0.01);  // come back round
+}
+
+// The same scene scaled down 60 times (stops at 0.001 and −0.0015 rad, the force and guess alike:
+// the small-angle motion is the same up to the pendulum's nonlinearity). Against a swing of 1e-3
+// rad an absolute 1e-3 rad made every impact slow, and the grazing was reported as approached from
+// the impacting side; the threshold is now a tenth of the swing at most. Once the branch had
+// turned back (heading away from `to`), the search for the next grazing ahead clamped every trial
+// value to `to` and found the first grazing again, far away, closing the branch where it was not:
+// it now ends where it has come back round.
+TEST(OrbitGrazing, AtASwingOfAMilliradianTheGrazingIsToldFromTheFreeSide) {
+  constexpr double s = 1.0 / 60.0;
+  Model m = stop_scene(0.05139459 * s, 3.06, 0.0, 0.0, 0.0, 0.06 * s, 0.8);
+  m.limiters.push_back({-0.09 * s, 0.8, false, -1, {}});
+  const Reproducer r{m, {0.04114439270724999 * s, 0.03604975156863822 * s}, 3.5};
+  const OrbitBranch b = follow(r);
+  ASSERT_GE(b.bifurcations.size(), 2u) << b.message;
+  EXPECT_EQ(b.bifurcations[0].kind, BifurcationKind::grazing);
+  EXPECT_NEAR(b.bifurcations[0].value, 3.254913, 1e-5);
+  EXPECT_EQ(b.bifurcations[0].approached_impacting, false);
+  EXPECT_FALSE(b.reached);
+  EXPECT_NE(b.message.find("closes on itself"), std::string::npos) << b.message;
+  ASSERT_FALSE(b.points.empty());
+  EXPECT_NEAR(b.points.back().value, b.bifurcations[0].value, 0.01);
 }
 
 }  // namespace
