@@ -246,8 +246,25 @@ bool crossed(BifurcationKind k, const Signature& a, const Signature& b) {
 }
 
 // Where a motion is near a grazing: an impact's speed (times the time scale) or a turn's distance
-// to a limiter below this, rad.
+// to a limiter below this, rad, at most (near_grazing).
 constexpr double kNearGrazing = 1e-3;
+
+// How near zero a gap must come to count as near a grazing (rad; impact speeds times the time
+// scale): kNearGrazing, or a tenth of the motion's half-swing (the largest half-range of a
+// pellet's angles over the return: the state x and its events) where that is smaller. A gap is
+// small only against the motion's own scale: at a swing of 1e-3 rad every impact would be slow
+// and every turn near a limiter by an absolute 1e-3 rad.
+double near_grazing(const RunResult& run, const Vec& x) {
+  double swing = 0.0;
+  for (Eigen::Index i = 0; 2 * i < x.size(); ++i) {
+    double lo = x[2 * i], hi = x[2 * i];
+    for (const Event& e : run.events)
+      if (!e.pellets.empty() && e.pellets[0] == i)
+        lo = std::min(lo, e.phi), hi = std::max(hi, e.phi);
+    swing = std::max(swing, 0.5 * (hi - lo));
+  }
+  return std::min(kNearGrazing, 0.1 * swing);
+}
 
 // The turn of the motion that comes nearest to a limiter acting on its pellet, as the impact it
 // becomes where it reaches the limiter, its distance to it (rad) and its time (s from the
@@ -273,7 +290,7 @@ Turn nearest_turn(const Model& model, const RunResult& run) {
   return g;
 }
 
-// The nearest an impact, or a turn near a grazing (kNearGrazing), comes to the section, and the
+// The nearest an impact, or a turn near a grazing (near_grazing), comes to the section, and the
 // middle of the longest stretch without them, as times from the section (s). Such a turn is where
 // an impact appears at the grazing: on the section, the grazing motion's state would lie on the
 // limiter, and the impacting motions past it would start at their impact.
@@ -282,11 +299,12 @@ struct Clearance {
   double middle = 0.0;
 };
 
-Clearance clearance(const Model& model, const RunResult& run, double span) {
+Clearance clearance(const Model& model, const RunResult& run, const Vec& x, double span) {
   std::vector<double> times = {0.0};
   for (const Event& e : run.events)
     if (is_impact(e)) times.push_back(e.t);
-  if (const Turn turn = nearest_turn(model, run); turn.gap < kNearGrazing) times.push_back(turn.t);
+  if (const Turn turn = nearest_turn(model, run); turn.gap < near_grazing(run, x))
+    times.push_back(turn.t);
   std::sort(times.begin(), times.end());
   times.push_back(span);
   Clearance c;
@@ -494,7 +512,7 @@ class Continuation {
   bool cross_grazing();
   bool jump_grazing();
   bool jump_from_impacting(const SlowImpact& slow);
-  bool jump_from_free();
+  bool jump_from_free(const Turn& turn);
   std::optional<Point> impacting_at(const GrazingImpact& impact, double p, double time,
                                     const Vec& before) const;
   std::optional<Step> step_on_impact(const GrazingImpact& impact, double p) const;
@@ -502,9 +520,16 @@ class Continuation {
   void walk_off_grazing(const GrazingImpact& impact, double grazing);
   bool walk_on_impact();
   void report_grazing(double value, const Vec& x, bool impacting);
-  void restart_at(Point next);
+  bool admit(const Point& pt);
+  bool record(const Point& pt);
+  void restart_at(Point next, bool turned = false);
   // The way the branch goes in the parameter's own units (+1: to larger values).
   double heading() const { return t_[n_] * unit_ > 0.0 ? 1.0 : -1.0; }
+  // How far the parameter may go from `from` the way `way` (±1): to `to` where that lies ahead,
+  // unbounded where the branch heads away from it (turned back at a fold or a grazing).
+  double room(double from, double way) const {
+    return (spec_.to - from) * way > 0.0 ? std::abs(spec_.to - from) : INFINITY;
+  }
   struct Grazing;
   std::optional<Grazing> grazing_across(const Step& next) const;
   struct Grazing {
@@ -551,6 +576,7 @@ class Continuation {
   double ds_ = 0.0;
   std::size_t jump_tried_at_ = 0;  // branch points when the last grazing jump was tried
   double walk_ = 2e-3;             // walk_on_impact's step, of the unit
+  bool ended_ = false;             // a point was inadmissible (admit): the branch ends before it
 };
 
 OrbitBranch Continuation::run() {
@@ -565,9 +591,10 @@ OrbitBranch Continuation::run() {
   keep_clear();
   t_ = tangent(here_, t_);
   sig_ = signature(here_, t_, map_.band());
-  branch_.points.push_back(branch_point(map_, here_));
+  record(here_);
   ds_ = std::min(0.05, 2.0 / spec_.max_points);
   while (static_cast<int>(branch_.points.size()) < spec_.max_points) {
+    if (ended_) return branch_;
     if (cancelled()) {
       branch_.message = "cancelled";
       return branch_;
@@ -598,6 +625,7 @@ OrbitBranch Continuation::run() {
     }
     move_to(std::move(next));
   }
+  if (ended_) return branch_;
   std::ostringstream why;
   why << "stopped at " << spec_.parameter << " = " << branch_.points.back().value << " after "
       << spec_.max_points << " points (periodic_orbit.continuation.max_points)";
@@ -623,7 +651,7 @@ Continuation::Step Continuation::step_to(const Vec& predicted) const {
 void Continuation::keep_clear() {
   const Model m = map_.at(map_.value(here_.v));
   const double T = forcing_period(m);
-  const Clearance c = clearance(m, here_.map.run, map_.periods() * T);
+  const Clearance c = clearance(m, here_.map.run, here_.map.x, map_.periods() * T);
   if (c.nearest >= 0.05 * T) return;
   const Vec moved = map_.shift_phase(here_, c.middle);
   here_ = map_.evaluate(map_.scaled(moved, map_.value(here_.v)));
@@ -642,12 +670,17 @@ bool Continuation::cross_grazing() {
   std::ostringstream why;
   why << "the branch could not be followed past " << spec_.parameter << " = "
       << map_.value(here_.v);
-  if (grazing_distance(map_.at(map_.value(here_.v)), here_.map.run, here_.map.x) > kNearGrazing) {
+  const Model here = map_.at(map_.value(here_.v));
+  if (grazing_distance(here, here_.map.run, here_.map.x) >
+      near_grazing(here_.map.run, here_.map.x)) {
     branch_.message = why.str() + ": no nearby motion continues it";
     return false;
   }
-  const Model here = map_.at(map_.value(here_.v));
-  const bool impacting = slowest_impact(here_.map.run).speed * time_scale(here) <= kNearGrazing;
+  // Approached from the impacting side where the slowest limiter impact is near a grazing and
+  // nearer zero than the turn nearest a limiter (the one grazed, as in jump_grazing).
+  const double slow = slowest_impact(here_.map.run).speed * time_scale(here);
+  const bool impacting = slow <= near_grazing(here_.map.run, here_.map.x) &&
+                         slow <= nearest_turn(here, here_.map.run).gap;
   branch_.bifurcations.push_back({BifurcationKind::grazing,
                                   map_.value(here_.v),
                                   map_.section_state(here_.v),
@@ -712,10 +745,10 @@ std::optional<Continuation::Grazing> Continuation::grazing_across(const Step& ne
 }
 
 // The grazing of `impact` ahead of the branch: the free motion (the scene without that limiter) at
-// the branch's value and at values further on (1e-3 to 0.1 of the unit, not past `to`) until the
-// overshoot of its turn past the limiter changes sign, located by refine_grazing. `impacting`: the
-// branch's motion has that impact (the free motion overshoots here). None where the sign does not
-// change.
+// the branch's value and at values further on (1e-3 to 0.1 of the unit, not past `to` ahead) until
+// the overshoot of its turn past the limiter changes sign, located by refine_grazing. `impacting`:
+// the branch's motion has that impact (the free motion overshoots here). None where the sign does
+// not change.
 std::optional<Continuation::Grazing> Continuation::grazing_ahead(const GrazingImpact& impact,
                                                                  bool impacting) const {
   const double angle = map_.at(map_.value(here_.v)).limiters[impact.limiter].angle;
@@ -724,7 +757,7 @@ std::optional<Continuation::Grazing> Continuation::grazing_ahead(const GrazingIm
   if (!here || (here->overshoot > 0.0) != impacting) return std::nullopt;
   for (double d : {1e-3, 1e-2, 3e-2, 0.1}) {
     double p = p0 + heading() * d * std::abs(unit_);
-    if ((p - spec_.to) * heading() > 0.0) p = spec_.to;
+    if (room(p0, heading()) < INFINITY && (p - spec_.to) * heading() > 0.0) p = spec_.to;
     const std::optional<FreeMotion> there = free_at(impact, angle, p, here->x);
     if (!there || (there->overshoot > 0.0) == impacting) continue;
     return impacting ? refine_grazing(impact, angle, p0, *here, p, *there)
@@ -740,8 +773,15 @@ std::optional<Continuation::Grazing> Continuation::grazing_ahead(const GrazingIm
 bool Continuation::jump_grazing() {
   for (const Limiter& l : map_.at(map_.value(here_.v)).limiters)
     if (l.mobile) return false;
+  // The stop grazed is the limiter whose gap's minimum touches zero: the slowest limiter impact
+  // (its speed times the time scale) or the turn nearest a limiter, whichever is nearer zero. A
+  // motion that strikes one stop fast may graze another from its free side.
+  const Model here = map_.at(map_.value(here_.v));
   const SlowImpact slow = slowest_impact(here_.map.run);
-  return slow.pellet >= 0 ? jump_from_impacting(slow) : jump_from_free();
+  const Turn turn = nearest_turn(here, here_.map.run);
+  if (slow.pellet >= 0 && (turn.pellet < 0 || slow.speed * time_scale(here) <= turn.gap))
+    return jump_from_impacting(slow);
+  return jump_from_free(turn);
 }
 
 // On the impacting side near a grazing: the impact's speed goes to zero like a square root of
@@ -753,7 +793,7 @@ bool Continuation::jump_from_impacting(const SlowImpact& slow) {
   if (!g) return false;
   const double angle = map_.at(map_.value(here_.v)).limiters[slow.limiter].angle;
   const double pn =
-      g->value + heading() * std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
+      g->value + heading() * std::min(1e-3 * std::abs(unit_), room(g->value, heading()));
   const std::optional<FreeMotion> n = free_at(slow, angle, pn, g->beyond);
   if (!n || n->overshoot >= 0.0) return false;
   Point next = map_.evaluate(map_.scaled(n->x, pn));
@@ -768,22 +808,29 @@ bool Continuation::jump_from_impacting(const SlowImpact& slow) {
 // the corrector on the map cannot step onto (the square root): the impacting motion a step past
 // the grazing is solved on the impact instead (core/analysis/grazing_orbit.h), from the grazing
 // motion, and the branch goes on from it.
-bool Continuation::jump_from_free() {
-  const Turn turn = nearest_turn(map_.at(map_.value(here_.v)), here_.map.run);
+bool Continuation::jump_from_free(const Turn& turn) {
   if (turn.pellet < 0) return false;
   const std::optional<Grazing> g = grazing_ahead(turn, false);
   if (!g) return false;
-  const double pn =
-      g->value + heading() * std::min(1e-3 * std::abs(unit_), std::abs(spec_.to - g->value));
-  const std::optional<Vec> before =
-      run_from(without_limiter(map_.at(pn), turn.limiter), map_.options(), g->x, g->turn);
-  if (!before) return false;
-  std::optional<Point> next = impacting_at(turn, pn, g->turn, *before);
-  if (!next) return false;
-  report_grazing(g->value, g->x, false);
-  restart_at(std::move(*next));
-  walk_off_grazing(turn, g->value);
-  return true;
+  // Past the grazing the impacting motion is sought first; where the only one there strikes
+  // moving away from the limiter (no impact at all), the impacting motions lie on the side the
+  // branch came from: the branch turns back at the grazing (a fold of the branch there) and
+  // goes on along them, the parameter heading back.
+  for (const double way : {1.0, -1.0}) {
+    const double pn =
+        g->value +
+        way * heading() * std::min(1e-3 * std::abs(unit_), room(g->value, way * heading()));
+    const std::optional<Vec> before =
+        run_from(without_limiter(map_.at(pn), turn.limiter), map_.options(), g->x, g->turn);
+    if (!before) continue;
+    std::optional<Point> next = impacting_at(turn, pn, g->turn, *before);
+    if (!next) continue;
+    report_grazing(g->value, g->x, false);
+    restart_at(std::move(*next), way < 0.0);
+    walk_off_grazing(turn, g->value);
+    return true;
+  }
+  return false;
 }
 
 // The impacting motion at value p, solved on the impact from a guess of its time and the state
@@ -823,13 +870,14 @@ std::optional<Continuation::Step> Continuation::step_on_impact(const GrazingImpa
 // Takes `next` as the branch's next point, its bifurcations noted; false where it is past `to`
 // (the branch then ends there).
 bool Continuation::take(Step next) {
+  if (ended_) return false;
   note_bifurcations(next);
   if (past_to(next.point)) {
     finish_at_to(next.point);
     return false;
   }
   move_to(std::move(next));
-  return true;
+  return !ended_;
 }
 
 // Just past a grazing from the non-impacting side the map's square root is still close: the
@@ -841,14 +889,14 @@ void Continuation::walk_off_grazing(const GrazingImpact& impact, double grazing)
   const double way = heading();
   for (double d = 2e-3; d < 0.05; d *= 2.0) {
     if (cancelled() || static_cast<int>(branch_.points.size()) >= spec_.max_points) return;
-    const double p = grazing + way * std::min(d * std::abs(unit_), std::abs(spec_.to - grazing));
+    const double p = grazing + way * std::min(d * std::abs(unit_), room(grazing, way));
     std::optional<Step> next = step_on_impact(impact, p);
     if (!next || !take(std::move(*next))) return;
   }
 }
 
 // The corrector on the map crawls (steps below 1e-3) on a motion with a slow limiter impact (its
-// speed times the time scale below kNearGrazing): near a grazing the map's square root leaves
+// speed times the time scale below near_grazing): near a grazing the map's square root leaves
 // Newton's method a small basin, and from a predictor off the branch it cycles between a motion
 // with the impact and one without. The next point is solved on that impact instead, smooth there,
 // a parameter step of walk_ of the unit on (doubled after each success, halved after a failure,
@@ -859,9 +907,10 @@ bool Continuation::walk_on_impact() {
   for (const Limiter& l : here.limiters)
     if (l.mobile) return false;
   const SlowImpact slow = slowest_impact(here_.map.run);
-  if (slow.pellet < 0 || slow.speed * time_scale(here) > kNearGrazing) return false;
+  if (slow.pellet < 0 || slow.speed * time_scale(here) > near_grazing(here_.map.run, here_.map.x))
+    return false;
   const double from = map_.value(here_.v);
-  const double p = from + heading() * std::min(walk_ * std::abs(unit_), std::abs(spec_.to - from));
+  const double p = from + heading() * std::min(walk_ * std::abs(unit_), room(from, heading()));
   std::optional<Step> next = step_on_impact(slow, p);
   if (!next || slowest_impact(next->point.map.run).limiter != slow.limiter) {
     walk_ /= 2.0;
@@ -874,23 +923,62 @@ bool Continuation::walk_on_impact() {
 
 // Records a grazing at `value`, where the motion's state on the section is x, approached from the
 // side where the motion has the impact (`impacting`) or not, and draws the grazing motion.
+// A grazing already reported at that value, approached from the same side, closes the branch on
+// itself (an isola: the jumps through its grazings lead round it): the branch ends there, saying
+// so, instead of going round again.
 void Continuation::report_grazing(double value, const Vec& x, bool impacting) {
+  for (const Bifurcation& b : branch_.bifurcations)
+    if (b.kind == BifurcationKind::grazing && b.approached_impacting == impacting &&
+        std::abs(b.value - value) <= 1e-6 * std::abs(unit_)) {
+      std::ostringstream why;
+      why << "the branch closes on itself at the grazing at " << spec_.parameter << " = " << value
+          << ", met before: it does not reach " << spec_.to;
+      branch_.message = why.str();
+      ended_ = true;
+      return;
+    }
   const Vec v = map_.scaled(x, value);
   branch_.bifurcations.push_back(
       {BifurcationKind::grazing, value, map_.section_state(v), {}, {}, impacting});
   const Point at = map_.evaluate(v);
-  if (at.ok) branch_.points.push_back(branch_point(map_, at));
+  if (at.ok) record(at);
 }
 
-// Goes on from `next`, a motion just past a grazing, along the parameter the way the branch went,
-// with a small step.
-void Continuation::restart_at(Point next) {
-  const double way = t_[n_] > 0.0 ? 1.0 : -1.0;
+// Whether the motion at pt is one the scene's pellets can make: each in the turn of every fixed
+// limiter acting on it that it starts in, on its own side of one it lies on (decided from its
+// motion), and the pellets in the order they start in (off_own_side). The map refuses to run
+// from a state that is not; this check stands at every point the branch takes, so that a jump
+// that lands on another motion ends the branch, saying why, and never reaches `to` on it.
+bool Continuation::admit(const Point& pt) {
+  if (ended_) return false;
+  const double p = map_.value(pt.v);
+  const std::optional<std::string> off = off_own_side(map_.at(p), map_.state(pt.v));
+  if (!off) return true;
+  std::ostringstream why;
+  why << "the branch ends at " << spec_.parameter << " = " << p << ": the motion there puts "
+      << *off;
+  branch_.message = why.str();
+  branch_.reached = false;
+  ended_ = true;
+  return false;
+}
+
+// Adds pt to the branch where it is admissible (admit).
+bool Continuation::record(const Point& pt) {
+  if (!admit(pt)) return false;
+  branch_.points.push_back(branch_point(map_, pt));
+  return true;
+}
+
+// Goes on from `next`, a motion just past a grazing, along the parameter the way the branch went
+// (back where it `turned` there), with a small step.
+void Continuation::restart_at(Point next, bool turned) {
+  const double way = (t_[n_] > 0.0 ? 1.0 : -1.0) * (turned ? -1.0 : 1.0);
   here_ = std::move(next);
   t_ = tangent(here_, way * along_parameter());
   keep_clear();
   sig_ = signature(here_, t_, map_.band());
-  branch_.points.push_back(branch_point(map_, here_));
+  record(here_);
   ds_ = 1e-3;
 }
 
@@ -918,7 +1006,7 @@ std::vector<BranchPoint> Continuation::walk_back(const Point& across, double ste
     Vec predicted = walk.v;
     predicted[n_] = here_.v[n_] + way * dp;
     const Point p = correct(map_, predicted, along_parameter(), tol_);
-    if (!p.ok) break;
+    if (!p.ok || off_own_side(map_.at(map_.value(p.v)), map_.state(p.v))) break;
     nearer.push_back(branch_point(map_, p));
     walk = p;
   }
@@ -971,7 +1059,7 @@ void Continuation::finish_at_to(const Point& next) {
     on[n_] = end_;
     end = correct(map_, on, along_parameter(), tol_);
   }
-  branch_.points.push_back(branch_point(map_, end.ok ? end : next));
+  if (!record(end.ok ? end : next)) return;
   branch_.reached = true;
   if (progress_) progress_(1.0);
 }
@@ -981,6 +1069,7 @@ void Continuation::move_to(Step next) {
   t_ = std::move(next.t);
   keep_clear();
   sig_ = signature(here_, t_, map_.band());
+  if (!admit(here_)) return;
   // Steps shortened to a crawl (before a grazing) add nothing a figure shows.
   if (std::abs(map_.value(here_.v) - branch_.points.back().value) > 1e-6 * std::abs(unit_) ||
       ds_ > 1e-4)

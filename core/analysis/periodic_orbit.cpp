@@ -8,6 +8,7 @@
 
 #include "core/analysis/checked_run.h"
 #include "core/analysis/monodromy.h"
+#include "core/events/event_tolerances.h"
 #include "core/run/deadline.h"
 
 namespace vibro {
@@ -78,34 +79,61 @@ std::string number(double v) {
   return s.str();
 }
 
+// The side of a limiter's angle (+1 above it, −1 below) that pellet i lies on when it is at that
+// angle with speed v, decided from its motion as the simulator decides it for a start there
+// (start_side, core/events/snap.cpp): away from where it moves, or, at rest, where its free
+// acceleration (at the model's t = 0) presses it against the limiter.
+int side_on_angle(const Model& model, int i, double phi, double v) {
+  if (v != 0.0) return v > 0.0 ? -1 : 1;
+  return free_acceleration(model, i, 0.0, phi) > 0.0 ? -1 : 1;
+}
+
+// Whether the angle phi lies on one of lim's angles θ + 2πk, to the simulator's tolerance for a
+// start there.
+bool on_copy(const Model& model, const Limiter& lim, double phi) {
+  return std::abs(wrap_angle(phi - lim.angle)) <= event_tolerances(model).start_on_limiter;
+}
+
+// The copy θ + 2πk of a fixed limiter's angle just below the turn pellet i of the scene lives in
+// (it never passes the limiter): the one below its start phi0, or, for a start on a copy, that
+// copy or the one below it by the side its motion puts it on (side_on_angle).
+double home_below(const Model& model, int i, const Limiter& lim) {
+  const Pellet& p = model.pellets[i];
+  const double turns = (p.phi0 - lim.angle) / kTwoPi;
+  if (!on_copy(model, lim, p.phi0)) return lim.angle + kTwoPi * std::floor(turns);
+  const double on = std::round(turns);
+  return lim.angle + kTwoPi * (side_on_angle(model, i, p.phi0, p.dphi0) > 0 ? on : on - 1.0);
+}
+
 // Why pellet i at the unwrapped angle phi lies beyond a fixed limiter that acts on it, seen from
-// its start phi0: outside the turn between the nearest copies δ + 2πk of the limiters' angles
-// below and above phi0, which a run never leaves (a start on a copy may be on either side). The
-// simulator holds a pellet in that turn too (home_side, core/events/snap.cpp).
-std::optional<std::string> beyond_limiter(const Model& model, int i, double phi) {
-  const double start = model.pellets[i].phi0;
+// its start: outside its home turn (home_below), which a run never leaves, or, given its speed v,
+// on an end of it with a motion that puts it on the far side (side_on_angle: a run from there
+// takes it so). Without v, an end of the turn is in it. The simulator holds a pellet in that turn
+// too (home_side, core/events/snap.cpp).
+std::optional<std::string> beyond_limiter(const Model& model, int i, double phi,
+                                          std::optional<double> v = std::nullopt) {
   for (std::size_t l = 0; l < model.limiters.size(); ++l) {
     const Limiter& lim = model.limiters[l];
     if (lim.mobile || !lim.acts_on(i)) continue;
-    const double turns = std::floor((start - lim.angle) / kTwoPi);
-    const double below = lim.angle + kTwoPi * turns, above = lim.angle + kTwoPi * (turns + 1.0);
-    if (start == below || (phi >= below && phi <= above)) continue;
-    return "pellet " + std::to_string(i + 1) + " at φ = " + number(phi) + " rad, beyond limiter " +
-           std::to_string(l + 1) + " (" + number(lim.angle) +
-           " rad) from where it starts (φ0 = " + number(start) +
+    const double below = home_below(model, i, lim), above = below + kTwoPi;
+    const bool inside = phi >= below && phi <= above;
+    const int side = v && on_copy(model, lim, phi) ? side_on_angle(model, i, phi, *v) : 0;
+    const bool far_at_end =
+        (side < 0 && std::abs(phi - below) < 1.0) || (side > 0 && std::abs(phi - above) < 1.0);
+    if (inside && !far_at_end) continue;
+    return "pellet " + std::to_string(i + 1) + " at φ = " + number(phi) + " rad" +
+           (inside ? " on the far side of" : ", beyond") + " limiter " + std::to_string(l + 1) +
+           " (" + number(lim.angle) +
+           " rad) from where it starts (φ0 = " + number(model.pellets[i].phi0) +
            " rad): a motion the scene's pellet never reaches";
   }
   return std::nullopt;
 }
 
-// How far pellet i at the unwrapped angle phi lies along the turn it starts in, from the copy
-// δ + 2πk of a limiter's angle below its start phi0 (in [0, 2π] where it stays in that turn);
-// none where phi0 lies on a copy, from which the turn is either.
-std::optional<double> along_turn(const Model& model, int i, const Limiter& lim, double phi) {
-  const double start = model.pellets[i].phi0;
-  const double below = lim.angle + kTwoPi * std::floor((start - lim.angle) / kTwoPi);
-  if (start == below) return std::nullopt;
-  return phi - below;
+// How far pellet i at the unwrapped angle phi lies along its home turn of limiter lim
+// (home_below; in [0, 2π] where it stays in that turn).
+double along_turn(const Model& model, int i, const Limiter& lim, double phi) {
+  return phi - home_below(model, i, lim);
 }
 
 // Why pellets i and j at angles phi_i, phi_j lie in the other order than they start in, along the
@@ -114,17 +142,43 @@ std::optional<double> along_turn(const Model& model, int i, const Limiter& lim, 
 std::optional<std::string> swapped(const Model& model, int i, int j, double phi_i, double phi_j) {
   for (const Limiter& lim : model.limiters) {
     if (lim.mobile || !lim.acts_on(i) || !lim.acts_on(j)) continue;
-    const auto start_i = along_turn(model, i, lim, model.pellets[i].phi0);
-    const auto start_j = along_turn(model, j, lim, model.pellets[j].phi0);
-    if (!start_i || !start_j || *start_i == *start_j) return std::nullopt;
+    const double start_i = along_turn(model, i, lim, model.pellets[i].phi0);
+    const double start_j = along_turn(model, j, lim, model.pellets[j].phi0);
+    if (start_i == start_j) return std::nullopt;
     // Touching (equal places) keeps the order.
-    const double u_i = *along_turn(model, i, lim, phi_i), u_j = *along_turn(model, j, lim, phi_j);
-    if (*start_i < *start_j ? u_i <= u_j : u_i >= u_j) return std::nullopt;
+    const double u_i = along_turn(model, i, lim, phi_i), u_j = along_turn(model, j, lim, phi_j);
+    if (start_i < start_j ? u_i <= u_j : u_i >= u_j) return std::nullopt;
     return "pellets " + std::to_string(i + 1) + " and " + std::to_string(j + 1) +
            " in the other order than they start in (φ = " + number(phi_i) + " and " +
            number(phi_j) + " rad): they never pass each other, so a motion the scene never reaches";
   }
   return std::nullopt;
+}
+
+// Why the pellets at the angles of x lie in another order around the circle than they start in
+// (they never pass each other): going round from each pellet to the next in the start's order,
+// the gaps add up to 2π once the order is kept, and to a further 2π for every pellet out of it.
+// Pellets at one place, within 1e-9 rad, may stand in either order.
+std::optional<std::string> out_of_circle_order(const Model& model, const Vec& x) {
+  const int n = model.size();
+  if (n < 3) return std::nullopt;  // two pellets are in both orders around a circle
+  std::vector<int> order(n);
+  for (int i = 0; i < n; ++i) order[i] = i;
+  auto around = [](double phi) { return phi - kTwoPi * std::floor(phi / kTwoPi); };
+  std::sort(order.begin(), order.end(), [&](int a, int b) {
+    return around(model.pellets[a].phi0) < around(model.pellets[b].phi0);
+  });
+  for (int k = 0; k < n; ++k)  // starts at one place: no order to keep between them
+    if (around(model.pellets[order[(k + 1) % n]].phi0 - model.pellets[order[k]].phi0) < 1e-9)
+      return std::nullopt;
+  double turns = 0.0;
+  for (int k = 0; k < n; ++k) {
+    const double gap = around(x[2 * order[(k + 1) % n]] - x[2 * order[k]]);
+    turns += gap > kTwoPi - 1e-9 ? 0.0 : gap;
+  }
+  if (turns <= kTwoPi + 1e-9) return std::nullopt;
+  return "the pellets in another order around the circle than they start in: they never pass "
+         "each other, so a motion the scene never reaches";
 }
 
 // Why the map's run from x starts a pellet resting on a limiter from the side it did not start
@@ -278,11 +332,12 @@ std::optional<FieldError> validate_orbit(const Model& model, const OrbitSpec& sp
 
 std::optional<std::string> off_own_side(const Model& model, const Vec& x) {
   for (int i = 0; i < model.size(); ++i)
-    if (std::optional<std::string> off = beyond_limiter(model, i, x[2 * i])) return off;
+    if (std::optional<std::string> off = beyond_limiter(model, i, x[2 * i], x[2 * i + 1]))
+      return off;
   for (int i = 0; i < model.size(); ++i)
     for (int j = i + 1; j < model.size(); ++j)
       if (std::optional<std::string> off = swapped(model, i, j, x[2 * i], x[2 * j])) return off;
-  return std::nullopt;
+  return out_of_circle_order(model, x);
 }
 
 double multiplier_band(const SimOptions& options) { return tolerance_for(options); }

@@ -72,7 +72,10 @@ MapPoint stroboscopic_map(const Model& model, const SimOptions& options, int per
 // a limiter"), or nothing if it is one: a pellet's angle beyond a fixed limiter that acts on it,
 // on the side the pellet did not start on (the run from x would be a motion the scene's pellet
 // never reaches, on the far side of the limiter), or two pellets in the other order than they
-// start in along the turn a fixed limiter acting on both closes (they never pass each other).
+// start in, along the turn a fixed limiter acting on both closes or around the circle (they never
+// pass each other). A pellet on a limiter's angle, in x or at the scene's start, is on the side
+// its motion puts it on, as the simulator takes a start there: away from where it moves, or, at
+// rest, where its free acceleration presses it against the limiter.
 std::optional<std::string> off_own_side(const Model& model, const Vec& x);
 
 // How far from the unit circle a multiplier must be to count as inside or outside it: the

@@ -266,5 +266,108 @@ TEST(OrbitGrazing, TheBranchCrossesTheGrazingFromTheNonImpactingSide) {
   }
 }
 
+// Pellet 2, unforced, rests on its own stop (acting on it alone) from above, and the forced
+// pellet 1 swings up toward it: at A = δ it grazes pellet 2, a collision of zero speed. With pellet
+// 2 started exactly on the stop's angle, the side of the stop it is on is decided from its motion
+// (gravity presses it down onto the stop: above it), as the simulator decides it. The crossing
+// past that grazing used to land on the pellets swapped, pellet 2 below its own stop, a motion
+// the scene never reaches, report the grazing 1.4e-3 off and run on to `to` on it without a word.
+// Now every branch point is checked: the grazing is found where the start off the stop's angle
+// (phi0 = 0.0011, pellet 2 falling onto the stop) finds it, and the branch ends there saying why.
+TEST(OrbitGrazing, APelletStartedOnItsStopStaysOnItsOwnSideAlongTheBranch) {
+  for (double phi0 : {0.0010478, 0.0011}) {
+    SCOPED_TRACE(testing::Message() << "pellet 2 from " << phi0);
+    Model m = stop_scene(0.0005139459, 3.0563183734683137, 0.0, 0.001, 0.0, 0.0010478, 0.8);
+    m.pellets.push_back({kMass, phi0, 0.0, {}});
+    m.limiters[0].pellets = {1};
+    OrbitSpec spec;
+    spec.transient = 0;
+    spec.guess = {{0.001, 0.0}, {0.0010478, 0.0}};
+    const PeriodicOrbit start = find_periodic_orbit(m, tight(), spec);
+    ASSERT_TRUE(start.converged) << start.message;
+    ContinuationSpec c;
+    c.parameter = "model.pellets[0].Omega";
+    c.to = 3.3220851885525153;
+    c.max_points = 300;
+    const OrbitBranch b = continue_orbit(m, tight(), start, c);
+    EXPECT_FALSE(b.reached);
+    EXPECT_FALSE(b.message.empty());
+    const std::vector<double> g = grazings(b);
+    ASSERT_EQ(g.size(), 1u) << b.message;
+    EXPECT_NEAR(g.front(), 3.132086, 1e-6);
+    for (const BranchPoint& p : b.points) {
+      EXPECT_GE(p.state[1].phi, 0.0010478 * (1.0 - 1e-9)) << "at Ω = " << p.value;
+      EXPECT_LE(p.state[0].phi, p.state[1].phi * (1.0 + 1e-9)) << "at Ω = " << p.value;
+    }
+  }
+}
+
+// A motion that strikes the stop at −0.09 fast on every swing grazes a second stop, at 0.06, on
+// its other side. The grazing jump used to start from the slowest limiter impact of any limiter
+// (the fast one on the other stop) and the branch ended at the grazing. Now it jumps from the stop
+// grazed: the motions striking both stops lie on the side the branch came from (the only
+// "impacting" motion past the grazing strikes moving away from the stop), so the branch turns back
+// there onto them, folds at Ω ≈ 3.027 and loses that impact again at a second grazing, closing on
+// itself: it ends where it meets its first grazing again, saying so, and never reaches `to`. Its
+// motions striking both stops are those a periodic-orbit search finds from their states.
+TEST(OrbitGrazing, AMotionStrikingOneStopGrazesTheOtherAndTurnsBack) {
+  Model m = stop_scene(0.05139459, 3.06, 0.0, 0.0, 0.0, 0.06, 0.8);
+  m.limiters.push_back({-0.09, 0.8, false, -1, {}});
+  const Reproducer r{m, {0.04114439270724999, 0.03604975156863822}, 3.5};
+  const OrbitBranch b = follow(r);
+  ASSERT_GE(b.bifurcations.size(), 3u) << b.message;
+  EXPECT_EQ(b.bifurcations[0].kind, BifurcationKind::grazing);
+  EXPECT_NEAR(b.bifurcations[0].value, 3.255791, 1e-5);
+  EXPECT_EQ(b.bifurcations[0].approached_impacting, false);
+  EXPECT_EQ(b.bifurcations[1].kind, BifurcationKind::fold);
+  EXPECT_FALSE(b.reached);
+  EXPECT_NE(b.message.find("closes on itself"), std::string::npos) << b.message;
+  int compared = 0;
+  for (const BranchPoint& p : b.points) {
+    // The grazing motion itself (its impact of zero speed counted) is no solve's to compare.
+    if (p.impacts_per_period != 2.0 || compared == 3 ||
+        std::abs(p.value - b.bifurcations[0].value) < 1e-6)
+      continue;
+    Model at = m;
+    at.pellets[0].force.Omega = p.value;
+    OrbitSpec spec;
+    spec.transient = 0;
+    spec.guess = p.state;
+    const PeriodicOrbit o = find_periodic_orbit(at, tight(), spec);
+    ASSERT_TRUE(o.converged) << "at Ω = " << p.value << ": " << o.message;
+    EXPECT_EQ(o.impacts_per_period, 2.0) << "at Ω = " << p.value;
+    EXPECT_NEAR(o.state[0].phi, p.state[0].phi, 1e-9) << "at Ω = " << p.value;
+    EXPECT_NEAR(o.state[0].dphi, p.state[0].dphi, 1e-8) << "at Ω = " << p.value;
+    EXPECT_LT(p.value, b.bifurcations[0].value);
+    ++compared;
+  }
+  EXPECT_EQ(compared, 3);
+  ASSERT_FALSE(b.points.empty());
+  EXPECT_NEAR(b.points.back().value, b.bifurcations[0].value, 0.01);  // come back round
+}
+
+// The same scene scaled down 60 times (stops at 0.001 and −0.0015 rad, the force and guess alike:
+// the small-angle motion is the same up to the pendulum's nonlinearity). Against a swing of 1e-3
+// rad an absolute 1e-3 rad made every impact slow, and the grazing was reported as approached from
+// the impacting side; the threshold is now a tenth of the swing at most. Once the branch had
+// turned back (heading away from `to`), the search for the next grazing ahead clamped every trial
+// value to `to` and found the first grazing again, far away, closing the branch where it was not:
+// it now ends where it has come back round.
+TEST(OrbitGrazing, AtASwingOfAMilliradianTheGrazingIsToldFromTheFreeSide) {
+  constexpr double s = 1.0 / 60.0;
+  Model m = stop_scene(0.05139459 * s, 3.06, 0.0, 0.0, 0.0, 0.06 * s, 0.8);
+  m.limiters.push_back({-0.09 * s, 0.8, false, -1, {}});
+  const Reproducer r{m, {0.04114439270724999 * s, 0.03604975156863822 * s}, 3.5};
+  const OrbitBranch b = follow(r);
+  ASSERT_GE(b.bifurcations.size(), 2u) << b.message;
+  EXPECT_EQ(b.bifurcations[0].kind, BifurcationKind::grazing);
+  EXPECT_NEAR(b.bifurcations[0].value, 3.254913, 1e-5);
+  EXPECT_EQ(b.bifurcations[0].approached_impacting, false);
+  EXPECT_FALSE(b.reached);
+  EXPECT_NE(b.message.find("closes on itself"), std::string::npos) << b.message;
+  ASSERT_FALSE(b.points.empty());
+  EXPECT_NEAR(b.points.back().value, b.bifurcations[0].value, 0.01);
+}
+
 }  // namespace
 }  // namespace vibro
