@@ -456,14 +456,19 @@ ShadowOptions check_options(const SimOptions& run) {
   // DOP853 checked by DOPRI5 was blind to the error of its first DOPRI5 steps, which DOPRI5
   // shared at every tolerance).
   //
-  // DOP853 (and `auto` on it) checks itself: DOPRI5, checking it above rtol 1e-8 at a
-  // thirtieth of the tolerance (a hundredth would have cost 3.3×), erred as much as DOP853 and
-  // cancelled its error (3e-3 s estimated at 1.1e-4 s; ctest
-  // trust_scene.dop853_checked_by_dopri5_cancelled_its_error). DOP853's
-  // run and shadow share their steps only where the longest step holds both, and the shadow's is
-  // half the run's: a capped step errs 2⁹ times less (2⁶ for DOPRI5). Held alike, a run at rtol
-  // 1e-6 and its shadow at 1e-8 took the same steps of 1/Ω and shared an error a chaotic
-  // chain amplified (Trust.AShadowDoesNotShareTheRunsCappedSteps).
+  // DOP853 is checked by Taylor. DOPRI5, checking it above rtol 1e-8 at a thirtieth of the
+  // tolerance (a hundredth would have cost 3.3×), erred as much as DOP853 and cancelled its
+  // error (3e-3 s estimated at 1.1e-4 s; ctest
+  // trust_scene.dop853_checked_by_dopri5_cancelled_its_error). DOP853 checking itself shared the
+  // error of its flights cut short by events: a flight shorter than the run's and the shadow's
+  // steps is one step of its own length at any tolerance, and so is its error (a few ulps of the
+  // angle on a 4.7 ms flight, the same from rtol 1e-9 to 1e-12), which a chain of slow impacts
+  // amplified 1e5 times: a run at rtol 1e-9 erred 4.5e-10 s, its shadow at 1e-11 4.6e-10 s, and
+  // the estimate was 35 times short (ctest trust_scene.dop853_shared_its_short_flights_error).
+  // Taylor's flights are one step of a series whose length follows the tolerance. Held alike, a
+  // run at rtol 1e-6 and its shadow at 1e-8 took the same steps of 1/Ω and shared an error a
+  // chaotic chain amplified: the shadow's longest step is half the run's, and a capped step errs
+  // 2⁹ times less (2⁶ for DOPRI5; Trust.AShadowDoesNotShareTheRunsCappedSteps).
   //
   // Taylor checks itself as DOP853 does: at a hundredth of the tolerance its series is two or
   // three orders longer (Taylor::order_for) and its steps, set by the series' radius, fall
@@ -482,6 +487,7 @@ ShadowOptions check_options(const SimOptions& run) {
   // from 21 to 17 at the same cost (median 2.25× the bare run for DOP853, 2.11× for DOPRI5, 1.31×
   // for Radau IIA).
   if (run.method == Method::dopri5) o.method = Method::dop853;
+  if (run.method == Method::dop853) o.method = Method::taylor;
   if (run.method == Method::radau5) o.method = Method::automatic;
   if (run.method == Method::automatic && auto_explicit_for(run.rtol) == AutoExplicit::dopri5)
     shadow.auto_explicit =
