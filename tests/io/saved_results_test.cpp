@@ -127,6 +127,11 @@ TEST(SavedResults, ABranchReadsBackWithItsBifurcations) {
   EXPECT_EQ(back.bifurcations[0].approached_impacting, std::nullopt);
   EXPECT_EQ(back.bifurcations[1].approached_impacting, false);  // a grazing says its side
   EXPECT_EQ(back.message, "a fold ahead");
+  json not_boolean = orbit_result_json(sent);
+  not_boolean["branch"][2]["neutral"] = "yes";
+  const auto refused_neutral = read_orbit_branch(not_boolean, 1e-10);
+  ASSERT_TRUE(std::holds_alternative<FieldError>(refused_neutral));
+  EXPECT_EQ(std::get<FieldError>(refused_neutral).field, "branch[2].neutral");
   json wrong = orbit_result_json(sent);
   wrong["bifurcations"][0]["kind"] = "cusp";
   const auto refused = read_orbit_branch(wrong, 1e-10);
