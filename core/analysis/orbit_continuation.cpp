@@ -532,6 +532,7 @@ class Continuation {
   }
   struct Grazing;
   std::optional<Grazing> grazing_across(const Step& next) const;
+  bool lands_elsewhere(const Step& next) const;
   struct Grazing {
     double value;
     Vec x, beyond;  // the grazing motion's state, and the free motion's on its far side
@@ -560,6 +561,8 @@ class Continuation {
   }
 
   static constexpr double kStepMin = 1e-7, kStepMax = 0.1;
+  // Steps across a grazing no free motion confirms are shortened down to this (lands_elsewhere).
+  static constexpr double kGrazingStep = 1e-3;
   const ContinuationSpec& spec_;
   const std::function<void(double)>& progress_;
   const std::atomic<bool>* cancel_;
@@ -617,6 +620,10 @@ OrbitBranch Continuation::run() {
       ds_ /= 2.0;
       if (ds_ >= kStepMin || cross_grazing()) continue;
       return branch_;
+    }
+    if (ds_ > kGrazingStep && lands_elsewhere(next)) {
+      ds_ /= 2.0;
+      continue;
     }
     note_bifurcations(next);
     if (past_to(next.point)) {
@@ -738,10 +745,28 @@ std::optional<Continuation::Grazing> Continuation::grazing_across(const Step& ne
     if (l.mobile) return std::nullopt;
   const double angle = map_.at(map_.value(here_.v)).limiters[slow.limiter].angle;
   const double pa = map_.value(impacting.v), pb = map_.value(free.v);
-  const std::optional<FreeMotion> a = free_at(slow, angle, pa, map_.state(impacting.v));
   const std::optional<FreeMotion> b = free_at(slow, angle, pb, map_.state(free.v));
+  // Far from the grazing the impacting motion's state is far from the free motion's: the free
+  // motion on the other side is then the nearer guess.
+  std::optional<FreeMotion> a = free_at(slow, angle, pa, map_.state(impacting.v));
+  if (!a && b) a = free_at(slow, angle, pa, b->x);
   if (!a || !b || !(a->overshoot > 0.0) || !(b->overshoot < 0.0)) return std::nullopt;
   return refine_grazing(slow, angle, pa, *a, pb, *b);
+}
+
+// Whether the step to `next` gains or loses a fixed limiter's impact (the slowest limiter impact
+// of the motion on one side is on a limiter the other's does not strike first) with no grazing of
+// that limiter between them (grazing_across): near a grazing other motions coexist close by, and
+// a long step can land on one of them instead of crossing the grazing.
+bool Continuation::lands_elsewhere(const Step& next) const {
+  if (!crossed(BifurcationKind::grazing, sig_, next.sig)) return false;
+  const SlowImpact h = slowest_impact(here_.map.run), n = slowest_impact(next.point.map.run);
+  const bool limiter_changes =
+      (h.pellet >= 0 && n.limiter != h.limiter) || (n.pellet >= 0 && h.limiter != n.limiter);
+  if (!limiter_changes) return false;
+  for (const Limiter& l : map_.at(map_.value(here_.v)).limiters)
+    if (l.mobile) return false;
+  return !grazing_across(next);
 }
 
 // The grazing of `impact` ahead of the branch: the free motion (the scene without that limiter) at

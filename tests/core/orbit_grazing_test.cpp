@@ -7,6 +7,7 @@
 
 #include <cmath>
 #include <complex>
+#include <optional>
 
 #include "core/analysis/orbit_continuation.h"
 #include "core/analysis/periodic_orbit.h"
@@ -303,16 +304,33 @@ TEST(OrbitGrazing, APelletStartedOnItsStopStaysOnItsOwnSideAlongTheBranch) {
 }
 
 // A motion that strikes the stop at −0.09 fast on every swing grazes a second stop, at 0.06, on
-// its other side. The grazing jump used to start from the slowest limiter impact of any limiter
-// (the fast one on the other stop) and the branch ended at the grazing. Now it jumps from the stop
-// grazed: the motions striking both stops lie on the side the branch came from (the only
-// "impacting" motion past the grazing strikes moving away from the stop), so the branch turns back
-// there onto them, folds at Ω ≈ 3.027 and loses that impact again at a second grazing, closing on
-// itself: it ends where it meets its first grazing again, saying so, and never reaches `to`. Its
-// motions striking both stops are those a periodic-orbit search finds from their states.
-TEST(OrbitGrazing, AMotionStrikingOneStopGrazesTheOtherAndTurnsBack) {
+// its other side. It jumps from the stop grazed: the motions striking both stops lie on the side
+// the branch came from (the only "impacting" motion past the grazing strikes moving away from the
+// stop), so the branch turns back there onto them and folds at Ω ≈ 3.027 and again at 3.0533.
+// There a long step once landed on another motion nearby, one striking the −0.09 stop alone, and
+// took the jump for a grazing at 3.0656 that no free motion confirms; steps across a grazing
+// that none confirms are now shortened until they cross it or fold. Its motions striking both
+// stops are those a periodic-orbit search finds from their states, and at the second fold two
+// such motions found by the search meet and vanish.
+Model two_stop_scene() {
   Model m = stop_scene(0.05139459, 3.06, 0.0, 0.0, 0.0, 0.06, 0.8);
   m.limiters.push_back({-0.09, 0.8, false, -1, {}});
+  return m;
+}
+
+std::optional<PeriodicOrbit> two_stop_motion(double Omega, PhasePoint guess) {
+  Model at = two_stop_scene();
+  at.pellets[0].force.Omega = Omega;
+  OrbitSpec spec;
+  spec.transient = 0;
+  spec.guess = {guess};
+  PeriodicOrbit o = find_periodic_orbit(at, tight(), spec);
+  if (!o.converged || o.impacts_per_period != 2.0) return std::nullopt;
+  return o;
+}
+
+TEST(OrbitGrazing, AMotionStrikingOneStopGrazesTheOtherAndTurnsBack) {
+  const Model m = two_stop_scene();
   const Reproducer r{m, {0.04114439270724999, 0.03604975156863822}, 3.5};
   const OrbitBranch b = follow(r);
   ASSERT_GE(b.bifurcations.size(), 3u) << b.message;
@@ -320,30 +338,42 @@ TEST(OrbitGrazing, AMotionStrikingOneStopGrazesTheOtherAndTurnsBack) {
   EXPECT_NEAR(b.bifurcations[0].value, 3.255791, 1e-5);
   EXPECT_EQ(b.bifurcations[0].approached_impacting, false);
   EXPECT_EQ(b.bifurcations[1].kind, BifurcationKind::fold);
+  EXPECT_NEAR(b.bifurcations[1].value, 3.027047, 1e-5);
+  EXPECT_EQ(b.bifurcations[2].kind, BifurcationKind::fold);
+  EXPECT_NEAR(b.bifurcations[2].value, 3.053279, 1e-5);
   EXPECT_FALSE(b.reached);
-  EXPECT_NE(b.message.find("closes on itself"), std::string::npos) << b.message;
+  EXPECT_FALSE(b.message.empty());
   int compared = 0;
   for (const BranchPoint& p : b.points) {
     // The grazing motion itself (its impact of zero speed counted) is no solve's to compare.
     if (p.impacts_per_period != 2.0 || compared == 3 ||
         std::abs(p.value - b.bifurcations[0].value) < 1e-6)
       continue;
-    Model at = m;
-    at.pellets[0].force.Omega = p.value;
-    OrbitSpec spec;
-    spec.transient = 0;
-    spec.guess = p.state;
-    const PeriodicOrbit o = find_periodic_orbit(at, tight(), spec);
-    ASSERT_TRUE(o.converged) << "at Ω = " << p.value << ": " << o.message;
-    EXPECT_EQ(o.impacts_per_period, 2.0) << "at Ω = " << p.value;
-    EXPECT_NEAR(o.state[0].phi, p.state[0].phi, 1e-9) << "at Ω = " << p.value;
-    EXPECT_NEAR(o.state[0].dphi, p.state[0].dphi, 1e-8) << "at Ω = " << p.value;
+    const std::optional<PeriodicOrbit> o = two_stop_motion(p.value, p.state[0]);
+    ASSERT_TRUE(o) << "at Ω = " << p.value;
+    EXPECT_NEAR(o->state[0].phi, p.state[0].phi, 1e-9) << "at Ω = " << p.value;
+    EXPECT_NEAR(o->state[0].dphi, p.state[0].dphi, 1e-8) << "at Ω = " << p.value;
     EXPECT_LT(p.value, b.bifurcations[0].value);
     ++compared;
   }
   EXPECT_EQ(compared, 3);
-  ASSERT_FALSE(b.points.empty());
-  EXPECT_NEAR(b.points.back().value, b.bifurcations[0].value, 0.01);  // come back round
+  // From the first fold on, the branch stays below the second: no step lands on the motion
+  // striking one stop past it.
+  bool folded = false;
+  for (const BranchPoint& p : b.points) {
+    folded = folded || p.value < b.bifurcations[1].value + 1e-3;
+    if (folded) EXPECT_LE(p.value, b.bifurcations[2].value + 1e-9) << "at Ω = " << p.value;
+  }
+  // The second fold: the stable and the unstable motion beside it, searched from their branch
+  // points 2e-4 below it, are two; 2e-4 above it the search from the fold's state finds neither.
+  const double fold = b.bifurcations[2].value;
+  const std::optional<PeriodicOrbit> stable = two_stop_motion(fold - 2e-4, {0.0393, 0.0605});
+  const std::optional<PeriodicOrbit> unstable = two_stop_motion(fold - 2e-4, {0.0380, 0.0601});
+  ASSERT_TRUE(stable && unstable);
+  EXPECT_TRUE(stable->stable);
+  EXPECT_FALSE(unstable->stable);
+  EXPECT_GT(std::abs(stable->state[0].phi - unstable->state[0].phi), 5e-4);
+  EXPECT_FALSE(two_stop_motion(fold + 2e-4, b.bifurcations[2].state[0]));
 }
 
 // The same scene scaled down 60 times (stops at 0.001 and −0.0015 rad, the force and guess alike:

@@ -109,7 +109,7 @@ export class SceneForm {
       this.restructure((s) => addPellet(s), `[data-field="model.pellets[${n}].m"]`),
     );
     return section(`Pellets (${n} of 1–${MAX_PELLETS})`, [
-      h("p", { class: "note" }, "Force F(t) = F₀ cos(Ωt + ψ); damping adds −c·φ̇ to the acceleration. Angles from the lowest point, positive toward limiter 1; they accept π, e.g. π/12."),
+      h("p", { class: "note" }, "Force F(t) = F₀ cos(Ωt + ψ); damping adds −c·φ̇ to the acceleration. Angles from the lowest point, positive toward limiter 1; they accept π, e.g. π/12. A pellet started on a limiter's angle and moving strikes it at t = 0; to start it leaving the limiter, set φ₀ just off the angle."),
       cards,
       h("div", { class: "adders" }, add),
     ], { field: "model.pellets" });
