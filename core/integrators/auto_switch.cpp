@@ -157,13 +157,17 @@ void AutoSwitch::after_explicit_step() {
   probe_steps_ = 0;
 }
 
-// Before a step while Taylor is the explicit method: after next_probe_ Taylor steps DOP853 runs
-// for kProbeSteps, and longer while its step is held by stability (up to kProbeMaxSteps), so
-// that after_explicit_step can measure it and try RADAU5; otherwise Taylor goes on, and the next
+// Before a step while Taylor is the explicit method: after next_probe_ Taylor steps, at the first
+// step where the system's stiffness_hint exceeds kStiffnessHint, DOP853 runs for kProbeSteps,
+// and longer while its step is held by stability (up to kProbeMaxSteps), so that
+// after_explicit_step can measure it and try RADAU5; otherwise Taylor goes on, and the next
 // probe comes after twice as many steps. DOP853 back from RADAU5 hands over to Taylor at once.
 void AutoSwitch::probe_stiffness() {
   if (active_ == Kind::taylor) {
-    if (++probe_steps_ < next_probe_) return;
+    if (probe_steps_ < next_probe_) ++probe_steps_;
+    if (probe_steps_ < next_probe_ ||
+        sys_->stiffness_hint(taylor_.t(), taylor_.y()) <= kStiffnessHint)
+      return;
     probing_ = true;
     probe_steps_ = 0;
     explicit_ = Kind::dop853;

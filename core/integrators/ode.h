@@ -3,6 +3,7 @@
 #pragma once
 
 #include <Eigen/Dense>
+#include <cmath>
 #include <span>
 
 namespace vibro {
@@ -34,6 +35,11 @@ class OdeSystem {
   }
   // True where taylor_coefficients computes them (`auto` runs the Taylor method only there).
   virtual bool has_taylor_coefficients() const { return false; }
+  // How much faster than the solution itself moves a disturbance of it can decay at (t, y), an
+  // estimate from above where the system knows one: a ratio of rates, large only where the
+  // equations may be stiff. `auto` leaves Taylor to probe for stiffness only above
+  // AutoSwitch::kStiffnessHint. Infinity by default (unknown: always probe).
+  virtual double stiffness_hint(double /*t*/, const Vec& /*y*/) const { return INFINITY; }
 };
 
 }  // namespace vibro

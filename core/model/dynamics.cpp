@@ -85,6 +85,15 @@ void SegmentDynamics::reset(const Vec& y) {
   }
 }
 
+double SegmentDynamics::stiffness_hint(double, const Vec& y) const {
+  double fastest = 0.0;
+  for (std::size_t b = 0; b < bodies_.size(); ++b)
+    if (bodies_[b].mode == Mode::sliding)
+      fastest = std::max(
+          fastest, damping_[b] + 2.0 * law_.mu * std::abs(y[dphi_index(bodies_[b].leader())]));
+  return fastest / std::sqrt(law_.gR);
+}
+
 void SegmentDynamics::evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const {
   if (damped_)
     evaluate<true>(t, y, dydt, J);

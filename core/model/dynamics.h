@@ -113,6 +113,9 @@ class SegmentDynamics final : public OdeSystem {
   bool taylor_coefficients(double t0, const Vec& y0, int order,
                            std::span<double> out) const override;
   bool has_taylor_coefficients() const override { return true; }
+  // The fastest decay of a sliding body's speed disturbance, c + 2μ|φ̇| (the acceleration's
+  // derivative in φ̇ under either friction law), over the pendulum's own rate sqrt(g/R).
+  double stiffness_hint(double t, const Vec& y) const override;
 
  private:
   void evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const;
