@@ -49,6 +49,21 @@ Checked checked_against_reference(const Model& model, double t_end, Method metho
   return c;
 }
 
+// A limiter of a scene of the trust scan: a mobile one is re-armed by the second limiter.
+Limiter limiter(double angle, double k, bool mobile, std::vector<int> pellets = {}) {
+  Limiter l;
+  l.angle = angle;
+  l.k = k;
+  l.mobile = mobile;
+  l.rearm_by = mobile ? 1 : -1;
+  l.pellets = std::move(pellets);
+  return l;
+}
+
+Pellet at_rest(double m, double phi0, Forcing force = {}) {
+  return Pellet{.m = m, .phi0 = phi0, .dphi0 = 0.0, .force = force, .c = 0.0};
+}
+
 // The paper scene is well conditioned: trusted to its end, and the estimate never ten times
 // below the true error (against DOP853 at rtol 1e-13), for every method. Nor a hundred times
 // above it: at rtol 1e-10 the chatter summation's own error (1e-8·sqrt(R/g), which the reference
@@ -630,26 +645,14 @@ TEST(Trust, AShadowOfPelletsAtRestStartsWhereTheyRest) {
   Model model;
   model.R = 0.0093007357066238;
   model.friction = FrictionLaw::bilateral;
-  const auto limiter = [](double angle, double k, bool mobile, std::vector<int> pellets = {}) {
-    Limiter l;
-    l.angle = angle;
-    l.k = k;
-    l.mobile = mobile;
-    l.rearm_by = mobile ? 1 : -1;
-    l.pellets = std::move(pellets);
-    return l;
-  };
   model.limiters = {limiter(-0.470722377945048, 0.25673961639404297, true, {0, 1}),
                     limiter(-0.021421802018324776, 1.0, false),
                     limiter(2.1823932685024108, 0.5932979583740234, true)};
-  const auto pellet = [](double m, double phi0, Forcing force) {
-    return Pellet{.m = m, .phi0 = phi0, .dphi0 = 0.0, .force = force, .c = 0.0};
-  };
-  model.pellets = {pellet(0.14257180925383245, -3.937207368719058, {}),
-                   pellet(0.024764270034854565, 6.1758905416019285,
-                          {0.40811652106956586, 624.5559170285896, 1.3045907389722111}),
-                   pellet(0.017937592454038177, 0.19241771547154407,
-                          {0.16893243372687178, 2.853786293555631, 4.912927007838474})};
+  model.pellets = {at_rest(0.14257180925383245, -3.937207368719058),
+                   at_rest(0.024764270034854565, 6.1758905416019285,
+                           {0.40811652106956586, 624.5559170285896, 1.3045907389722111}),
+                   at_rest(0.017937592454038177, 0.19241771547154407,
+                           {0.16893243372687178, 2.853786293555631, 4.912927007838474})};
   const double t_end = 0.06258654013263003;
   const Model shadow = check_model(model);
   for (std::size_t i = 0; i < model.pellets.size(); ++i) {
