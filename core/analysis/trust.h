@@ -18,8 +18,8 @@ namespace vibro {
 // The shadow's options: the same scene, limits and deadline, nothing recorded but its path (where
 // its start's shifts are found, compare_runs), not checked itself, at a hundredth of both
 // tolerances (down to the smallest the integrators accept) with its longest step halved: DOPRI5
-// checked by DOP853, DOP853 by Taylor, Radau IIA by `auto`, Taylor by itself, and `auto` by itself,
-// on DOP853 where it weighs DOPRI5 against DOP853 (rtol 1e-6 and looser).
+// and DOP853 checked by Taylor, Radau IIA by `auto`, Taylor by itself, and `auto` by itself, on
+// DOP853 where it weighs DOPRI5 against DOP853 (rtol 1e-6 and looser).
 struct ShadowOptions {
   SimOptions options;
   // The shadow's stepper (make_stepper, core/run/simulate.h): which explicit method its `auto`
