@@ -2,10 +2,24 @@
 // x[0..], x[k] = x^(k)(t0)/k!, and coefficient k of a composition needs the inputs up to k only.
 #pragma once
 
+#include <array>
 #include <cmath>
 #include <span>
 
 namespace vibro::integrators {
+
+// 1/k for k = 1..kReciprocals − 1 (entry 0 unused), each the double nearest 1/k: the recursions
+// below multiply by it where they would divide by k, a multiplication's latency on their chains
+// instead of a division's. x·(1/k) differs from x/k by at most one unit in the last place.
+inline constexpr int kReciprocals = 64;
+inline constexpr std::array<double, kReciprocals> kReciprocal = [] {
+  std::array<double, kReciprocals> r{};
+  for (int k = 1; k < kReciprocals; ++k) r[k] = 1.0 / k;
+  return r;
+}();
+
+// 1/k for k >= 1: the table's entry, or the division past it.
+inline double reciprocal(int k) { return k < kReciprocals ? kReciprocal[k] : 1.0 / k; }
 
 // p(τ) = Σ_k c[k]·τ^k by Horner's rule: p ← p·τ + c[k] from the top down, starting from 0.
 // Two steps per pass (the same steps, so the same bits), half the loop's overhead.
@@ -41,8 +55,8 @@ inline void sin_cos_coefficient(std::span<const double> u, std::span<double> S, 
     s += ju * C[k - j];
     c += ju * S[k - j];
   }
-  S[k] = s / k;
-  C[k] = -c / k;
+  S[k] = s * reciprocal(k);
+  C[k] = -c * reciprocal(k);
 }
 
 // The series of A cos(Ω(t0 + τ) + ψ) in τ up to `order`, added into out[0..order]:
@@ -54,7 +68,7 @@ inline void add_cosine_series(double A, double Omega, double phase, int order,
   double factor = A;  // A·Ωᵏ/k!
   for (int k = 0; k <= order; ++k) {
     out[k] += factor * cycle[k % 4];
-    factor *= Omega / (k + 1);
+    factor *= Omega * reciprocal(k + 1);
   }
 }
 

@@ -29,9 +29,9 @@ constexpr std::size_t kJetSeries = 11;
 typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
 
 // Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, from
-// ju[j] = {j·u[j], j·u[j]} (j = 1..k) and CS up to k − 1: integrators::sin_cos_coefficient's
-// sums, term for term and in the same order, both in one pass.
-[[gnu::always_inline]] inline void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
+// ju[j] = {j·u[j], j·u[j]} (j = 1..k), CS up to k − 1 and r = 1/k:
+// integrators::sin_cos_coefficient's sums, term for term and in the same order, both in one pass.
+[[gnu::always_inline]] inline void sin_cos_pair(const Pair* ju, Pair* CS, int k, double r) {
   Pair sc = {0.0, 0.0};  // {Σ j·u[j]·C[k−j], Σ j·u[j]·S[k−j]}
   int j = 1;
   for (; j < k; j += 2) {  // two terms per pass, added one after the other
@@ -39,7 +39,7 @@ typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
     sc += ju[j + 1] * CS[k - j - 1];
   }
   if (j == k) sc += ju[j] * CS[0];
-  CS[k] = Pair{-sc[1] / k, sc[0] / k};
+  CS[k] = Pair{-sc[1] * r, sc[0] * r};
 }
 
 // Coefficients k and k + 1 of the product v·g, from vv[j] = {v[j], v[j]}: each summed over j
@@ -71,8 +71,9 @@ struct BodyJets {
   int side;           // its side of the bilateral law's normal force
   double t0;
   int order;
-  double* state;    // the components' series, (order + 1) each
-  double* scratch;  // kJetSeries·(order + 1) doubles
+  const double* inverse;  // 1/k for k = 1..order + 1 (integrators::kReciprocal)
+  double* state;          // the components' series, (order + 1) each
+  double* scratch;        // kJetSeries·(order + 1) doubles
 };
 
 // The series one body's jets work in, laid out in BodyJets::scratch (kJetSeries·n1 doubles).
@@ -146,7 +147,7 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
     if (k > 0) {
       const double juk = k * u[k];
       x.ju[k] = Pair{juk, juk};
-      sin_cos_pair(x.ju, x.CS, k);
+      sin_cos_pair(x.ju, x.CS, k, in.inverse[k]);
     }
     x.vv[k] = Pair{v[k], v[k]};
     const double Sk = x.CS[k][1], Ck = x.CS[k][0];
@@ -156,13 +157,14 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
                        : x.F[k] / (M * R) - gR * Sk - s * mu * side * (v2 + gR * Ck);
     acc -= damping * v[k];
     if constexpr (kFriction) x.N[k] = R * sigma * (x.Q[k] + gR * Ck);
+    const double r = in.inverse[k + 1];
     if constexpr (kAlone) {
-      phi[k + 1] = dphi[k] / (k + 1);
-      dphi[k + 1] = acc / (k + 1);
+      phi[k + 1] = dphi[k] * r;
+      dphi[k + 1] = acc * r;
     } else {
       for (int i : body.members) {
-        component(phi_index(i))[k + 1] = component(dphi_index(i))[k] / (k + 1);
-        component(dphi_index(i))[k + 1] = acc / (k + 1);
+        component(phi_index(i))[k + 1] = component(dphi_index(i))[k] * r;
+        component(dphi_index(i))[k + 1] = acc * r;
       }
     }
   }
@@ -192,9 +194,9 @@ void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
   // Without v² (no friction, no damper) damper·Q[k] is a zero that changes nothing.
   auto rate = [&](int k, double product) {
     if constexpr (kSquares)
-      return (R * product - damper * x.Q[k]) / (k + 1);
+      return (R * product - damper * x.Q[k]) * in.inverse[k + 1];
     else
-      return R * product / (k + 1);
+      return R * product * in.inverse[k + 1];
   };
   int k = 0;
   for (; k + 1 < order; k += 2) {
@@ -253,7 +255,9 @@ bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
 // A sliding body: its leader's angle u and speed v give every member's acceleration (as
 // SlidingLaw::acceleration, its damping C·v last) and, with each member's force, its work rate
 // R·v·(F_i − m_i·s·μ·n) − m_i·R²·c_i·v².
-// Coefficient k + 1 of each state component is coefficient k of its rate over k + 1.
+// Coefficient k + 1 of each state component is coefficient k of its rate over k + 1, taken as a
+// product with 1/(k + 1) from a table (a multiplication's latency on the recursion's chain, not a
+// division's).
 // Each series is computed by the same operations in the same order as the right-hand side's
 // terms; the shortcuts (a series that is zero, a term that is zero) change no bit.
 void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<double> out) const {
@@ -261,12 +265,17 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
   std::array<double, kJetSeries * kStackTerms> stack;
   double* scratch = stack.data();
-  if (n1 > kStackTerms) {
-    jet_scratch_.resize(kJetSeries * n1);
+  const double* inverse = integrators::kReciprocal.data();
+  static_assert(kStackTerms < integrators::kReciprocals);
+  if (n1 > kStackTerms) {  // the series and the reciprocals 1/k, k <= n1, in the heap
+    jet_scratch_.resize(kJetSeries * n1 + n1 + 1);
     scratch = jet_scratch_.data();
+    double* const tail = scratch + kJetSeries * n1;
+    for (std::size_t k = 1; k <= n1; ++k) tail[k] = integrators::reciprocal(static_cast<int>(k));
+    inverse = tail;
   }
-  const BodyJets in{model_,          body, law_,  mass_[b],   damping_[b],
-                    normal_side_[b], t0,   order, out.data(), scratch};
+  const BodyJets in{model_, body,  law_,    mass_[b],   damping_[b], normal_side_[b],
+                    t0,     order, inverse, out.data(), scratch};
   const bool damped = std::any_of(body.members.begin(), body.members.end(),
                                   [&](int i) { return model_.pellets[i].c != 0.0; });
   if (law_.mu != 0.0)

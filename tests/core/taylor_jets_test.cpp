@@ -57,6 +57,17 @@ Vec series_at(const std::vector<double>& c, int n, int order, double tau) {
   return y;
 }
 
+// The recursions multiply by 1/k from a table: each entry is the double nearest 1/k, and past
+// the table the reciprocal is the division itself.
+TEST(TaylorJets, TheReciprocalsAreTheNearestDoubles) {
+  for (int k = 1; k < integrators::kReciprocals; ++k) {
+    EXPECT_EQ(integrators::kReciprocal[k], 1.0 / k) << "k = " << k;
+    EXPECT_EQ(integrators::reciprocal(k), 1.0 / k) << "k = " << k;
+  }
+  for (int k : {integrators::kReciprocals, 100, 1000})
+    EXPECT_EQ(integrators::reciprocal(k), 1.0 / k);
+}
+
 TEST(TaylorJets, TheForcingSeriesIsItsClosedForm) {
   const double F0 = 0.7, Omega = 9.0, psi = 0.4, t0 = 1.3;
   const int order = 30;
