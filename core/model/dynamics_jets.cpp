@@ -18,27 +18,33 @@ namespace {
 // A body's series up to this order live on the stack (the Taylor method asks for 30 at most);
 // longer ones in SegmentDynamics::jet_scratch_.
 constexpr std::size_t kStackTerms = 32;
-// The series a body's jets need, in units of n1 doubles: {cos u, sin u} pairs (2), j·u[j] pairs
-// (2), v², the body's force, the normal force, one member's force and that force less friction's,
-// and v in pairs {v[j], v[j]} (2).
-constexpr std::size_t kJetSeries = 11;
+// The series a body's jets need, in units of n1 doubles: {cos u, sin u} pairs (2), v², the body's
+// force, the normal force, one member's force and that force less friction's, and v in pairs
+// {v[j], v[j]} (2).
+constexpr std::size_t kJetSeries = 9;
 
 // Two doubles that add and multiply lane by lane, each lane exactly as a double does (IEEE,
 // no contraction): two sums kept side by side are the two sums, bit for bit, at one instruction
 // per step for both. Loaded and stored unaligned.
 typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
 
-// Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, from
-// ju[j] = {j·u[j], j·u[j]} (j = 1..k), CS up to k − 1 and r = 1/k:
-// integrators::sin_cos_coefficient's sums, term for term and in the same order, both in one pass.
-[[gnu::always_inline]] inline void sin_cos_pair(const Pair* ju, Pair* CS, int k, double r) {
-  Pair sc = {0.0, 0.0};  // {Σ j·u[j]·C[k−j], Σ j·u[j]·S[k−j]}
-  int j = 1;
-  for (; j < k; j += 2) {  // two terms per pass, added one after the other
-    sc += ju[j] * CS[k - j];
-    sc += ju[j + 1] * CS[k - j - 1];
+// Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, where u' = v:
+// S[k] = (1/k) Σ_{i=0..k−1} v[i]·C[k−1−i], C[k] = −(1/k) Σ v[i]·S[k−1−i] (S' = v·C, C' = −v·S;
+// integrators::sin_cos_coefficient's sums with j·u[j] = v[j − 1]), both in one pass, from
+// vv[i] = {v[i], v[i]} (i < k), CS up to k − 1 and r = 1/k. The two terms whose inputs the
+// recursion makes last (v[k − 1], CS[k − 1]) are added last and the others in two partial sums
+// beforehand, so that the chain from one coefficient to the next is a few operations, not k.
+[[gnu::always_inline]] inline void sin_cos_pair(const Pair* vv, Pair* CS, int k, double r) {
+  Pair even = {0.0, 0.0}, odd = {0.0, 0.0};  // the terms i = 1..k − 2
+  int i = 1;
+  for (; i + 1 < k - 1; i += 2) {
+    even += vv[i] * CS[k - 1 - i];
+    odd += vv[i + 1] * CS[k - 2 - i];
   }
-  if (j == k) sc += ju[j] * CS[0];
+  if (i < k - 1) even += vv[i] * CS[k - 1 - i];
+  Pair sc = even + odd;  // {Σ v[i]·C[k−1−i], Σ v[i]·S[k−1−i]}
+  if (k > 1) sc += vv[k - 1] * CS[0];
+  sc += vv[0] * CS[k - 1];
   CS[k] = Pair{-sc[1] * r, sc[0] * r};
 }
 
@@ -79,7 +85,6 @@ struct BodyJets {
 // The series one body's jets work in, laid out in BodyJets::scratch (kJetSeries·n1 doubles).
 struct JetSeries {
   Pair* CS;    // {cos u, sin u}, n1 pairs
-  Pair* ju;    // {j·u[j], j·u[j]}, n1 pairs
   double* Q;   // v²
   double* F;   // the body's force
   double* N;   // the normal force
@@ -90,13 +95,12 @@ struct JetSeries {
 
 JetSeries jet_series(double* scratch, std::size_t n1) {
   return {reinterpret_cast<Pair*>(scratch),
-          reinterpret_cast<Pair*>(scratch + 2 * n1),
+          scratch + 2 * n1,
+          scratch + 3 * n1,
           scratch + 4 * n1,
           scratch + 5 * n1,
           scratch + 6 * n1,
-          scratch + 7 * n1,
-          scratch + 8 * n1,
-          reinterpret_cast<Pair*>(scratch + 9 * n1)};
+          reinterpret_cast<Pair*>(scratch + 7 * n1)};
 }
 
 // Adds pellet i's force F0 cos(Ωt + ψ) as a series in τ = t − t0 to into[0..order].
@@ -140,22 +144,24 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
   const int s = body.s, side = in.side;
   const bool paper = law.paper;
   const double sigma = paper ? 1.0 : side;  // n = R·σ·(v² + gR·cos u)
+  const double inv_MR = 1.0 / (M * R);      // F/(M·R) as a product
   x.CS[0] = Pair{std::cos(u[0]), std::sin(u[0])};
   double* const phi = component(phi_index(L));
   double* const dphi = component(dphi_index(L));
   for (int k = 0; k < order; ++k) {
-    if (k > 0) {
-      const double juk = k * u[k];
-      x.ju[k] = Pair{juk, juk};
-      sin_cos_pair(x.ju, x.CS, k, in.inverse[k]);
-    }
+    if (k > 0) sin_cos_pair(x.vv, x.CS, k, in.inverse[k]);
     x.vv[k] = Pair{v[k], v[k]};
     const double Sk = x.CS[k][1], Ck = x.CS[k][0];
     if constexpr (kSquares) x.Q[k] = product_coefficient({v, n1}, {v, n1}, k);
-    const double v2 = square<kSquares>(x, k);
-    double acc = paper ? x.F[k] / (M * R) - s * mu * v2 - gR * (Sk + s * mu * Ck)
-                       : x.F[k] / (M * R) - gR * Sk - s * mu * side * (v2 + gR * Ck);
-    acc -= damping * v[k];
+    double acc;
+    if constexpr (kFriction) {
+      const double v2 = square<kSquares>(x, k);
+      acc = paper ? x.F[k] * inv_MR - s * mu * v2 - gR * (Sk + s * mu * Ck)
+                  : x.F[k] * inv_MR - gR * Sk - s * mu * side * (v2 + gR * Ck);
+    } else {
+      acc = x.F[k] * inv_MR - gR * Sk;  // μ = 0: friction's terms are zeros
+    }
+    if constexpr (kSquares) acc -= damping * v[k];  // 0 without a damper (kSquares false)
     if constexpr (kFriction) x.N[k] = R * sigma * (x.Q[k] + gR * Ck);
     const double r = in.inverse[k + 1];
     if constexpr (kAlone) {
