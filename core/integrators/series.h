@@ -59,6 +59,35 @@ inline void sin_cos_coefficient(std::span<const double> u, std::span<double> S, 
   C[k] = -c * reciprocal(k);
 }
 
+// The factors A·Ωᵏ/k! of the series of A cos(Ω(t0 + τ) + ψ) in τ, k = 0..factors.size() − 1:
+// those add_cosine_series below multiplies, the same products in the same order. They depend on
+// the forcing alone, so a caller that steps one forcing takes them once.
+inline void cosine_series_factors(double A, double Omega, std::span<double> factors) {
+  double factor = A;  // A·Ωᵏ/k!
+  for (std::size_t k = 0; k < factors.size(); ++k) {
+    factors[k] = factor;
+    factor *= Omega * reciprocal(static_cast<int>(k) + 1);
+  }
+}
+
+// The series of A cos(Ω(t0 + τ) + ψ) in τ from its factors (cosine_series_factors) and its phase
+// Ωt0 + ψ, added into out[0..factors.size() − 1]: factors[k]·cos(phase + kπ/2), the cosine's
+// derivatives cycling through cos, −sin, −cos, sin. The same bits as the one-call form below.
+inline void add_cosine_series(std::span<const double> factors, double phase,
+                              std::span<double> out) {
+  const double c = std::cos(phase), s = std::sin(phase);
+  const std::size_t n = factors.size();
+  std::size_t k = 0;
+  for (; k + 4 <= n; k += 4) {
+    out[k] += factors[k] * c;
+    out[k + 1] += factors[k + 1] * -s;
+    out[k + 2] += factors[k + 2] * -c;
+    out[k + 3] += factors[k + 3] * s;
+  }
+  const double cycle[4] = {c, -s, -c, s};
+  for (; k < n; ++k) out[k] += factors[k] * cycle[k % 4];
+}
+
 // The series of A cos(Ω(t0 + τ) + ψ) in τ up to `order`, added into out[0..order]:
 // A·Ωᵏ/k!·cos(Ωt0 + ψ + kπ/2), the cosine's derivatives cycling through cos, −sin, −cos, sin.
 inline void add_cosine_series(double A, double Omega, double phase, int order,

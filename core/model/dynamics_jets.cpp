@@ -11,6 +11,7 @@
 namespace vibro {
 
 using integrators::add_cosine_series;
+using integrators::cosine_series_factors;
 using integrators::product_coefficient;
 
 namespace {
@@ -78,6 +79,7 @@ struct BodyJets {
   double t0;
   int order;
   const double* inverse;  // 1/k for k = 1..order + 1 (integrators::kReciprocal)
+  const double* force;    // every pellet's forcing factors F0·Ωᵏ/k!, (order + 1) each
   double* state;          // the components' series, (order + 1) each
   double* scratch;        // kJetSeries·(order + 1) doubles
 };
@@ -106,9 +108,10 @@ JetSeries jet_series(double* scratch, std::size_t n1) {
 // Adds pellet i's force F0 cos(Ωt + ψ) as a series in τ = t − t0 to into[0..order].
 void add_force(const BodyJets& in, int i, double* into) {
   const Forcing& f = in.model.pellets[i].force;
+  const std::size_t n1 = static_cast<std::size_t>(in.order) + 1;
   if (f.active())
-    add_cosine_series(f.F0, f.Omega, f.Omega * in.t0 + f.psi, in.order,
-                      std::span<double>(into, static_cast<std::size_t>(in.order) + 1));
+    add_cosine_series(std::span<const double>(in.force + static_cast<std::size_t>(i) * n1, n1),
+                      f.Omega * in.t0 + f.psi, std::span<double>(into, n1));
 }
 
 // Coefficient k of v², the square the motion reads: 0 without friction or a damper (kSquares),
@@ -243,6 +246,14 @@ void sliding_jets_of(const BodyJets& in) {
 bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
                                           std::span<double> out) const {
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
+  if (force_order_ != order) {
+    force_factors_.resize(model_.pellets.size() * n1);
+    for (std::size_t i = 0; i < model_.pellets.size(); ++i) {
+      const Forcing& f = model_.pellets[i].force;
+      cosine_series_factors(f.F0, f.Omega, std::span<double>(force_factors_).subspan(i * n1, n1));
+    }
+    force_order_ = order;
+  }
   for (Eigen::Index i = 0; i < y0.size(); ++i) out[static_cast<std::size_t>(i) * n1] = y0[i];
   // A held body's state stays; a sliding body's jets write every coefficient past the first of
   // its members' components.
@@ -280,8 +291,9 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
     for (std::size_t k = 1; k <= n1; ++k) tail[k] = integrators::reciprocal(static_cast<int>(k));
     inverse = tail;
   }
-  const BodyJets in{model_, body,  law_,    mass_[b],   damping_[b], normal_side_[b],
-                    t0,     order, inverse, out.data(), scratch};
+  const BodyJets in{model_,          body,   law_,  mass_[b], damping_[b],
+                    normal_side_[b], t0,     order, inverse,  force_factors_.data(),
+                    out.data(),      scratch};
   const bool damped = std::any_of(body.members.begin(), body.members.end(),
                                   [&](int i) { return model_.pellets[i].c != 0.0; });
   if (law_.mu != 0.0)

@@ -85,6 +85,20 @@ TEST(TaylorJets, TheForcingSeriesIsItsClosedForm) {
   }
 }
 
+// The series from factors taken once (cosine_series_factors) and a phase per step is the one-call
+// form's, bit for bit, at every order's remainder of the kπ/2 cycle.
+TEST(TaylorJets, TheForcingSeriesFromItsFactorsIsTheOneCallForm) {
+  const double F0 = 0.7, Omega = 9.0, phase = 1.3 * 9.0 + 0.4;
+  for (int order : {0, 1, 2, 3, 4, 13, 30}) {
+    std::vector<double> once(order + 1, 0.25), split(order + 1, 0.25), factors(order + 1);
+    integrators::add_cosine_series(F0, Omega, phase, order, once);
+    integrators::cosine_series_factors(F0, Omega, factors);
+    integrators::add_cosine_series(factors, phase, split);
+    for (int k = 0; k <= order; ++k)
+      EXPECT_EQ(split[k], once[k]) << "order " << order << ", k = " << k;
+  }
+}
+
 // Coefficient 1 is the right-hand side; coefficient 2 half its time derivative along the
 // solution, (∂f/∂y·f + ∂f/∂t)/2, from the exact Jacobian.
 TEST(TaylorJets, TheFirstTwoCoefficientsAreTheRightHandSideAndItsDerivative) {
