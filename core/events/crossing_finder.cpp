@@ -314,7 +314,8 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
   const std::span<const double> poly(q.data(), degree + 1);
   // Above every near miss's error over the whole step: no root, no near miss to isolate.
   const double near = 10.0 * (rtol_ * std::max(track.largest, 1.0 + std::numbers::pi) + atol_);
-  if (!stays_above(poly, h, near)) {
+  ValueAndRate end;  // the polynomial's value and rate at the step's end
+  if (!stays_above(poly, h, near, end)) {
     PolynomialMinima minima;  // filled only here: a bound that clears the step costs no minima
     const std::optional<PolynomialBracket> root = first_polynomial_crossing(poly, h, &minima);
     Vec& y = scratch_left_;
@@ -332,7 +333,6 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
   // speeds' or a speed's acceleration), without the state; on the step a deflated watch starts
   // on, the polynomial is that over τ^d.
   const Watch& w = fn.watch;
-  ValueAndRate end = polynomial_value_and_rate(poly, h);
   if (w.deflation == 0) {
     track.last = end.value;
   } else if (w.t0 == t0) {  // poly = (g − g0)/τ^d: its value is the deflated watch's

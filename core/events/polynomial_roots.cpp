@@ -223,10 +223,26 @@ ValueAndRate polynomial_value_and_rate(std::span<const double> c, double tau) {
 }
 
 bool stays_above(std::span<const double> c, double h, double level) {
+  ValueAndRate end;
+  return stays_above(c, h, level, end);
+}
+
+bool stays_above(std::span<const double> c, double h, double level, ValueAndRate& end) {
   const int d = static_cast<int>(c.size()) - 1;
-  if (d < 0 || d > kMaxPolynomialDegree) return false;
-  double spread = 0.0;
-  for (int k = d; k >= 1; --k) spread = (spread + std::abs(c[k])) * h;
+  if (d < 0) {
+    end = {};
+    return false;
+  }
+  // Σ_{k≥1} |c[k]|·h^k beside polynomial_value_and_rate's steps, the same operations: three
+  // chains in one pass.
+  double spread = 0.0, p = 0.0, r = 0.0, kd = d;  // kd: k as a double, exact
+  for (int k = d; k >= 1; --k, kd -= 1.0) {
+    spread = (spread + std::abs(c[k])) * h;
+    p = p * h + c[k];
+    r = r * h + kd * c[k];
+  }
+  end = {p * h + c[0], r};
+  if (d > kMaxPolynomialDegree) return false;
   if (c[0] - spread > level) return true;
   if (quadratic_stays_above(c, h, level)) return true;
   return bernstein_above(c, h, level);

@@ -351,6 +351,25 @@ TEST(PolynomialRoots, ValueAndRateInOnePassAreTheSeparateOnesBitForBit) {
   }
 }
 
+// stays_above's end value and rate, taken beside its first bound, are polynomial_value_and_rate's
+// to the bit, and its verdict the three-argument one's, whatever the verdict.
+TEST(PolynomialRoots, TheBoundsEndValueAndRateAreTheOnePassOnes) {
+  std::vector<double> c;
+  for (int n = 0; n <= 20; ++n) {
+    for (double h : {1e-3, 0.37, 1.7}) {
+      for (double level : {-1.0, 0.0, 0.5}) {
+        ValueAndRate end{-7.0, -7.0};
+        const bool above = stays_above(c, h, level, end);
+        EXPECT_EQ(above, stays_above(c, h, level)) << "n = " << n << ", h = " << h;
+        const ValueAndRate both = polynomial_value_and_rate(c, h);
+        EXPECT_EQ(end.value, both.value) << "n = " << n << ", h = " << h;
+        EXPECT_EQ(end.rate, both.rate) << "n = " << n << ", h = " << h;
+      }
+    }
+    c.push_back(std::sin(1.3 * n + 0.2) / (1.0 + n));
+  }
+}
+
 TEST(PolynomialRoots, ATouchOfZeroIsAMinimumNotACrossing) {
   const std::vector<double> c = {0.25 + 1e-13, -1.0, 1.0};  // (τ − 0.5)² + 1e-13
   PolynomialMinima minima;
