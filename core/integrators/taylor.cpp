@@ -104,9 +104,12 @@ StepStatus Taylor::step(double t_limit) {
   dense_kept_ = false;
   if (!sys_->taylor_coefficients(t_, y_, order_, coefficients_)) return StepStatus::solver_failure;
   ++stats_.rhs_evals;
-  if (!finite_coefficients(coefficients_)) return StepStatus::non_finite;
+  // A coefficient that is not finite makes the step size nil or NaN (an underflow), or its
+  // component's end not finite (Horner's rule carries an infinity or a NaN through): the
+  // coefficients are looked at only on those paths, where they tell which failure it is.
   const StepFit fit = fit_step(step_size(), t_, t_limit, options_.h_max);
-  if (step_underflows(fit.h, t_)) return StepStatus::step_underflow;
+  if (step_underflows(fit.h, t_))
+    return finite_coefficients(coefficients_) ? StepStatus::step_underflow : StepStatus::non_finite;
   const double t_new = fit.lands ? t_limit : t_ + fit.h;
   const double h = t_new - t_;
   const std::size_t n1 = static_cast<std::size_t>(order_) + 1;
