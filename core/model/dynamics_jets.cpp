@@ -147,7 +147,6 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
   const int s = body.s, side = in.side;
   const bool paper = law.paper;
   const double sigma = paper ? 1.0 : side;  // n = R·σ·(v² + gR·cos u)
-  const double inv_MR = 1.0 / (M * R);      // F/(M·R) as a product
   x.CS[0] = Pair{std::cos(u[0]), std::sin(u[0])};
   double* const phi = component(phi_index(L));
   double* const dphi = component(dphi_index(L));
@@ -159,10 +158,10 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
     double acc;
     if constexpr (kFriction) {
       const double v2 = square<kSquares>(x, k);
-      acc = paper ? x.F[k] * inv_MR - s * mu * v2 - gR * (Sk + s * mu * Ck)
-                  : x.F[k] * inv_MR - gR * Sk - s * mu * side * (v2 + gR * Ck);
+      acc = paper ? x.F[k] / (M * R) - s * mu * v2 - gR * (Sk + s * mu * Ck)
+                  : x.F[k] / (M * R) - gR * Sk - s * mu * side * (v2 + gR * Ck);
     } else {
-      acc = x.F[k] * inv_MR - gR * Sk;  // μ = 0: friction's terms are zeros
+      acc = x.F[k] / (M * R) - gR * Sk;  // μ = 0: friction's terms are zeros
     }
     if constexpr (kSquares) acc -= damping * v[k];  // 0 without a damper (kSquares false)
     if constexpr (kFriction) x.N[k] = R * sigma * (x.Q[k] + gR * Ck);
@@ -276,7 +275,10 @@ bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
 // product with 1/(k + 1) from a table (a multiplication's latency on the recursion's chain, not a
 // division's).
 // Each series is computed by the same operations in the same order as the right-hand side's
-// terms; the shortcuts (a series that is zero, a term that is zero) change no bit.
+// terms (F/(M·R) divided as SlidingLaw::acceleration divides it), so coefficient 1 is the
+// right-hand side to the bit: the event code takes a watch's start from the right-hand side and
+// its course from the jets, and a release on the edge of friction's capacity depends on their
+// agreement. The shortcuts (a series that is zero, a term that is zero) change no bit.
 void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<double> out) const {
   const Body& body = bodies_[b];
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;

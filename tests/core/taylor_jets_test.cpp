@@ -125,6 +125,42 @@ TEST(TaylorJets, TheFirstTwoCoefficientsAreTheRightHandSideAndItsDerivative) {
   }
 }
 
+// Coefficient 1 is the right-hand side to the bit, for every friction law, with and without
+// damping and forcing, one member or several: the event code reads a watch's start from the
+// right-hand side (its rate, whether it starts flat) and its series from the jets, and a release
+// on the edge of friction's capacity is decided by that agreement.
+TEST(TaylorJets, TheFirstCoefficientIsTheRightHandSideBitForBit) {
+  for (FrictionLaw law : {FrictionLaw::paper, FrictionLaw::bilateral}) {
+    for (bool damped : {false, true}) {
+      for (bool frictionless : {false, true}) {
+        Model model = forced_model(law);
+        if (frictionless) model.alpha0 = 0.0;
+        for (Pellet& p : model.pellets) p.c = damped ? p.c : 0.0;
+        for (const std::vector<Body>& bodies :
+             {forced_bodies(),
+              std::vector<Body>{Body{.members = {0}, .mode = Mode::sliding, .s = -1},
+                                Body{.members = {1}, .mode = Mode::sliding, .s = 1},
+                                Body{.members = {2}, .mode = Mode::stuck, .s = 1}}}) {
+          const Vec y = forced_state();
+          const SegmentDynamics sys(model, bodies, y);
+          const int order = 13, n = sys.dimension();
+          for (int step = 0; step < 200; ++step) {
+            const double t0 = 0.0137 * step;
+            const std::vector<double> c = jets(sys, t0, y, order);
+            Vec f(n);
+            sys.rhs(t0, y, f);
+            for (int i = 0; i < n; ++i)
+              EXPECT_EQ(c[static_cast<std::size_t>(i) * (order + 1) + 1], f[i])
+                  << "law " << static_cast<int>(law) << ", damped " << damped << ", frictionless "
+                  << frictionless << ", bodies " << bodies.size() << ", t0 " << t0 << ", component "
+                  << i;
+          }
+        }
+      }
+    }
+  }
+}
+
 // The series over a short span against DOP853 at rtol 1e-13 from the same state: every
 // coefficient is checked, where the first two alone are above.
 TEST(TaylorJets, TheSeriesFollowsATightSolutionOfTheRightHandSide) {
