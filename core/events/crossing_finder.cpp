@@ -26,7 +26,7 @@ std::vector<Crossing> CrossingFinder::find(const std::vector<Watch>& watches, co
     const WatchFunction fn{watches[w], model, bodies, *law_};
     bool served = false;
     std::optional<Bracket> first;
-    if (polynomials) first = on_polynomials(tracks_[w], fn, step, states.back(), served);
+    if (polynomials) first = on_polynomials(tracks_[w], fn, step, served);
     if (!served) first = scan(tracks_[w], fn, step, s);
     if (first) brackets_.push_back({static_cast<int>(w), *first});
   }
@@ -303,8 +303,7 @@ bool CrossingFinder::served_by_polynomials(const std::vector<Watch>& watches,
 }
 
 std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const WatchFunction& fn,
-                                                      const StepView& step, const Vec& y_end,
-                                                      bool& served) {
+                                                      const StepView& step, bool& served) {
   const StepPolynomials* p = step.polynomials();
   std::array<double, kMaxPolynomialDegree + 1> q;
   int degree = 0;
@@ -315,7 +314,8 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
   const std::span<const double> poly(q.data(), degree + 1);
   // Above every near miss's error over the whole step: no root, no near miss to isolate.
   const double near = 10.0 * (rtol_ * std::max(track.largest, 1.0 + std::numbers::pi) + atol_);
-  if (!stays_above(poly, h, near)) {
+  ValueAndRate end;  // the polynomial's value and rate at the step's end
+  if (!stays_above(poly, h, near, end)) {
     PolynomialMinima minima;  // filled only here: a bound that clears the step costs no minima
     const std::optional<PolynomialBracket> root = first_polynomial_crossing(poly, h, &minima);
     Vec& y = scratch_left_;
@@ -328,24 +328,23 @@ std::optional<Bracket> CrossingFinder::on_polynomials(WatchTrack& track, const W
     }
     if (root) return Bracket{t0 + root->lo, t0 + root->hi, root->p_lo, root->p_hi};
   }
-  // No root: the track moves on to the step's end, as a scan's would. An undeflated watch's
-  // polynomial is its value, and its derivative the rate closing() gives (a gap's speeds' or a
-  // speed's acceleration), without the state.
-  if (fn.watch.deflation == 0) {
-    if (!follows_motion(fn.watch.kind)) {
-      track.last = polynomial_value(poly, h);
-      return std::nullopt;
-    }
-    const ValueAndRate end = polynomial_value_and_rate(poly, h);
+  // No root: the track moves on to the step's end, as a scan's would. The watch's polynomial is
+  // its value (less g0 where deflated), and its derivative the rate closing() gives (a gap's
+  // speeds' or a speed's acceleration), without the state; on the step a deflated watch starts
+  // on, the polynomial is that over τ^d.
+  const Watch& w = fn.watch;
+  if (w.deflation == 0) {
     track.last = end.value;
-    track.closing = Closing{end.value, end.rate, 0.0};
-    track.curvature_pending = false;
-    track.largest = std::max(track.largest, track.closing.value);
-    return std::nullopt;
+  } else if (w.t0 == t0) {  // poly = (g − g0)/τ^d: its value is the deflated watch's
+    const double hd = w.deflation == 1 ? h : h * h;
+    track.last = end.value;
+    end = {hd * end.value, w.deflation * (hd / h) * end.value + hd * end.rate};
+  } else {  // poly = g − g0: the deflated watch is that over (t − t0)^d
+    const double dt = step.t() - w.t0;
+    track.last = end.value / (w.deflation == 1 ? dt : dt * dt);
   }
-  track.last = fn.value(step.t(), y_end);
-  if (follows_motion(fn.watch.kind)) {
-    track.closing = fn.closing_at(step.t(), y_end);
+  if (follows_motion(w.kind)) {
+    track.closing = Closing{end.value, end.rate, 0.0};
     track.curvature_pending = false;
     track.largest = std::max(track.largest, track.closing.value);
   }

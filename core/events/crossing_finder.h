@@ -159,10 +159,10 @@ class CrossingFinder {
                                          double t_b, const Closing& b);
   // A watch linear in the state on a step given as polynomials: the first root of its
   // polynomial, its minima above zero as near misses; nullopt in `served` when the step or the
-  // watch cannot be served so (then it is scanned). y_end: the state at the step's end (its
-  // polynomials' value there, the stepper's y()).
+  // watch cannot be served so (then it is scanned). Without a root, the watch's value and rate
+  // at the step's end are its polynomial's.
   std::optional<Bracket> on_polynomials(WatchTrack& track, const WatchFunction& fn,
-                                        const StepView& step, const Vec& y_end, bool& served);
+                                        const StepView& step, bool& served);
 
   // Phase refine: the root in a bracket to round-off of t, on the dense output.
   double refine(const WatchFunction& fn, const StepView& step, const Bracket& b);

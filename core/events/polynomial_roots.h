@@ -29,6 +29,9 @@ ValueAndRate polynomial_value_and_rate(std::span<const double> c, double tau);
 // A step far from the watch's root costs a pass or two over its coefficients, not the
 // isolation of its roots; false says nothing.
 bool stays_above(std::span<const double> c, double h, double level);
+// The same, and p's value and rate at h into `end` (polynomial_value_and_rate's, to the bit)
+// from the first bound's pass over c: the end a step that stays above moves its watch to.
+bool stays_above(std::span<const double> c, double h, double level, ValueAndRate& end);
 
 // Where p first falls to zero or below on (0, h], given p(0) > 0: a bracket [lo, hi] with
 // p(lo) > 0 >= p(hi), hi − lo within round-off of the root's time (or hi the turning point where

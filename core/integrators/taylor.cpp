@@ -21,7 +21,8 @@ Taylor::Taylor(const StepperOptions& options)
     : options_(options),
       tol_{options.atol, options.rtol, {}},
       order_(order_for(options.rtol)),
-      safety_(std::exp(-0.7 / (order_ - 1)) / (std::numbers::e * std::numbers::e)) {}
+      safety_(std::exp(-0.7 / (order_ - 1)) / (std::numbers::e * std::numbers::e)),
+      exponents_{1.0 / (order_ - 1), 1.0 / order_} {}
 
 void Taylor::start(const OdeSystem& sys, double t0, const Vec& y0) {
   sys_ = &sys;
@@ -64,13 +65,13 @@ double rough_log2(double x) {
   return exponent + (mantissa - 1.0);
 }
 
-// Which of a^(1/ka) and b^(1/kb) (a, b > 0) is the smaller one by far more than the powers'
-// round-off, judged from rough logarithms and their error bound: 0 (a's), 1 (b's), or −1 where
-// that cannot be told cheaply (close, or not both normal).
-int clearly_smaller(double a, int ka, double b, int kb) {
+// Which of a^ea and b^eb (a, b > 0; the exponents 1/k) is the smaller one by far more than the
+// powers' round-off, judged from rough logarithms and their error bound: 0 (a's), 1 (b's), or
+// −1 where that cannot be told cheaply (close, or not both normal).
+int clearly_smaller(double a, double ea, double b, double eb) {
   if (!std::isnormal(a) || !std::isnormal(b) || a < 0.0 || b < 0.0) return -1;
-  const double la = rough_log2(a) / ka, lb = rough_log2(b) / kb;
-  const double margin = 0.1 / ka + 0.1 / kb;
+  const double la = rough_log2(a) * ea, lb = rough_log2(b) * eb;
+  const double margin = 0.1 * (ea + eb);
   return la + margin < lb ? 0 : lb + margin < la ? 1 : -1;
 }
 
@@ -91,11 +92,11 @@ double Taylor::step_size() {
   }
   // Where the two radii are clearly apart, only the smaller one's power is taken: the same
   // minimum, one power instead of two.
-  if (const int o = clearly_smaller(least[0], orders[0], least[1], orders[1]); o >= 0)
-    return safety_ * std::pow(least[o], 1.0 / orders[o]);
+  if (const int o = clearly_smaller(least[0], exponents_[0], least[1], exponents_[1]); o >= 0)
+    return safety_ * std::pow(least[o], exponents_[o]);
   double rho = std::numeric_limits<double>::infinity();
   for (int o = 0; o < 2; ++o)
-    if (std::isfinite(least[o])) rho = std::min(rho, std::pow(least[o], 1.0 / orders[o]));
+    if (std::isfinite(least[o])) rho = std::min(rho, std::pow(least[o], exponents_[o]));
   return safety_ * rho;
 }
 
@@ -104,9 +105,12 @@ StepStatus Taylor::step(double t_limit) {
   dense_kept_ = false;
   if (!sys_->taylor_coefficients(t_, y_, order_, coefficients_)) return StepStatus::solver_failure;
   ++stats_.rhs_evals;
-  if (!finite_coefficients(coefficients_)) return StepStatus::non_finite;
+  // A coefficient that is not finite makes the step size nil or NaN (an underflow), or its
+  // component's end not finite (Horner's rule carries an infinity or a NaN through): the
+  // coefficients are looked at only on those paths, where they tell which failure it is.
   const StepFit fit = fit_step(step_size(), t_, t_limit, options_.h_max);
-  if (step_underflows(fit.h, t_)) return StepStatus::step_underflow;
+  if (step_underflows(fit.h, t_))
+    return finite_coefficients(coefficients_) ? StepStatus::step_underflow : StepStatus::non_finite;
   const double t_new = fit.lands ? t_limit : t_ + fit.h;
   const double h = t_new - t_;
   const std::size_t n1 = static_cast<std::size_t>(order_) + 1;

@@ -52,7 +52,8 @@ class Taylor final : public Stepper {
   StepperOptions options_;
   Tolerance tol_;
   int order_;
-  double safety_;  // ρ_m/e²
+  double safety_;        // ρ_m/e²
+  double exponents_[2];  // 1/(p − 1), 1/p: the radii's powers, once per order
   const OdeSystem* sys_ = nullptr;
   int n_ = 0;
   double t_ = 0.0, t_prev_ = 0.0;

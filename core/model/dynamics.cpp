@@ -71,6 +71,7 @@ SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bo
 }
 
 void SegmentDynamics::reset(const Vec& y) {
+  force_order_ = -1;
   mass_.clear();
   damping_.clear();
   normal_side_.clear();

@@ -130,6 +130,11 @@ class SegmentDynamics final : public OdeSystem {
   std::vector<int> normal_side_;  // per body: the sign of the bilateral law's normal force
   SlidingLaw law_;
   mutable std::vector<double> jet_scratch_;  // the series of a body's jets, reused
+  // Every pellet's forcing series factors F0·Ωᵏ/k!, (force_order_ + 1) each: taken on the first
+  // jets of an interval (reset() drops them), so that a step computes only the phase's sine and
+  // cosine.
+  mutable std::vector<double> force_factors_;
+  mutable int force_order_ = -1;
 };
 
 }  // namespace vibro

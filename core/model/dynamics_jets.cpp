@@ -11,6 +11,7 @@
 namespace vibro {
 
 using integrators::add_cosine_series;
+using integrators::cosine_series_factors;
 using integrators::product_coefficient;
 
 namespace {
@@ -18,28 +19,34 @@ namespace {
 // A body's series up to this order live on the stack (the Taylor method asks for 30 at most);
 // longer ones in SegmentDynamics::jet_scratch_.
 constexpr std::size_t kStackTerms = 32;
-// The series a body's jets need, in units of n1 doubles: {cos u, sin u} pairs (2), j·u[j] pairs
-// (2), v², the body's force, the normal force, one member's force and that force less friction's,
-// and v in pairs {v[j], v[j]} (2).
-constexpr std::size_t kJetSeries = 11;
+// The series a body's jets need, in units of n1 doubles: {cos u, sin u} pairs (2), v², the body's
+// force, the normal force, one member's force and that force less friction's, and v in pairs
+// {v[j], v[j]} (2).
+constexpr std::size_t kJetSeries = 9;
 
 // Two doubles that add and multiply lane by lane, each lane exactly as a double does (IEEE,
 // no contraction): two sums kept side by side are the two sums, bit for bit, at one instruction
 // per step for both. Loaded and stored unaligned.
 typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
 
-// Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, from
-// ju[j] = {j·u[j], j·u[j]} (j = 1..k) and CS up to k − 1: integrators::sin_cos_coefficient's
-// sums, term for term and in the same order, both in one pass.
-[[gnu::always_inline]] inline void sin_cos_pair(const Pair* ju, Pair* CS, int k) {
-  Pair sc = {0.0, 0.0};  // {Σ j·u[j]·C[k−j], Σ j·u[j]·S[k−j]}
-  int j = 1;
-  for (; j < k; j += 2) {  // two terms per pass, added one after the other
-    sc += ju[j] * CS[k - j];
-    sc += ju[j + 1] * CS[k - j - 1];
+// Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, where u' = v:
+// S[k] = (1/k) Σ_{i=0..k−1} v[i]·C[k−1−i], C[k] = −(1/k) Σ v[i]·S[k−1−i] (S' = v·C, C' = −v·S;
+// integrators::sin_cos_coefficient's sums with j·u[j] = v[j − 1]), both in one pass, from
+// vv[i] = {v[i], v[i]} (i < k), CS up to k − 1 and r = 1/k. The two terms whose inputs the
+// recursion makes last (v[k − 1], CS[k − 1]) are added last and the others in two partial sums
+// beforehand, so that the chain from one coefficient to the next is a few operations, not k.
+[[gnu::always_inline]] inline void sin_cos_pair(const Pair* vv, Pair* CS, int k, double r) {
+  Pair even = {0.0, 0.0}, odd = {0.0, 0.0};  // the terms i = 1..k − 2
+  int i = 1;
+  for (; i + 1 < k - 1; i += 2) {
+    even += vv[i] * CS[k - 1 - i];
+    odd += vv[i + 1] * CS[k - 2 - i];
   }
-  if (j == k) sc += ju[j] * CS[0];
-  CS[k] = Pair{-sc[1] / k, sc[0] / k};
+  if (i < k - 1) even += vv[i] * CS[k - 1 - i];
+  Pair sc = even + odd;  // {Σ v[i]·C[k−1−i], Σ v[i]·S[k−1−i]}
+  if (k > 1) sc += vv[k - 1] * CS[0];
+  sc += vv[0] * CS[k - 1];
+  CS[k] = Pair{-sc[1] * r, sc[0] * r};
 }
 
 // Coefficients k and k + 1 of the product v·g, from vv[j] = {v[j], v[j]}: each summed over j
@@ -71,14 +78,15 @@ struct BodyJets {
   int side;           // its side of the bilateral law's normal force
   double t0;
   int order;
-  double* state;    // the components' series, (order + 1) each
-  double* scratch;  // kJetSeries·(order + 1) doubles
+  const double* inverse;  // 1/k for k = 1..order + 1 (integrators::kReciprocal)
+  const double* force;    // every pellet's forcing factors F0·Ωᵏ/k!, (order + 1) each
+  double* state;          // the components' series, (order + 1) each
+  double* scratch;        // kJetSeries·(order + 1) doubles
 };
 
 // The series one body's jets work in, laid out in BodyJets::scratch (kJetSeries·n1 doubles).
 struct JetSeries {
   Pair* CS;    // {cos u, sin u}, n1 pairs
-  Pair* ju;    // {j·u[j], j·u[j]}, n1 pairs
   double* Q;   // v²
   double* F;   // the body's force
   double* N;   // the normal force
@@ -89,21 +97,21 @@ struct JetSeries {
 
 JetSeries jet_series(double* scratch, std::size_t n1) {
   return {reinterpret_cast<Pair*>(scratch),
-          reinterpret_cast<Pair*>(scratch + 2 * n1),
+          scratch + 2 * n1,
+          scratch + 3 * n1,
           scratch + 4 * n1,
           scratch + 5 * n1,
           scratch + 6 * n1,
-          scratch + 7 * n1,
-          scratch + 8 * n1,
-          reinterpret_cast<Pair*>(scratch + 9 * n1)};
+          reinterpret_cast<Pair*>(scratch + 7 * n1)};
 }
 
 // Adds pellet i's force F0 cos(Ωt + ψ) as a series in τ = t − t0 to into[0..order].
 void add_force(const BodyJets& in, int i, double* into) {
   const Forcing& f = in.model.pellets[i].force;
+  const std::size_t n1 = static_cast<std::size_t>(in.order) + 1;
   if (f.active())
-    add_cosine_series(f.F0, f.Omega, f.Omega * in.t0 + f.psi, in.order,
-                      std::span<double>(into, static_cast<std::size_t>(in.order) + 1));
+    add_cosine_series(std::span<const double>(in.force + static_cast<std::size_t>(i) * n1, n1),
+                      f.Omega * in.t0 + f.psi, std::span<double>(into, n1));
 }
 
 // Coefficient k of v², the square the motion reads: 0 without friction or a damper (kSquares),
@@ -143,26 +151,28 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
   double* const phi = component(phi_index(L));
   double* const dphi = component(dphi_index(L));
   for (int k = 0; k < order; ++k) {
-    if (k > 0) {
-      const double juk = k * u[k];
-      x.ju[k] = Pair{juk, juk};
-      sin_cos_pair(x.ju, x.CS, k);
-    }
+    if (k > 0) sin_cos_pair(x.vv, x.CS, k, in.inverse[k]);
     x.vv[k] = Pair{v[k], v[k]};
     const double Sk = x.CS[k][1], Ck = x.CS[k][0];
     if constexpr (kSquares) x.Q[k] = product_coefficient({v, n1}, {v, n1}, k);
-    const double v2 = square<kSquares>(x, k);
-    double acc = paper ? x.F[k] / (M * R) - s * mu * v2 - gR * (Sk + s * mu * Ck)
-                       : x.F[k] / (M * R) - gR * Sk - s * mu * side * (v2 + gR * Ck);
-    acc -= damping * v[k];
+    double acc;
+    if constexpr (kFriction) {
+      const double v2 = square<kSquares>(x, k);
+      acc = paper ? x.F[k] / (M * R) - s * mu * v2 - gR * (Sk + s * mu * Ck)
+                  : x.F[k] / (M * R) - gR * Sk - s * mu * side * (v2 + gR * Ck);
+    } else {
+      acc = x.F[k] / (M * R) - gR * Sk;  // μ = 0: friction's terms are zeros
+    }
+    if constexpr (kSquares) acc -= damping * v[k];  // 0 without a damper (kSquares false)
     if constexpr (kFriction) x.N[k] = R * sigma * (x.Q[k] + gR * Ck);
+    const double r = in.inverse[k + 1];
     if constexpr (kAlone) {
-      phi[k + 1] = dphi[k] / (k + 1);
-      dphi[k + 1] = acc / (k + 1);
+      phi[k + 1] = dphi[k] * r;
+      dphi[k + 1] = acc * r;
     } else {
       for (int i : body.members) {
-        component(phi_index(i))[k + 1] = component(dphi_index(i))[k] / (k + 1);
-        component(dphi_index(i))[k + 1] = acc / (k + 1);
+        component(phi_index(i))[k + 1] = component(dphi_index(i))[k] * r;
+        component(dphi_index(i))[k + 1] = acc * r;
       }
     }
   }
@@ -192,9 +202,9 @@ void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
   // Without v² (no friction, no damper) damper·Q[k] is a zero that changes nothing.
   auto rate = [&](int k, double product) {
     if constexpr (kSquares)
-      return (R * product - damper * x.Q[k]) / (k + 1);
+      return (R * product - damper * x.Q[k]) * in.inverse[k + 1];
     else
-      return R * product / (k + 1);
+      return R * product * in.inverse[k + 1];
   };
   int k = 0;
   for (; k + 1 < order; k += 2) {
@@ -235,6 +245,14 @@ void sliding_jets_of(const BodyJets& in) {
 bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
                                           std::span<double> out) const {
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
+  if (force_order_ != order) {
+    force_factors_.resize(model_.pellets.size() * n1);
+    for (std::size_t i = 0; i < model_.pellets.size(); ++i) {
+      const Forcing& f = model_.pellets[i].force;
+      cosine_series_factors(f.F0, f.Omega, std::span<double>(force_factors_).subspan(i * n1, n1));
+    }
+    force_order_ = order;
+  }
   for (Eigen::Index i = 0; i < y0.size(); ++i) out[static_cast<std::size_t>(i) * n1] = y0[i];
   // A held body's state stays; a sliding body's jets write every coefficient past the first of
   // its members' components.
@@ -253,20 +271,31 @@ bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
 // A sliding body: its leader's angle u and speed v give every member's acceleration (as
 // SlidingLaw::acceleration, its damping C·v last) and, with each member's force, its work rate
 // R·v·(F_i − m_i·s·μ·n) − m_i·R²·c_i·v².
-// Coefficient k + 1 of each state component is coefficient k of its rate over k + 1.
+// Coefficient k + 1 of each state component is coefficient k of its rate over k + 1, taken as a
+// product with 1/(k + 1) from a table (a multiplication's latency on the recursion's chain, not a
+// division's).
 // Each series is computed by the same operations in the same order as the right-hand side's
-// terms; the shortcuts (a series that is zero, a term that is zero) change no bit.
+// terms (F/(M·R) divided as SlidingLaw::acceleration divides it), so coefficient 1 is the
+// right-hand side to the bit: the event code takes a watch's start from the right-hand side and
+// its course from the jets, and a release on the edge of friction's capacity depends on their
+// agreement. The shortcuts (a series that is zero, a term that is zero) change no bit.
 void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<double> out) const {
   const Body& body = bodies_[b];
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
   std::array<double, kJetSeries * kStackTerms> stack;
   double* scratch = stack.data();
-  if (n1 > kStackTerms) {
-    jet_scratch_.resize(kJetSeries * n1);
+  const double* inverse = integrators::kReciprocal.data();
+  static_assert(kStackTerms < integrators::kReciprocals);
+  if (n1 > kStackTerms) {  // the series and the reciprocals 1/k, k <= n1, in the heap
+    jet_scratch_.resize(kJetSeries * n1 + n1 + 1);
     scratch = jet_scratch_.data();
+    double* const tail = scratch + kJetSeries * n1;
+    for (std::size_t k = 1; k <= n1; ++k) tail[k] = integrators::reciprocal(static_cast<int>(k));
+    inverse = tail;
   }
-  const BodyJets in{model_,          body, law_,  mass_[b],   damping_[b],
-                    normal_side_[b], t0,   order, out.data(), scratch};
+  const BodyJets in{model_,          body,   law_,  mass_[b], damping_[b],
+                    normal_side_[b], t0,     order, inverse,  force_factors_.data(),
+                    out.data(),      scratch};
   const bool damped = std::any_of(body.members.begin(), body.members.end(),
                                   [&](int i) { return model_.pellets[i].c != 0.0; });
   if (law_.mu != 0.0)

@@ -290,6 +290,39 @@ TEST(PolynomialRoots, TheFirstCrossingsBracketIsRoundOffWide) {
   EXPECT_NEAR(b->hi, 0.3, 4.0 * kEps);
 }
 
+// Roots anywhere in the step, near its ends, of a line, of a steep and of a flattening approach
+// ((r − τ)(1 + aτ + bτ²) on [0, h], factors positive there): the bracket holds r and is
+// round-off wide, however the secants approach it (from one side, past it, or landing on it).
+TEST(PolynomialRoots, EveryRootsBracketHoldsItToRoundOff) {
+  const double h = 0.08;
+  int cases = 0;
+  for (double r :
+       {1e-9 * h, 1e-6 * h, 0.013 * h, 0.31 * h, 0.5 * h, 0.77 * h, 0.999 * h, (1.0 - 1e-9) * h}) {
+    for (double a : {-10.0, 0.0, 3.0, 40.0}) {
+      for (double q : {-100.0, 0.0, 150.0, 2000.0}) {
+        // Positive on [0, h]: 1 + a·τ + q·τ² at both ends and at its vertex.
+        auto factor = [&](double t) { return 1.0 + a * t + q * t * t; };
+        const double vertex = q != 0.0 ? -a / (2.0 * q) : -1.0;
+        if (!(factor(0.0) > 0.0 && factor(h) > 0.0) ||
+            (vertex > 0.0 && vertex < h && !(factor(vertex) > 0.0)))
+          continue;
+        const std::vector<double> c = {r, r * a - 1.0, r * q - a, -q};
+        const auto b = first_polynomial_crossing(c, h);
+        ASSERT_TRUE(b) << "r " << r << ", a " << a << ", q " << q;
+        EXPECT_GT(b->p_lo, 0.0);
+        EXPECT_LE(b->p_hi, 0.0);
+        EXPECT_LE(b->hi - b->lo, 4.0 * kEps * b->hi) << "r " << r << ", a " << a << ", q " << q;
+        // The root to within its condition: p's round-off over its slope at r.
+        const double slack = 8.0 * kEps * (r + std::abs(r * a) + std::abs(r * q)) + 4.0 * kEps * r;
+        EXPECT_LE(b->lo, r + slack) << "r " << r << ", a " << a << ", q " << q;
+        EXPECT_GE(b->hi, r - slack) << "r " << r << ", a " << a << ", q " << q;
+        ++cases;
+      }
+    }
+  }
+  EXPECT_GT(cases, 80);
+}
+
 // (τ − 0.5)² + 0.3 on [0, 1]: the crude bound 0.55 − 1 − 1 proves nothing, its quadratic part
 // proves it above 0.06 (its Bernstein coefficients (0.55, 0.05, 0.55) would not), never above
 // its minimum 0.3; with a cubic term the quadratic part's bound leaves the Bernstein
@@ -313,6 +346,25 @@ TEST(PolynomialRoots, ValueAndRateInOnePassAreTheSeparateOnesBitForBit) {
       const ValueAndRate both = polynomial_value_and_rate(c, tau);
       EXPECT_EQ(both.value, polynomial_value(c, tau)) << "n = " << n << ", tau = " << tau;
       EXPECT_EQ(both.rate, polynomial_rate(c, tau)) << "n = " << n << ", tau = " << tau;
+    }
+    c.push_back(std::sin(1.3 * n + 0.2) / (1.0 + n));
+  }
+}
+
+// stays_above's end value and rate, taken beside its first bound, are polynomial_value_and_rate's
+// to the bit, and its verdict the three-argument one's, whatever the verdict.
+TEST(PolynomialRoots, TheBoundsEndValueAndRateAreTheOnePassOnes) {
+  std::vector<double> c;
+  for (int n = 0; n <= 20; ++n) {
+    for (double h : {1e-3, 0.37, 1.7}) {
+      for (double level : {-1.0, 0.0, 0.5}) {
+        ValueAndRate end{-7.0, -7.0};
+        const bool above = stays_above(c, h, level, end);
+        EXPECT_EQ(above, stays_above(c, h, level)) << "n = " << n << ", h = " << h;
+        const ValueAndRate both = polynomial_value_and_rate(c, h);
+        EXPECT_EQ(end.value, both.value) << "n = " << n << ", h = " << h;
+        EXPECT_EQ(end.rate, both.rate) << "n = " << n << ", h = " << h;
+      }
     }
     c.push_back(std::sin(1.3 * n + 0.2) / (1.0 + n));
   }

@@ -57,6 +57,17 @@ Vec series_at(const std::vector<double>& c, int n, int order, double tau) {
   return y;
 }
 
+// The recursions multiply by 1/k from a table: each entry is the double nearest 1/k, and past
+// the table the reciprocal is the division itself.
+TEST(TaylorJets, TheReciprocalsAreTheNearestDoubles) {
+  for (int k = 1; k < integrators::kReciprocals; ++k) {
+    EXPECT_EQ(integrators::kReciprocal[k], 1.0 / k) << "k = " << k;
+    EXPECT_EQ(integrators::reciprocal(k), 1.0 / k) << "k = " << k;
+  }
+  for (int k : {integrators::kReciprocals, 100, 1000})
+    EXPECT_EQ(integrators::reciprocal(k), 1.0 / k);
+}
+
 TEST(TaylorJets, TheForcingSeriesIsItsClosedForm) {
   const double F0 = 0.7, Omega = 9.0, psi = 0.4, t0 = 1.3;
   const int order = 30;
@@ -71,6 +82,20 @@ TEST(TaylorJets, TheForcingSeriesIsItsClosedForm) {
     double p = 0.0;
     for (int k = order; k >= 0; --k) p = p * tau + c[k];
     EXPECT_NEAR(p, F0 * std::cos(Omega * (t0 + tau) + psi), 1e-14);
+  }
+}
+
+// The series from factors taken once (cosine_series_factors) and a phase per step is the one-call
+// form's, bit for bit, at every order's remainder of the kπ/2 cycle.
+TEST(TaylorJets, TheForcingSeriesFromItsFactorsIsTheOneCallForm) {
+  const double F0 = 0.7, Omega = 9.0, phase = 1.3 * 9.0 + 0.4;
+  for (int order : {0, 1, 2, 3, 4, 13, 30}) {
+    std::vector<double> once(order + 1, 0.25), split(order + 1, 0.25), factors(order + 1);
+    integrators::add_cosine_series(F0, Omega, phase, order, once);
+    integrators::cosine_series_factors(F0, Omega, factors);
+    integrators::add_cosine_series(factors, phase, split);
+    for (int k = 0; k <= order; ++k)
+      EXPECT_EQ(split[k], once[k]) << "order " << order << ", k = " << k;
   }
 }
 
@@ -96,6 +121,42 @@ TEST(TaylorJets, TheFirstTwoCoefficientsAreTheRightHandSideAndItsDerivative) {
       EXPECT_EQ(c[at], y[i]);
       EXPECT_NEAR(c[at + 1], f[i], 1e-14 * (1.0 + std::abs(f[i]))) << "component " << i;
       EXPECT_NEAR(c[at + 2], second[i], 1e-13 * (1.0 + std::abs(second[i]))) << "component " << i;
+    }
+  }
+}
+
+// Coefficient 1 is the right-hand side to the bit, for every friction law, with and without
+// damping and forcing, one member or several: the event code reads a watch's start from the
+// right-hand side (its rate, whether it starts flat) and its series from the jets, and a release
+// on the edge of friction's capacity is decided by that agreement.
+TEST(TaylorJets, TheFirstCoefficientIsTheRightHandSideBitForBit) {
+  for (FrictionLaw law : {FrictionLaw::paper, FrictionLaw::bilateral}) {
+    for (bool damped : {false, true}) {
+      for (bool frictionless : {false, true}) {
+        Model model = forced_model(law);
+        if (frictionless) model.alpha0 = 0.0;
+        for (Pellet& p : model.pellets) p.c = damped ? p.c : 0.0;
+        for (const std::vector<Body>& bodies :
+             {forced_bodies(),
+              std::vector<Body>{Body{.members = {0}, .mode = Mode::sliding, .s = -1},
+                                Body{.members = {1}, .mode = Mode::sliding, .s = 1},
+                                Body{.members = {2}, .mode = Mode::stuck, .s = 1}}}) {
+          const Vec y = forced_state();
+          const SegmentDynamics sys(model, bodies, y);
+          const int order = 13, n = sys.dimension();
+          for (int step = 0; step < 200; ++step) {
+            const double t0 = 0.0137 * step;
+            const std::vector<double> c = jets(sys, t0, y, order);
+            Vec f(n);
+            sys.rhs(t0, y, f);
+            for (int i = 0; i < n; ++i)
+              EXPECT_EQ(c[static_cast<std::size_t>(i) * (order + 1) + 1], f[i])
+                  << "law " << static_cast<int>(law) << ", damped " << damped << ", frictionless "
+                  << frictionless << ", bodies " << bodies.size() << ", t0 " << t0 << ", component "
+                  << i;
+          }
+        }
+      }
     }
   }
 }

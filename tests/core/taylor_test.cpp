@@ -6,6 +6,8 @@
 #include <gtest/gtest.h>
 
 #include <cmath>
+#include <limits>
+#include <span>
 #include <vector>
 
 #include "core/analysis/checked_run.h"
@@ -98,6 +100,50 @@ TEST(Taylor, ASystemWithoutJetsFailsItsFirstStep) {
   taylor.start(sys, 0.0, Vec::Ones(1));
   EXPECT_EQ(taylor.step(1.0), StepStatus::solver_failure);
   EXPECT_EQ(taylor.t(), 0.0);
+}
+
+// y' = −y, two components, whose jets put `bad` (NaN or an infinity) at coefficient k of
+// component 1.
+class BadJets final : public OdeSystem {
+ public:
+  BadJets(double bad, int k) : bad_(bad), k_(k) {}
+  int dimension() const override { return 2; }
+  void rhs(double, const Vec& y, Vec& dydt) const override { dydt = -y; }
+  void jacobian(double, const Vec&, Mat& dfdy, Vec& dfdt) const override {
+    dfdy = -Mat::Identity(2, 2);
+    dfdt.setZero();
+  }
+  bool taylor_coefficients(double, const Vec& y0, int order, std::span<double> out) const override {
+    for (int i = 0; i < 2; ++i) {
+      double c = y0[i];
+      for (int k = 0; k <= order; ++k, c /= -k)
+        out[static_cast<std::size_t>(i) * (order + 1) + k] = c;
+    }
+    out[static_cast<std::size_t>(order + 1) + k_] = bad_;
+    return true;
+  }
+  bool has_taylor_coefficients() const override { return true; }
+
+ private:
+  double bad_;
+  int k_;
+};
+
+// A coefficient that is not finite, wherever it is (the step size's orders or the others), fails
+// the step as non-finite and leaves the state where it was.
+TEST(Taylor, ACoefficientThatIsNotFiniteFailsTheStepAsNonFinite) {
+  const double inf = std::numeric_limits<double>::infinity();
+  for (double bad : {std::nan(""), inf, -inf}) {
+    for (int k : {1, 5, 12, 13}) {
+      const BadJets sys(bad, k);
+      integrators::Taylor taylor(StepperOptions{1e-10, 1e-13});  // order 13
+      taylor.start(sys, 0.0, Vec::Ones(2));
+      EXPECT_EQ(taylor.step(1.0), StepStatus::non_finite) << "bad " << bad << ", k " << k;
+      EXPECT_EQ(taylor.t(), 0.0);
+      EXPECT_EQ(taylor.y()[1], 1.0);
+      EXPECT_EQ(taylor.polynomials(), nullptr);
+    }
+  }
 }
 
 // Issue 33's figure: on the impact oscillator (Ω = 7, 70 periods) at rtol 1e-12, at most half
