@@ -10,6 +10,7 @@ Fields::Fields(const nlohmann::json& json, std::string path) : json_(json), path
   if (!json_.is_object()) {
     throw FieldException(path_.empty() ? "scene" : path_, "must be a JSON object");
   }
+  read_.reserve(16);
 }
 
 std::string Fields::path(const std::string& key) const {
@@ -17,7 +18,7 @@ std::string Fields::path(const std::string& key) const {
 }
 
 const nlohmann::json* Fields::value(const std::string& key) {
-  read_.insert(key);
+  if (std::find(read_.begin(), read_.end(), key) == read_.end()) read_.push_back(key);
   auto it = json_.find(key);
   if (it == json_.end() || it->is_null()) return nullptr;
   return &*it;
@@ -120,13 +121,13 @@ std::size_t distance(const std::string& a, const std::string& b) {
 
 void Fields::done() const {
   for (auto it = json_.begin(); it != json_.end(); ++it) {
-    if (read_.count(it.key())) continue;
+    if (std::find(read_.begin(), read_.end(), it.key()) != read_.end()) continue;
     std::string message = "is not a known field here";
     std::string best;
-    std::size_t best_distance = 3;  // suggest only close matches
+    std::size_t best_distance = 3;  // suggest only close matches, the first in sorted order
     for (const std::string& known : read_) {
       const std::size_t d = distance(it.key(), known);
-      if (d < best_distance) {
+      if (d < best_distance || (d == best_distance && !best.empty() && known < best)) {
         best_distance = d;
         best = known;
       }
