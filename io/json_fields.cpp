@@ -24,11 +24,21 @@ const nlohmann::json* Fields::value(const std::string& key) {
   return &*it;
 }
 
+namespace {
+
+// Why `v` is not a finite number, or null when it is one: the field's path is spelled out only
+// for an error.
+const char* not_a_number(const nlohmann::json& v) {
+  if (!v.is_number()) return "must be a number";
+  if (!std::isfinite(v.get<double>())) return "must be a finite number";
+  return nullptr;
+}
+
+}  // namespace
+
 double as_number(const nlohmann::json& v, const std::string& field) {
-  if (!v.is_number()) throw FieldException(field, "must be a number");
-  const double x = v.get<double>();
-  if (!std::isfinite(x)) throw FieldException(field, "must be a finite number");
-  return x;
+  if (const char* why = not_a_number(v)) throw FieldException(field, why);
+  return v.get<double>();
 }
 
 long as_integer(const nlohmann::json& v, const std::string& field) {
@@ -52,7 +62,8 @@ long as_integer(const nlohmann::json& v, const std::string& field) {
 std::optional<double> Fields::number(const std::string& key) {
   const nlohmann::json* v = value(key);
   if (!v) return std::nullopt;
-  return as_number(*v, path(key));
+  if (const char* why = not_a_number(*v)) throw FieldException(path(key), why);
+  return v->get<double>();
 }
 
 double Fields::number(const std::string& key, double fallback) {
