@@ -13,12 +13,15 @@ Fields::Fields(const nlohmann::json& json, std::string path) : json_(json), path
   read_.reserve(16);
 }
 
-std::string Fields::path(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
+std::string Fields::path(std::string_view key) const {
+  if (path_.empty()) return std::string(key);
+  std::string p;
+  p.reserve(path_.size() + 1 + key.size());
+  return p.append(path_).append(1, '.').append(key);
 }
 
-const nlohmann::json* Fields::value(const std::string& key) {
-  if (std::find(read_.begin(), read_.end(), key) == read_.end()) read_.push_back(key);
+const nlohmann::json* Fields::value(std::string_view key) {
+  if (std::find(read_.begin(), read_.end(), key) == read_.end()) read_.emplace_back(key);
   auto it = json_.find(key);
   if (it == json_.end() || it->is_null()) return nullptr;
   return &*it;
@@ -59,37 +62,37 @@ long as_integer(const nlohmann::json& v, const std::string& field) {
   throw FieldException(field, "must be an integer");
 }
 
-std::optional<double> Fields::number(const std::string& key) {
+std::optional<double> Fields::number(std::string_view key) {
   const nlohmann::json* v = value(key);
   if (!v) return std::nullopt;
   if (const char* why = not_a_number(*v)) throw FieldException(path(key), why);
   return v->get<double>();
 }
 
-double Fields::number(const std::string& key, double fallback) {
+double Fields::number(std::string_view key, double fallback) {
   return number(key).value_or(fallback);
 }
 
-double Fields::required_number(const std::string& key) {
+double Fields::required_number(std::string_view key) {
   auto x = number(key);
   if (!x) throw FieldException(path(key), "is required (a number)");
   return *x;
 }
 
-std::optional<long> Fields::integer(const std::string& key) {
+std::optional<long> Fields::integer(std::string_view key) {
   const nlohmann::json* v = value(key);
   if (!v) return std::nullopt;
   return as_integer(*v, path(key));
 }
 
-bool Fields::boolean(const std::string& key, bool fallback) {
+bool Fields::boolean(std::string_view key, bool fallback) {
   const nlohmann::json* v = value(key);
   if (!v) return fallback;
   if (!v->is_boolean()) throw FieldException(path(key), "must be true or false");
   return v->get<bool>();
 }
 
-std::optional<std::string> Fields::string(const std::string& key, std::size_t max_length) {
+std::optional<std::string> Fields::string(std::string_view key, std::size_t max_length) {
   const nlohmann::json* v = value(key);
   if (!v) return std::nullopt;
   if (!v->is_string()) throw FieldException(path(key), "must be a string");
@@ -100,7 +103,7 @@ std::optional<std::string> Fields::string(const std::string& key, std::size_t ma
   return s;
 }
 
-const nlohmann::json* Fields::array(const std::string& key, std::size_t max_items) {
+const nlohmann::json* Fields::array(std::string_view key, std::size_t max_items) {
   const nlohmann::json* v = value(key);
   if (!v) return nullptr;
   if (!v->is_array()) throw FieldException(path(key), "must be an array");

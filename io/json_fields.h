@@ -7,6 +7,7 @@
 #include <optional>
 #include <stdexcept>
 #include <string>
+#include <string_view>
 #include <vector>
 
 namespace vibro {
@@ -23,18 +24,18 @@ class Fields {
   // `json` must be an object, else FieldException naming `path`.
   Fields(const nlohmann::json& json, std::string path);
 
-  std::optional<double> number(const std::string& key);
-  double number(const std::string& key, double fallback);
-  double required_number(const std::string& key);
-  std::optional<long> integer(const std::string& key);
-  bool boolean(const std::string& key, bool fallback);
-  std::optional<std::string> string(const std::string& key, std::size_t max_length = 200);
+  std::optional<double> number(std::string_view key);
+  double number(std::string_view key, double fallback);
+  double required_number(std::string_view key);
+  std::optional<long> integer(std::string_view key);
+  bool boolean(std::string_view key, bool fallback);
+  std::optional<std::string> string(std::string_view key, std::size_t max_length = 200);
   // The value under key if present (any type), marked as read.
-  const nlohmann::json* value(const std::string& key);
+  const nlohmann::json* value(std::string_view key);
   // An array under key, with at most max_items items.
-  const nlohmann::json* array(const std::string& key, std::size_t max_items);
+  const nlohmann::json* array(std::string_view key, std::size_t max_items);
 
-  std::string path(const std::string& key) const;
+  std::string path(std::string_view key) const;
   // Throws for the first key that was never read.
   void done() const;
 
