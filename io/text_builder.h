@@ -13,7 +13,8 @@
 namespace vibro {
 
 // `x` as `std::ostringstream` with precision(precision) writes it ("%.*g"): "0.03407", "2.26e-09",
-// "1e+100", "-0", "inf", "nan", "-nan". `precision` in 0…40; 0 writes as 1 does, as "%.0g" does.
+// "1e+100", "-0", "inf", "nan", "-nan". `precision` in 0…40 (std::invalid_argument otherwise);
+// 0 writes as 1 does, as "%.0g" does.
 void append_general(std::string& out, double x, int precision);
 
 // A string built by appending text, integers and doubles, as `s << ...` on an std::ostringstream

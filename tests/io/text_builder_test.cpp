@@ -11,6 +11,7 @@
 #include <limits>
 #include <random>
 #include <sstream>
+#include <stdexcept>
 #include <string>
 #include <vector>
 
@@ -98,6 +99,13 @@ TEST(TextBuilder, RoundsAsTheStream) {
   const std::size_t n = xs.size();
   for (std::size_t i = 0; i < n; ++i) xs.push_back(-xs[i]);
   EXPECT_EQ(mismatches(xs, kPrecisions), 0);
+}
+
+TEST(TextBuilder, RefusesAPrecisionOutsideItsRange) {
+  std::string out;
+  EXPECT_THROW(append_general(out, 1.0, -1), std::invalid_argument);
+  EXPECT_THROW(append_general(out, 1.0, 41), std::invalid_argument);
+  EXPECT_TRUE(out.empty());
 }
 
 TEST(TextBuilder, BuildsTextAsTheStream) {
