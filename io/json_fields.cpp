@@ -10,24 +10,38 @@ Fields::Fields(const nlohmann::json& json, std::string path) : json_(json), path
   if (!json_.is_object()) {
     throw FieldException(path_.empty() ? "scene" : path_, "must be a JSON object");
   }
+  read_.reserve(16);
 }
 
-std::string Fields::path(const std::string& key) const {
-  return path_.empty() ? key : path_ + "." + key;
+std::string Fields::path(std::string_view key) const {
+  if (path_.empty()) return std::string(key);
+  std::string p;
+  p.reserve(path_.size() + 1 + key.size());
+  return p.append(path_).append(1, '.').append(key);
 }
 
-const nlohmann::json* Fields::value(const std::string& key) {
-  read_.insert(key);
+const nlohmann::json* Fields::value(std::string_view key) {
+  if (std::find(read_.begin(), read_.end(), key) == read_.end()) read_.emplace_back(key);
   auto it = json_.find(key);
   if (it == json_.end() || it->is_null()) return nullptr;
   return &*it;
 }
 
+namespace {
+
+// Why `v` is not a finite number, or null when it is one: the field's path is spelled out only
+// for an error.
+const char* not_a_number(const nlohmann::json& v) {
+  if (!v.is_number()) return "must be a number";
+  if (!std::isfinite(v.get<double>())) return "must be a finite number";
+  return nullptr;
+}
+
+}  // namespace
+
 double as_number(const nlohmann::json& v, const std::string& field) {
-  if (!v.is_number()) throw FieldException(field, "must be a number");
-  const double x = v.get<double>();
-  if (!std::isfinite(x)) throw FieldException(field, "must be a finite number");
-  return x;
+  if (const char* why = not_a_number(v)) throw FieldException(field, why);
+  return v.get<double>();
 }
 
 long as_integer(const nlohmann::json& v, const std::string& field) {
@@ -48,36 +62,37 @@ long as_integer(const nlohmann::json& v, const std::string& field) {
   throw FieldException(field, "must be an integer");
 }
 
-std::optional<double> Fields::number(const std::string& key) {
+std::optional<double> Fields::number(std::string_view key) {
   const nlohmann::json* v = value(key);
   if (!v) return std::nullopt;
-  return as_number(*v, path(key));
+  if (const char* why = not_a_number(*v)) throw FieldException(path(key), why);
+  return v->get<double>();
 }
 
-double Fields::number(const std::string& key, double fallback) {
+double Fields::number(std::string_view key, double fallback) {
   return number(key).value_or(fallback);
 }
 
-double Fields::required_number(const std::string& key) {
+double Fields::required_number(std::string_view key) {
   auto x = number(key);
   if (!x) throw FieldException(path(key), "is required (a number)");
   return *x;
 }
 
-std::optional<long> Fields::integer(const std::string& key) {
+std::optional<long> Fields::integer(std::string_view key) {
   const nlohmann::json* v = value(key);
   if (!v) return std::nullopt;
   return as_integer(*v, path(key));
 }
 
-bool Fields::boolean(const std::string& key, bool fallback) {
+bool Fields::boolean(std::string_view key, bool fallback) {
   const nlohmann::json* v = value(key);
   if (!v) return fallback;
   if (!v->is_boolean()) throw FieldException(path(key), "must be true or false");
   return v->get<bool>();
 }
 
-std::optional<std::string> Fields::string(const std::string& key, std::size_t max_length) {
+std::optional<std::string> Fields::string(std::string_view key, std::size_t max_length) {
   const nlohmann::json* v = value(key);
   if (!v) return std::nullopt;
   if (!v->is_string()) throw FieldException(path(key), "must be a string");
@@ -88,7 +103,7 @@ std::optional<std::string> Fields::string(const std::string& key, std::size_t ma
   return s;
 }
 
-const nlohmann::json* Fields::array(const std::string& key, std::size_t max_items) {
+const nlohmann::json* Fields::array(std::string_view key, std::size_t max_items) {
   const nlohmann::json* v = value(key);
   if (!v) return nullptr;
   if (!v->is_array()) throw FieldException(path(key), "must be an array");
@@ -120,13 +135,13 @@ std::size_t distance(const std::string& a, const std::string& b) {
 
 void Fields::done() const {
   for (auto it = json_.begin(); it != json_.end(); ++it) {
-    if (read_.count(it.key())) continue;
+    if (std::find(read_.begin(), read_.end(), it.key()) != read_.end()) continue;
     std::string message = "is not a known field here";
     std::string best;
-    std::size_t best_distance = 3;  // suggest only close matches
+    std::size_t best_distance = 3;  // suggest only close matches, the first in sorted order
     for (const std::string& known : read_) {
       const std::size_t d = distance(it.key(), known);
-      if (d < best_distance) {
+      if (d < best_distance || (d == best_distance && !best.empty() && known < best)) {
         best_distance = d;
         best = known;
       }

@@ -1,8 +1,9 @@
 #include "io/result_json.h"
 
 #include <cmath>
-#include <sstream>
 #include <utility>
+
+#include "io/text_builder.h"
 
 namespace vibro {
 namespace {
@@ -29,35 +30,65 @@ json track_json(const PelletTrack& track) {
   return {{"pellet", track.pellet}, {"branches", branches}};
 }
 
-// An angle as a multiple of π/4 when it is one ("3π/2"), else in decimals.
-std::string angle_text(double phi) {
-  const double q = phi / (M_PI / 4.0);
-  std::ostringstream s;
+// An angle as a multiple of π/4 when it is one ("3π/2"), else in decimals at the builder's
+// precision.
+struct AngleText {
+  double phi;
+};
+
+TextBuilder& operator<<(TextBuilder& s, AngleText angle) {
+  const double q = angle.phi / (M_PI / 4.0);
   // Past 1e6 multiples of π/4 every double is within 1e-9 of an integer, and lround overflows.
-  if (std::abs(q) < 1e6 && std::abs(q - std::round(q)) < 1e-9 && std::round(q) != 0.0) {
-    const long n = std::lround(q);
-    long num = n, den = 4;
-    while (num % 2 == 0 && den > 1) {
-      num /= 2;
-      den /= 2;
-    }
-    if (num == 1)
-      s << "π";
-    else if (num == -1)
-      s << "-π";
-    else
-      s << num << "π";
-    if (den > 1) s << "/" << den;
-    return s.str();
+  if (!(std::abs(q) < 1e6 && std::abs(q - std::round(q)) < 1e-9 && std::round(q) != 0.0))
+    return s << angle.phi;
+  const long n = std::lround(q);
+  long num = n, den = 4;
+  while (num % 2 == 0 && den > 1) {
+    num /= 2;
+    den /= 2;
   }
-  s.precision(4);
-  s << phi;
-  return s.str();
+  if (num == 1)
+    s << "π";
+  else if (num == -1)
+    s << "-π";
+  else
+    s << num << "π";
+  if (den > 1) s << "/" << den;
+  return s;
 }
 
-// What the check against a shadow run at a tighter tolerance says, in words.
-std::string trust_sentence(const Stats& st) {
-  std::ostringstream s;
+// "1 collision", "2 collisions".
+struct CountOf {
+  int n;
+  std::string_view thing;
+};
+
+TextBuilder& operator<<(TextBuilder& s, CountOf c) {
+  return s << c.n << " " << c.thing << (c.n == 1 ? "" : "s");
+}
+
+// "17 limiter impacts, 9 collisions, 1 chatter sequence summed to rest".
+struct ImpactCounts {
+  const Summary& summary;
+};
+
+TextBuilder& operator<<(TextBuilder& s, ImpactCounts c) {
+  const Summary& sm = c.summary;
+  s << CountOf{sm.limiter_impacts, "limiter impact"} << ", " << CountOf{sm.collisions, "collision"};
+  if (sm.chatter_sequences > 0)
+    s << ", " << CountOf{sm.chatter_sequences, "chatter sequence"} << " summed to rest";
+  return s;
+}
+
+// What the check against a shadow run at a tighter tolerance says, in words, with its own
+// precisions (the builder's is kept).
+struct TrustSentence {
+  const Stats& stats;
+};
+
+TextBuilder& operator<<(TextBuilder& s, TrustSentence trust) {
+  const Stats& st = trust.stats;
+  const int precision = s.precision();
   s.precision(3);
   if (!st.check) {
     s << "Events not checked (solver.check is off): the error estimate does not see event times.";
@@ -68,7 +99,8 @@ std::string trust_sentence(const Stats& st) {
   } else {
     s << "Events trusted to the end, times within " << st.event_time_error << " s.";
   }
-  return s.str();
+  s.precision(precision);
+  return s;
 }
 
 }  // namespace
@@ -92,58 +124,43 @@ json event_to_json(const Event& e) {
   return j;
 }
 
-namespace {
-
-// "1 collision", "2 collisions".
-std::string count_of(int n, const std::string& thing) {
-  return std::to_string(n) + " " + thing + (n == 1 ? "" : "s");
-}
-
-}  // namespace
-
 std::string answer_sentence(const RunResult& run, const Model& model) {
-  std::ostringstream s;
-  s.precision(4);
   const Summary& sm = run.summary;
   const LastImpact& last = sm.last_impact;
-  std::ostringstream counts;
-  counts.precision(4);
-  counts << count_of(sm.limiter_impacts, "limiter impact") << ", "
-         << count_of(sm.collisions, "collision");
-  if (sm.chatter_sequences > 0)
-    counts << ", " << count_of(sm.chatter_sequences, "chatter sequence") << " summed to rest";
+  TextBuilder s(4);
+  s.reserve(256 + 96 * sm.final.size());  // the sentence's usual length: one allocation
   if (last.index == 0) {
     s << "No impact happens before t = " << run.stats.t_reached << " s.";
   } else if (sm.ends_vibro_impact) {
     s << "The system stops being vibro-impact after impact " << last.index << " at t = " << last.t
-      << " s (" << counts.str() << ").";
+      << " s (" << ImpactCounts{sm} << ").";
   } else {
     s << "The run ends at t = " << run.stats.t_reached
-      << " s while the system is still vibro-impact: " << count_of(last.index, "impact") << " ("
-      << counts.str() << "), the last at t = " << last.t << " s.";
+      << " s while the system is still vibro-impact: " << CountOf{last.index, "impact"} << " ("
+      << ImpactCounts{sm} << "), the last at t = " << last.t << " s.";
   }
-  for (std::size_t i = 0; i < run.summary.final.size(); ++i) {
-    const FinalState& f = run.summary.final[i];
+  for (std::size_t i = 0; i < sm.final.size(); ++i) {
+    const FinalState& f = sm.final[i];
     s << " Pellet " << i + 1;
     switch (f.state) {
       case PelletState::resting_at_limiter:
-        s << " rests against limiter " << f.limiter + 1 << " at φ = " << angle_text(f.phi) << ".";
+        s << " rests against limiter " << f.limiter + 1 << " at φ = " << AngleText{f.phi} << ".";
         break;
       case PelletState::stuck: {
         const bool in_zone = std::abs(wrap_angle(f.phi)) <= std::atan(model.mu_static()) + 1e-12;
-        s << " is at rest at φ = " << angle_text(f.phi)
+        s << " is at rest at φ = " << AngleText{f.phi}
           << (in_zone ? ", inside its friction zone." : ".");
         break;
       }
       case PelletState::sliding:
-        s << " still moves (φ = " << angle_text(f.phi) << ", φ̇ = " << f.dphi << " rad/s).";
+        s << " still moves (φ = " << AngleText{f.phi} << ", φ̇ = " << f.dphi << " rad/s).";
         break;
     }
   }
   if (run.stats.termination != Termination::completed)
     s << " The run stopped early: " << run.stats.message << ".";
-  s << " " << trust_sentence(run.stats);
-  return s.str();
+  s << " " << TrustSentence{run.stats};
+  return std::move(s).str();
 }
 
 json stats_to_json(const Stats& st) {

@@ -8,15 +8,6 @@
 
 namespace vibro {
 
-std::vector<EventRow> event_rows(const std::vector<Event>& events) {
-  std::vector<EventRow> rows;
-  rows.reserve(events.size());
-  for (std::size_t k = 0; k < events.size(); ++k)
-    for (std::size_t i = 0; i < std::max<std::size_t>(events[k].pellets.size(), 1); ++i)
-      rows.push_back({k, i});
-  return rows;
-}
-
 std::optional<RunTable> run_table_named(std::string_view name) {
   if (name == "events") return RunTable::events;
   if (name == "trajectory") return RunTable::trajectory;
@@ -28,16 +19,17 @@ std::string run_csv(const RunResult& run, RunTable table) {
   out << std::setprecision(17);
   if (table == RunTable::events) {
     out << "event,t,kind,pellet,limiter,phi,dphi_before,dphi_after\n";
-    for (const EventRow& row : event_rows(run.events)) {
-      const Event& e = run.events[row.event];
-      const std::size_t i = row.member;
-      out << row.event << ',' << e.t << ',' << event_kind_name(e.kind) << ',';
-      if (i < e.pellets.size()) out << e.pellets[i];
-      out << ',' << e.limiter << ',' << e.phi << ',';
-      if (i < e.dphi_before.size()) out << e.dphi_before[i];
-      out << ',';
-      if (i < e.dphi_after.size()) out << e.dphi_after[i];
-      out << '\n';
+    for (std::size_t k = 0; k < run.events.size(); ++k) {
+      const Event& e = run.events[k];
+      for (std::size_t i = 0; i < event_row_count(e); ++i) {
+        out << k << ',' << e.t << ',' << event_kind_name(e.kind) << ',';
+        if (i < e.pellets.size()) out << e.pellets[i];
+        out << ',' << e.limiter << ',' << e.phi << ',';
+        if (i < e.dphi_before.size()) out << e.dphi_before[i];
+        out << ',';
+        if (i < e.dphi_after.size()) out << e.dphi_after[i];
+        out << '\n';
+      }
     }
     return out.str();
   }

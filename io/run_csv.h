@@ -3,6 +3,7 @@
 // `vibro simulate -o run.csv [--what trajectory]`.
 #pragma once
 
+#include <algorithm>
 #include <optional>
 #include <string>
 #include <string_view>
@@ -21,17 +22,13 @@ enum class RunTable { events, trajectory, uniform };
 // "events" or "trajectory"; nothing for another name.
 std::optional<RunTable> run_table_named(std::string_view name);
 
-// A row of the events table: event `event` (an index into RunResult::events) seen from the
-// `member`-th pellet it touches; member is 0 for an event that touches none (then its pellet and
-// speeds are empty cells).
-struct EventRow {
-  std::size_t event;
-  std::size_t member;
-};
-
-// The events table's rows in order: each event once per pellet it touches. What run_csv writes
-// and the Python module's `Run.events` holds.
-std::vector<EventRow> event_rows(const std::vector<Event>& events);
+// An event's rows in the events table: one per pellet it touches, its `member`-th (from 0) that
+// pellet's; one for an event that touches none (then its pellet and speeds are empty cells).
+// Each event's rows in turn, in the events' order, are what run_csv writes and the Python
+// module's `Run.events` holds.
+inline std::size_t event_row_count(const Event& event) {
+  return std::max<std::size_t>(event.pellets.size(), 1);
+}
 
 // events: event,t,kind,pellet,limiter,phi,dphi_before,dphi_after, one value per cell: a row for
 // each pellet an event touches (a collision has two, a stuck body's impact one per member), its

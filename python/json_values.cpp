@@ -59,61 +59,82 @@ std::string utf8_of(PyObject* str, const Where* where) {
   return std::string(text, static_cast<std::size_t>(size));
 }
 
-json convert(py::handle value, const Where* where, int depth, int max_depth) {
+void convert_items(PyObject* v, nlohmann::json& out, const Where* where, int depth, int max_depth);
+void convert_members(PyObject* v, nlohmann::json& out, const Where* where, int depth,
+                     int max_depth);
+
+// Converts `value` into `out` (null before), in place: a container's items are made where they
+// stay, not built apart and moved in.
+void convert(py::handle value, json& out, const Where* where, int depth, int max_depth) {
   PyObject* const v = value.ptr();
-  if (v == Py_None) return json(nullptr);
-  if (PyBool_Check(v)) return json(v == Py_True);
-  if (PyLong_Check(v)) return integer_json(value, where);
-  if (PyFloat_Check(v)) return json(PyFloat_AS_DOUBLE(v));
-  if (PyUnicode_Check(v)) return json(utf8_of(v, where));
-  const bool dict = PyDict_Check(v);
-  if (dict || PyList_Check(v) || PyTuple_Check(v)) {
+  if (v == Py_None) return;
+  if (PyBool_Check(v)) {
+    out = v == Py_True;
+  } else if (PyLong_Check(v)) {
+    out = integer_json(value, where);
+  } else if (PyFloat_Check(v)) {
+    out = PyFloat_AS_DOUBLE(v);
+  } else if (PyUnicode_Check(v)) {
+    out = utf8_of(v, where);
+  } else if (PyDict_Check(v) || PyList_Check(v) || PyTuple_Check(v)) {
     if (depth + 1 > max_depth)
       raise_scene_error({"scene", "nests deeper than " + std::to_string(max_depth) + " levels"});
-    // Items read in place, each held while it is converted; the size read again after each, as
-    // converting a value (numpy's tolist) may run code that changes the list.
-    if (!dict) {
-      const bool list = PyList_Check(v);
-      const auto size = [&] { return list ? PyList_GET_SIZE(v) : PyTuple_GET_SIZE(v); };
-      json items = json::array();
-      items.get_ref<json::array_t&>().reserve(static_cast<std::size_t>(size()));
-      for (Py_ssize_t i = 0; i < size(); ++i) {
-        const auto item = py::reinterpret_borrow<py::object>(list ? PyList_GET_ITEM(v, i)
-                                                                  : PyTuple_GET_ITEM(v, i));
-        const Where item_at{where, nullptr, static_cast<std::size_t>(i)};
-        items.push_back(convert(item, &item_at, depth + 1, max_depth));
-      }
-      return items;
-    }
-    json object = json::object();
-    auto& members = object.get_ref<json::object_t&>();
-    PyObject *key = nullptr, *value_at = nullptr;
-    for (Py_ssize_t at = 0; PyDict_Next(v, &at, &key, &value_at);) {
-      const auto held_key = py::reinterpret_borrow<py::object>(key);
-      const auto item = py::reinterpret_borrow<py::object>(value_at);
-      if (!PyUnicode_Check(key))
-        raise_scene_error({field_of(where),
-                           "has a key that is not a string: " + py::repr(key).cast<std::string>()});
-      std::string name = utf8_of(key, where);
-      const Where member{where, &name};
-      json converted = convert(item, &member, depth + 1, max_depth);
-      members.insert_or_assign(std::move(name), std::move(converted));
-    }
-    return object;
+    if (PyDict_Check(v))
+      convert_members(v, out, where, depth, max_depth);
+    else
+      convert_items(v, out, where, depth, max_depth);
+  } else if (py::hasattr(value, "tolist") && py::hasattr(value, "dtype")) {
+    // numpy's scalars and arrays say what they hold as Python values.
+    convert(value.attr("tolist")(), out, where, depth, max_depth);
+  } else {
+    raise_scene_error(
+        {field_of(where),
+         "is a Python " + py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>() +
+             ", which a JSON scene cannot hold"});
   }
-  // numpy's scalars and arrays say what they hold as Python values.
-  if (py::hasattr(value, "tolist") && py::hasattr(value, "dtype"))
-    return convert(value.attr("tolist")(), where, depth, max_depth);
-  raise_scene_error({field_of(where),
-                     "is a Python " +
-                         py::str(py::type::handle_of(value).attr("__name__")).cast<std::string>() +
-                         ", which a JSON scene cannot hold"});
+}
+
+// A list's or a tuple's items, read in place, each held while it is converted; the size read
+// again after each, as converting a value (numpy's tolist) may run code that changes the list.
+void convert_items(PyObject* v, json& out, const Where* where, int depth, int max_depth) {
+  const bool list = PyList_Check(v);
+  const auto size = [&] { return list ? PyList_GET_SIZE(v) : PyTuple_GET_SIZE(v); };
+  out = json::array();
+  auto& items = out.get_ref<json::array_t&>();
+  items.reserve(static_cast<std::size_t>(size()));
+  for (Py_ssize_t i = 0; i < size(); ++i) {
+    const auto item =
+        py::reinterpret_borrow<py::object>(list ? PyList_GET_ITEM(v, i) : PyTuple_GET_ITEM(v, i));
+    const Where item_at{where, nullptr, static_cast<std::size_t>(i)};
+    items.emplace_back();
+    convert(item, items.back(), &item_at, depth + 1, max_depth);
+  }
+}
+
+// A dict's members, each key and value held while the value is converted.
+void convert_members(PyObject* v, json& out, const Where* where, int depth, int max_depth) {
+  out = json::object();
+  auto& members = out.get_ref<json::object_t&>();
+  PyObject *key = nullptr, *value_at = nullptr;
+  for (Py_ssize_t at = 0; PyDict_Next(v, &at, &key, &value_at);) {
+    const auto held_key = py::reinterpret_borrow<py::object>(key);
+    const auto item = py::reinterpret_borrow<py::object>(value_at);
+    if (!PyUnicode_Check(key))
+      raise_scene_error({field_of(where),
+                         "has a key that is not a string: " + py::repr(key).cast<std::string>()});
+    auto [member, fresh] = members.try_emplace(utf8_of(key, where));
+    if (!fresh) member->second = nullptr;  // two keys of one text: the last one's value, as before
+    const Where member_at{where, &member->first};
+    convert(item, member->second, &member_at, depth + 1, max_depth);
+  }
 }
 
 }  // namespace
 
 json json_from_python(py::handle value, int max_depth) {
-  return convert(value, nullptr, 0, max_depth);
+  json out;
+  convert(value, out, nullptr, 0, max_depth);
+  return out;
 }
 
 py::object python_from_json(const json& j) {

@@ -29,27 +29,42 @@ class Run {
   py::dict events() {
     if (events_) return events_.cast<py::dict>();
     const std::vector<Event>& e = run_.events;
-    const std::vector<EventRow> rows = event_rows(e);
-    const std::size_t n = rows.size();
-    const auto event = [&](std::size_t k) -> const Event& { return e[rows[k].event]; };
-    const auto cell = [&](const std::vector<double>& xs, std::size_t k) {
-      const std::size_t i = rows[k].member;
+    std::size_t n = 0;
+    NameColumn kind;
+    for (const Event& event : e) {
+      n += event_row_count(event);
+      kind.note(event_kind_name(event.kind));
+    }
+    kind.allocate(n);
+    Column<std::int64_t> event(n), pellet(n), limiter(n);
+    Column<double> t(n), phi(n), dphi_before(n), dphi_after(n);
+    const auto cell = [](const std::vector<double>& xs, std::size_t i) {
       return i < xs.size() ? xs[i] : std::numeric_limits<double>::quiet_NaN();
     };
+    std::size_t row = 0;
+    for (std::size_t k = 0; k < e.size(); ++k) {
+      const Event& ev = e[k];
+      const std::string_view kind_name = event_kind_name(ev.kind);
+      for (std::size_t i = 0; i < event_row_count(ev); ++i, ++row) {
+        event[row] = static_cast<std::int64_t>(k);
+        t[row] = ev.t;
+        kind.set(row, kind_name);
+        pellet[row] = i < ev.pellets.size() ? ev.pellets[i] : -1;
+        limiter[row] = ev.limiter;
+        phi[row] = ev.phi;
+        dphi_before[row] = cell(ev.dphi_before, i);
+        dphi_after[row] = cell(ev.dphi_after, i);
+      }
+    }
     py::dict d;
-    put<"event">(d, column<std::int64_t>(n, [&](std::size_t k) { return rows[k].event; }));
-    put<"t">(d, column<double>(n, [&](std::size_t k) { return event(k).t; }));
-    put<"kind">(d, string_column(n, [&](std::size_t k) { return event_kind_name(event(k).kind); }));
-    put<"pellet">(d, column<std::int64_t>(n, [&](std::size_t k) {
-                    const std::vector<int>& p = event(k).pellets;
-                    return rows[k].member < p.size() ? p[rows[k].member] : -1;
-                  }));
-    put<"limiter">(d, column<std::int64_t>(n, [&](std::size_t k) { return event(k).limiter; }));
-    put<"phi">(d, column<double>(n, [&](std::size_t k) { return event(k).phi; }));
-    put<"dphi_before">(
-        d, column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_before, k); }));
-    put<"dphi_after">(
-        d, column<double>(n, [&](std::size_t k) { return cell(event(k).dphi_after, k); }));
+    put<"event">(d, event.array());
+    put<"t">(d, t.array());
+    put<"kind">(d, kind.array());
+    put<"pellet">(d, pellet.array());
+    put<"limiter">(d, limiter.array());
+    put<"phi">(d, phi.array());
+    put<"dphi_before">(d, dphi_before.array());
+    put<"dphi_after">(d, dphi_after.array());
     events_ = d;
     return d;
   }

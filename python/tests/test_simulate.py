@@ -56,6 +56,7 @@ def test_events_are_the_columns_of_the_csv(tmp_path):
     assert {len(a) for a in events.values()} == {len(rows)} and len(rows) > 20
     assert events["t"].dtype == np.float64 and events["limiter"].dtype == np.int64
     assert events["pellet"].dtype == np.int64 and events["dphi_before"].dtype == np.float64
+    assert events["kind"].dtype == np.dtype(f"<U{max(len(row['kind']) for row in rows)}")
     for k, row in enumerate(rows):
         assert events["event"][k] == int(row["event"])
         assert events["t"][k] == float(row["t"])  # 17 digits: the same double
@@ -68,6 +69,14 @@ def test_events_are_the_columns_of_the_csv(tmp_path):
     collisions = events["kind"] == "collision"
     assert collisions.any()  # the paper scene's collisions: two rows each, one per pellet
     assert np.all(np.unique(events["event"][collisions], return_counts=True)[1] == 2)
+
+
+def test_a_run_without_events_has_empty_columns():
+    scene = vibro.preset("paper")
+    scene["t_end"] = 1e-3
+    events = vibro.simulate(scene).events
+    assert {len(a) for a in events.values()} == {0}
+    assert events["kind"].dtype == np.dtype("<U1") and events["t"].dtype == np.float64
 
 
 def test_trajectories_are_the_samples_of_the_csv(tmp_path):

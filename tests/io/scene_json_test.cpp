@@ -132,6 +132,17 @@ TEST(SceneJson, ATypoSuggestsTheFieldItMeant) {
   EXPECT_NE(std::get<FieldError>(r).message.find("alpha0"), std::string::npos);
 }
 
+// Of the fields as close to the typo as each other, the first in sorted order is suggested,
+// whatever order the reader asks for them in ("x" is one edit from both "m" and "c").
+TEST(SceneJson, ATypoCloseToTwoFieldsSuggestsTheFirstInSortedOrder) {
+  json scene = base_scene();
+  scene["model"]["pellets"][0]["x"] = 1.0;
+  const SceneOrError r = scene_from_json(scene);
+  ASSERT_TRUE(std::holds_alternative<FieldError>(r));
+  EXPECT_EQ(std::get<FieldError>(r).field, "model.pellets[0].x");
+  EXPECT_EQ(std::get<FieldError>(r).message, "is not a known field here (did you mean \"c\"?)");
+}
+
 TEST(SceneJson, TextThatIsNotJsonOrTooDeepIsRefused) {
   auto field = [](std::string_view text) {
     const SceneOrError r = scene_from_text(text);
