@@ -66,8 +66,9 @@ Pellet at_rest(double m, double phi0, Forcing force = {}) {
 
 // The paper scene is well conditioned: trusted to its end, and the estimate never ten times
 // below the true error (against DOP853 at rtol 1e-13), for every method. Nor a hundred times
-// above it: at rtol 1e-10 the chatter summation's own error (1e-8·sqrt(R/g), which the reference
-// shares) is the larger.
+// above the larger of it and the chatter summation's own error (1e-8·sqrt(R/g), which the
+// reference shares, so the difference from it does not show it): `auto` at rtol 1e-10 runs
+// Taylor, 2.3e-12 s from the reference, and says 2.26e-9 s, that summation's error.
 TEST(Trust, TheEventTimeEstimateTracksTheTrueError) {
   const Scene scene = testing::preset("paper");
   SimOptions tight = scene.sim;
@@ -89,7 +90,8 @@ TEST(Trust, TheEventTimeEstimateTracksTheTrueError) {
       EXPECT_EQ(run.stats.trusted_until, run.stats.t_reached) << what;
       const double truth = largest_time_difference(run, ref);
       EXPECT_GE(run.stats.event_time_error, 0.1 * truth) << what;
-      EXPECT_LE(run.stats.event_time_error, 100.0 * truth) << what;
+      const double summation = 1e-8 * time_scale(scene.model);
+      EXPECT_LE(run.stats.event_time_error, 100.0 * std::max(truth, summation)) << what;
       EXPECT_GE(run.stats.error_estimate, run.stats.state_error) << what;
     }
   }
