@@ -1,6 +1,7 @@
 // `vibro work-precision SCENE [-o wp.png|wp.svg|wp.pdf|wp.json]... [--repeats N]`: for each method
-// and tolerance from 1e-3 to 1e-12, the median run time and the true error; prints the table as
-// JSON, or writes it and draws the diagram from one timing, saying where each went.
+// (or the one --method names) and tolerance from 1e-3 to 1e-12, the median run time and the true
+// error; prints the table as JSON, or writes it and draws the diagram from one timing, saying where
+// each went.
 #include <iostream>
 #include <memory>
 #include <nlohmann/json.hpp>
@@ -26,7 +27,12 @@ int work_precision_diagram(const WorkPrecisionCommandOptions& o) {
   if (!outputs_named(o.job.outs, {".png", ".svg", ".pdf", ".json"},
                      "image OUT.png, OUT.svg or OUT.pdf, or the table OUT.json"))
     return 2;
-  const WorkPrecisionReport report = work_precision(scene->model, scene->sim, o.run);
+  WorkPrecisionOptions run = o.run;
+  // --method draws that method's curve alone.
+  if (o.job.scene.overrides.contains("solver") &&
+      o.job.scene.overrides["solver"].contains("method"))
+    run.methods = {scene->sim.method};
+  const WorkPrecisionReport report = work_precision(scene->model, scene->sim, run);
   if (o.job.outs.empty()) {
     std::cout << work_precision_to_json(report).dump(2) << "\n";
     return 0;

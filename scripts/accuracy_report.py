@@ -27,7 +27,7 @@ OPTIONS = ARGS.parse_args()
 VIBRO = OPTIONS.vibro
 DIFFERENTIAL = os.path.join(ROOT, "build", "tests", "differential")
 IMAGES = os.path.join(ROOT, "docs", "images")
-METHODS = ["dopri5", "dop853", "radau5", "auto"]
+METHODS = ["dopri5", "dop853", "radau5", "taylor", "auto"]
 DIAGRAMS = ["paper", "frictionless-elastic", "stiff-friction", "chatter"]
 SWEPT = ["paper", "frictionless-elastic", "chatter", "stiff-friction", "tiny-radius",
          "high-frequency", "mass-ratio", "grazing", "loop", "plastic-limiter", "rest-in-cone"]

@@ -22,7 +22,8 @@ enum class ErrorReference {
 std::string_view error_reference_name(ErrorReference r);
 
 struct WorkPrecisionOptions {
-  std::vector<Method> methods = {Method::dopri5, Method::dop853, Method::radau5, Method::automatic};
+  std::vector<Method> methods = {Method::dopri5, Method::dop853, Method::radau5, Method::taylor,
+                                 Method::automatic};
   std::vector<double> rtols = {1e-3, 1e-4, 1e-5, 1e-6, 1e-7, 1e-8, 1e-9, 1e-10, 1e-11, 1e-12};
   double atol_per_rtol = 1e-2;  // atol = rtol · this
   int repeats = 3;              // runs per point; the time is their median

@@ -271,7 +271,7 @@ TEST_F(Endpoints, WorkPrecisionGivesTheTableOrTheDiagramUncached) {
   EXPECT_EQ(table->get_header_value("Cache-Control"), "no-store");
   const json body = json::parse(table->body);
   EXPECT_EQ(body["error_reference"], "reference_run");
-  ASSERT_EQ(body["points"].size(), 40u);  // 4 methods × 10 tolerances
+  ASSERT_EQ(body["points"].size(), 50u);  // 5 methods × 10 tolerances
   for (const json& p : body["points"]) EXPECT_TRUE(p["error"].is_number());
 
   auto svg =
