@@ -1,10 +1,10 @@
 #include "core/analysis/monodromy.h"
 
+#include <algorithm>
 #include <chrono>
 #include <cmath>
 #include <memory>
 #include <optional>
-#include <set>
 
 #include "core/integrators/stepper.h"
 #include "core/model/dynamics.h"
@@ -170,13 +170,24 @@ std::string uncovered(const PathSegment& segment) {
     for (const Body& b : *bodies)
       if (b.members.size() > 1)
         return "pellets moving together (at t = " + std::to_string(segment.t) + " s)";
-  std::set<int> seen;
-  for (const Event& e : segment.events) {
-    if (e.kind == EventKind::chatter) continue;
-    for (int i : e.pellets)
-      if (!seen.insert(i).second)
+  // An instant lists a few events: each pellet is looked for in the events before its own.
+  const std::vector<Event>& events = segment.events;
+  auto listed_before = [&](std::size_t k, int i) {
+    return std::any_of(events.begin(), events.begin() + static_cast<std::ptrdiff_t>(k),
+                       [&](const Event& e) {
+                         return e.kind != EventKind::chatter &&
+                                std::find(e.pellets.begin(), e.pellets.end(), i) != e.pellets.end();
+                       });
+  };
+  for (std::size_t k = 0; k < events.size(); ++k) {
+    if (events[k].kind == EventKind::chatter) continue;
+    for (std::size_t j = 0; j < events[k].pellets.size(); ++j) {
+      const int i = events[k].pellets[j];
+      const auto rest = events[k].pellets.begin() + static_cast<std::ptrdiff_t>(j);
+      if (listed_before(k, i) || std::find(events[k].pellets.begin(), rest, i) != rest)
         return "several events of pellet " + std::to_string(i + 1) +
                " at one instant (t = " + std::to_string(segment.t) + " s)";
+    }
   }
   return {};
 }

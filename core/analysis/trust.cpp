@@ -5,6 +5,7 @@
 #include <cmath>
 #include <iomanip>
 #include <limits>
+#include <span>
 #include <sstream>
 #include <tuple>
 
@@ -93,6 +94,7 @@ void merge_into(Event& into, const Event& e) {
 
 // Puts an event's pellets in index order, each with its speeds.
 void sort_pellets(Event& e) {
+  if (std::is_sorted(e.pellets.begin(), e.pellets.end())) return;
   std::vector<std::size_t> order(e.pellets.size());
   for (std::size_t j = 0; j < order.size(); ++j) order[j] = j;
   std::sort(order.begin(), order.end(),
@@ -126,37 +128,43 @@ struct Listed {
   Leaving leaving;  // what its instant leaves
 };
 
+// The events of a run, one per instant and kind (and limiter) in a fixed order, so that a run
+// and its shadow list them alike. Each instant's events are gathered in place at the end of the
+// list: they are few, and a run has many instants.
 std::vector<Listed> group_instants(const std::vector<Event>& events) {
   auto order = [](const Listed& x, const Listed& y) {
     return std::tie(x.event.kind, x.event.limiter, x.event.pellets) <
            std::tie(y.event.kind, y.event.limiter, y.event.pellets);
   };
   std::vector<Listed> out;
+  out.reserve(events.size());
   for (std::size_t i = 0; i < events.size();) {
     const double t = events[i].t;
-    std::vector<Listed> instant;
+    const auto first = static_cast<std::ptrdiff_t>(out.size());  // the instant's, from here on
     Leaving instant_left;
     for (; i < events.size() && events[i].t <= t + kTrustPolicy.same_instant * (1.0 + std::abs(t));
          ++i) {
       const Event& e = events[i];
       const bool merges = e.kind == EventKind::collision || e.kind == EventKind::limiter;
-      auto same = std::find_if(instant.begin(), instant.end(), [&](const Listed& x) {
+      auto same = std::find_if(out.begin() + first, out.end(), [&](const Listed& x) {
         return merges && x.event.kind == e.kind && x.event.limiter == e.limiter;
       });
-      if (same == instant.end())
-        instant.push_back({e, approach_speed(e), {}});
+      if (same == out.end())
+        out.push_back({e, approach_speed(e), {}});
       else
         merge_into(same->event, e);
       note_leaving(e, instant_left);
     }
+    const auto instant = std::span(out).subspan(static_cast<std::size_t>(first));
     for (Listed& l : instant)
       if (l.event.kind == EventKind::collision || l.event.kind == EventKind::limiter)
         sort_pellets(l.event);
-    std::stable_sort(instant.begin(), instant.end(), order);
-    for (Listed& l : instant) {
-      l.leaving = instant_left;
-      out.push_back(std::move(l));
-    }
+    // A stable insertion sort: an instant holds a few events (std::stable_sort would take a
+    // buffer from the heap for each).
+    for (std::size_t k = 1; k < instant.size(); ++k)
+      for (std::size_t j = k; j > 0 && order(instant[j], instant[j - 1]); --j)
+        std::swap(instant[j], instant[j - 1]);
+    for (Listed& l : instant) l.leaving = instant_left;
   }
   return out;
 }

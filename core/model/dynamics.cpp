@@ -72,17 +72,14 @@ SegmentDynamics::SegmentDynamics(const Model& model, const std::vector<Body>& bo
 
 void SegmentDynamics::reset(const Vec& y) {
   force_order_ = -1;
-  mass_.clear();
-  damping_.clear();
-  normal_side_.clear();
+  terms_.clear();
+  terms_.reserve(bodies_.size());
   damped_ = false;
   for (const Body& b : bodies_) {
-    mass_.push_back(body_mass(model_, b));
-    damping_.push_back(body_damping(model_, b));
     const int L = b.leader();
-    normal_side_.push_back(normal_per_mass(model_, y[phi_index(L)], y[dphi_index(L)]) >= 0.0 ? 1
-                                                                                             : -1);
-    damped_ = damped_ || damping_.back() != 0.0;
+    const int side = normal_per_mass(model_, y[phi_index(L)], y[dphi_index(L)]) >= 0.0 ? 1 : -1;
+    terms_.push_back({body_mass(model_, b), body_damping(model_, b), side});
+    damped_ = damped_ || terms_.back().damping != 0.0;
   }
 }
 
@@ -90,8 +87,8 @@ double SegmentDynamics::stiffness_hint(double, const Vec& y) const {
   double fastest = 0.0;
   for (std::size_t b = 0; b < bodies_.size(); ++b)
     if (bodies_[b].mode == Mode::sliding)
-      fastest = std::max(
-          fastest, damping_[b] + 2.0 * law_.mu * std::abs(y[dphi_index(bodies_[b].leader())]));
+      fastest = std::max(fastest, terms_[b].damping +
+                                      2.0 * law_.mu * std::abs(y[dphi_index(bodies_[b].leader())]));
   return fastest / std::sqrt(law_.gR);
 }
 
@@ -132,9 +129,9 @@ void SegmentDynamics::evaluate(double t, const Vec& y, Vec& dydt, Mat* J) const 
     if (!alone)
       for (int i : body.members) F += force(i);
     const double q = dphi * dphi + law_.gR * c;  // normal force per unit mass, over R
-    const int side = normal_side_[b];
-    const double C = damping_[b];  // zero exactly when no member is damped (c ≥ 0)
-    const double acc = law_.acceleration({F, mass_[b], 0.0}, c, sn, dphi, s, side);
+    const int side = terms_[b].normal_side;
+    const double C = terms_[b].damping;  // zero exactly when no member is damped (c ≥ 0)
+    const double acc = law_.acceleration({F, terms_[b].mass, 0.0}, c, sn, dphi, s, side);
     const double n = R * (paper ? q : side * q);  // g cos phi + R dphi², or its magnitude
     for (int i : body.members) {
       const double m = model_.pellets[i].m;
@@ -182,11 +179,12 @@ void SegmentDynamics::jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) con
       dF += model_.pellets[i].force.rate(t);
     }
     // acc and the normal force per mass n, with their partial derivatives.
-    const SlidingLaw::Slopes dacc = law_.slopes(damping_[b], c, sn, dphi, s, normal_side_[b]);
-    const double sq = model_.friction == FrictionLaw::paper ? 1.0 : normal_side_[b];
+    const SlidingLaw::Slopes dacc =
+        law_.slopes(terms_[b].damping, c, sn, dphi, s, terms_[b].normal_side);
+    const double sq = model_.friction == FrictionLaw::paper ? 1.0 : terms_[b].normal_side;
     const double n = sq * (g * c + R * dphi * dphi);
     const double dn_dphi = -sq * g * sn, dn_ddphi = sq * 2.0 * R * dphi;
-    const double dacc_dt = dF / (mass_[b] * R);
+    const double dacc_dt = dF / (terms_[b].mass * R);
     for (int i : body.members) {
       const double m = model_.pellets[i].m;
       const double Fi = model_.pellets[i].force.at(t);

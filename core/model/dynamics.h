@@ -95,8 +95,8 @@ class SegmentDynamics final : public OdeSystem {
   void reset(const Vec& y);
   // Sets a body's side of the normal force's zero (±1): one starting on the zero takes the side
   // it moves to.
-  void set_normal_side(int body, int side) { normal_side_[body] = side; }
-  int normal_side(int body) const { return normal_side_[body]; }
+  void set_normal_side(int body, int side) { terms_[body].normal_side = side; }
+  int normal_side(int body) const { return terms_[body].normal_side; }
   int dimension() const override { return 3 * model_.size(); }
   void rhs(double t, const Vec& y, Vec& dydt) const override { evaluate(t, y, dydt, nullptr); }
   void jacobian(double t, const Vec& y, Mat& dfdy, Vec& dfdt) const override;
@@ -124,10 +124,14 @@ class SegmentDynamics final : public OdeSystem {
   void body_jets(std::size_t b, double t0, int order, std::span<double> out) const;
   const Model& model_;
   const std::vector<Body>& bodies_;
-  std::vector<double> mass_;      // per body
-  std::vector<double> damping_;   // per body, 1/s
+  // What the equations read of one body, fixed for the interval.
+  struct BodyTerms {
+    double mass = 0.0;
+    double damping = 0.0;  // 1/s
+    int normal_side = 1;   // the sign of the bilateral law's normal force
+  };
+  std::vector<BodyTerms> terms_;  // per body
   bool damped_ = false;           // some body's damping is not zero
-  std::vector<int> normal_side_;  // per body: the sign of the bilateral law's normal force
   SlidingLaw law_;
   mutable std::vector<double> jet_scratch_;  // the series of a body's jets, reused
   // Every pellet's forcing series factors F0·Ωᵏ/k!, (force_order_ + 1) each: taken on the first

@@ -293,9 +293,19 @@ void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<d
     for (std::size_t k = 1; k <= n1; ++k) tail[k] = integrators::reciprocal(static_cast<int>(k));
     inverse = tail;
   }
-  const BodyJets in{model_,          body,   law_,  mass_[b], damping_[b],
-                    normal_side_[b], t0,     order, inverse,  force_factors_.data(),
-                    out.data(),      scratch};
+  const BodyTerms& terms = terms_[b];
+  const BodyJets in{.model = model_,
+                    .body = body,
+                    .law = law_,
+                    .M = terms.mass,
+                    .damping = terms.damping,
+                    .side = terms.normal_side,
+                    .t0 = t0,
+                    .order = order,
+                    .inverse = inverse,
+                    .force = force_factors_.data(),
+                    .state = out.data(),
+                    .scratch = scratch};
   const bool damped = std::any_of(body.members.begin(), body.members.end(),
                                   [&](int i) { return model_.pellets[i].c != 0.0; });
   if (law_.mu != 0.0)
