@@ -26,8 +26,10 @@ void Recording::on_interval(double t, const Vec& y, const MotionInterval& interv
 
 // The recorded curves of the step (a, b] before its event, if any (its own state is sampled at
 // on_step_end), in as many pieces as keep each chord close to its arc: the event search's
-// samples (computed here where the search skipped them), or more.
+// samples (computed here where the search skipped them), or more. The step is kept for
+// on_step_end, where the normal force's sign change is located on its dense output.
 void Recording::on_step(const StepSamples& s) {
+  step_ = &s.stepper;
   if (!recorder_.wants_samples(s.a)) return;
   const int m = static_cast<int>(s.times.size()) - 1;
   states_.resize(s.times.size());
@@ -56,7 +58,7 @@ void Recording::on_step(const StepSamples& s) {
 
 void Recording::on_step_end(double t, const Vec& y, const MotionInterval& interval, bool at_event) {
   if (at_event) recorder_.sample(t, y);
-  recorder_.check_normal_force(t, y, interval.bodies());
+  recorder_.check_normal_force(t, y, interval.bodies(), step_);
 }
 
 void Recording::on_end(const EndView& end, RunResult& result) {

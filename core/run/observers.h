@@ -31,7 +31,8 @@ class Recording : public RunObserver {
 
  private:
   Recorder recorder_;
-  std::vector<Vec> states_;  // the step's samples the event search skipped
+  const StepView* step_ = nullptr;  // the step on_step was last told of, whose end comes next
+  std::vector<Vec> states_;         // the step's samples the event search skipped
   Vec scratch_;
 };
 

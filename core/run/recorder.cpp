@@ -5,6 +5,7 @@
 #include <limits>
 #include <sstream>
 
+#include "core/events/brent_root.h"
 #include "core/model/dynamics.h"
 
 namespace vibro {
@@ -113,16 +114,54 @@ void Recorder::thin() {
   stride_ *= 2;
 }
 
-void Recorder::check_normal_force(double t, const Vec& y, const std::vector<Body>& bodies) {
+// A dip of N below zero strictly inside a step whose checked ends are both positive is not
+// looked for: it lasts less than the step, and finding it surely needs N's minimum on the dense
+// output of every step near the top (the bodies' accelerations at its ends, or samples inside),
+// a cost every sliding step would pay. The event search's samples inside a step would catch some
+// such dips for a cos per sample, but only on the steps the search samples inside (those near
+// some other watch's root), so that which dips are reported would still depend on the method.
+void Recorder::check_normal_force(double t, const Vec& y, const std::vector<Body>& bodies,
+                                  const StepView* step) {
   if (model_.friction != FrictionLaw::paper || model_.alpha0 == 0.0) return;
   for (const Body& b : bodies) {
-    const double phi = y[phi_index(b.leader())], dphi = y[dphi_index(b.leader())];
-    const bool negative = b.mode == Mode::sliding && normal_per_mass(model_, phi, dphi) < 0.0;
+    const int leader = b.leader();
+    const bool sliding = b.mode == Mode::sliding;
+    const bool negative =
+        sliding && normal_per_mass(model_, y[phi_index(leader)], y[dphi_index(leader)]) < 0.0;
+    // After each checked point a member's window is open just where its body's N is negative.
+    // A body keeps its mode and members through an interval, whose start is checked: at a step's
+    // end a member that differs saw N change sign since the step's start, the last checked point.
+    double at = t;
+    bool located = false;
     for (int i : b.members) {
-      if (negative && std::isnan(negative_since_[i])) negative_since_[i] = t;
-      if (!negative) close_warning(i, t);
+      if (negative == !std::isnan(negative_since_[i])) continue;
+      if (step && sliding && !located) {
+        dense_.resize(y.size());
+        at = sign_change(*step, leader, step->t_prev(), t, negative);
+        located = true;
+      }
+      if (negative)
+        negative_since_[i] = at;
+      else
+        close_warning(i, at);
     }
   }
+}
+
+double Recorder::sign_change(const StepView& step, int leader, double lo, double hi,
+                             bool to_negative) {
+  // Positive before the change, at or below zero after it.
+  auto f = [&](double s) {
+    step.dense(s, dense_);
+    const double n = normal_per_mass(model_, dense_[phi_index(leader)], dense_[dphi_index(leader)]);
+    return to_negative ? n : -n;
+  };
+  const double f_lo = f(lo), f_hi = f(hi);
+  // The dense output may differ from the checked states by round-off (and from an event's
+  // polished state by more): where it does not bracket the change, the change is at that end.
+  if (!(f_lo > 0.0)) return lo;
+  if (!(f_hi <= 0.0)) return hi;
+  return brent_root(f, lo, hi, f_lo, f_hi);
 }
 
 void Recorder::close_warning(int pellet, double t) {

@@ -11,8 +11,10 @@
 #include <set>
 #include <string>
 #include <tuple>
+#include <vector>
 
 #include "core/analysis/checked_run.h"
+#include "core/model/dynamics.h"
 #include "core/model/first_integral.h"
 #include "io/presets.h"
 #include "tests/core/scenes.h"
@@ -133,6 +135,75 @@ TEST(Recorder, EveryBranchBeginsAtItsEventsState) {
           EXPECT_NEAR(first.phi, e->phi, 1e-9 * (1.0 + std::abs(e->phi)))
               << where << " at t = " << end.t;
       }
+  }
+}
+
+// The normal force per mass N = g cos φ + R φ̇² of paper-fig4's pellet 1, at the stops of a
+// DOP853 run at rtol 1e-13 (steps land on them: each is a step's end).
+std::vector<double> reference_normal(const Scene& scene, const std::vector<double>& times) {
+  SimOptions o = scene.sim;
+  o.check = false;
+  o.method = Method::dop853;
+  o.rtol = 1e-13;
+  o.atol = 1e-15;
+  o.stops = times;
+  o.t_end = times.back() + 1e-6;
+  const RunResult r = simulate(scene.model, o);
+  EXPECT_EQ(r.stops.size(), times.size());
+  std::vector<double> n;
+  for (const StateAt& s : r.stops)
+    n.push_back(normal_per_mass(scene.model, s.pellets[0].phi, s.pellets[0].dphi));
+  return n;
+}
+
+// Where N changes sign in [lo, hi] (opposite signs at the ends), to 1e-10 s, by bisection on
+// reference runs.
+double reference_root(const Scene& scene, double lo, double hi) {
+  const std::vector<double> ends = reference_normal(scene, {lo, hi});
+  EXPECT_TRUE((ends[0] < 0.0) != (ends[1] < 0.0))
+      << "no sign change of N in [" << lo << ", " << hi << "]";
+  const bool negative_at_lo = ends[0] < 0.0;
+  while (hi - lo > 1e-10) {
+    const double mid = 0.5 * (lo + hi);
+    ((reference_normal(scene, {mid})[0] < 0.0) == negative_at_lo ? lo : hi) = mid;
+  }
+  return 0.5 * (lo + hi);
+}
+
+TEST(Recorder, TheNegativeNormalForceWindowIsBoundedByTheRootsOfN) {
+  // The paper law's negative-normal-force window opens and closes at N's roots on the dense
+  // output, not at the checked step ends around them: when it was the step ends, paper-fig4's
+  // window began anywhere from 0.6665 s (RADAU5) to 0.7156 s (DOP853) at the preset's rtol
+  // 1e-10. Each method now places it within 1e-7 s of N's first fall below zero and last rise
+  // back found on a 1e-3 s grid of reference runs and bisected.
+  const Scene scene = testing::preset("paper-fig4");
+  std::vector<double> grid;
+  for (int k = 1; k < 1000; ++k) grid.push_back(k * 1e-3);
+  const std::vector<double> n = reference_normal(scene, grid);
+  std::size_t first = 0, last = 0;
+  for (std::size_t k = 1; k < n.size(); ++k) {
+    if (n[k] < 0.0 && n[k - 1] >= 0.0 && first == 0) first = k;
+    if (n[k] >= 0.0 && n[k - 1] < 0.0) last = k;
+  }
+  ASSERT_GT(first, 0u) << "N never falls below zero";
+  ASSERT_GT(last, first) << "N does not rise back above zero";
+  const double begin = reference_root(scene, grid[first - 1], grid[first]);
+  const double end = reference_root(scene, grid[last - 1], grid[last]);
+
+  for (Method method : {Method::dopri5, Method::dop853, Method::radau5, Method::taylor}) {
+    SimOptions o = scene.sim;
+    o.check = false;
+    o.method = method;
+    o.rtol = 1e-10;
+    o.atol = 1e-12;
+    const RunResult r = simulate(scene.model, o);
+    const std::string where = testing::method_at(method, o.rtol);
+    ASSERT_EQ(r.warnings.size(), 1u) << where;
+    const Warning& w = r.warnings[0];
+    EXPECT_EQ(w.code, "negative_normal_force") << where;
+    EXPECT_EQ(w.pellet, 0) << where;
+    EXPECT_NEAR(w.t_begin, begin, 1e-7) << where;
+    EXPECT_NEAR(w.t_end, end, 1e-7) << where;
   }
 }
 
