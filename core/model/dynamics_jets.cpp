@@ -4,6 +4,7 @@
 #include <array>
 #include <cmath>
 #include <cstring>
+#include <utility>
 
 #include "core/integrators/series.h"
 #include "core/model/dynamics.h"
@@ -69,6 +70,23 @@ typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
   return sum;
 }
 
+// f(K) for each K of the sequence, in order, written out.
+template <class F, int... K>
+[[gnu::always_inline]] inline void call_each(F& f, std::integer_sequence<int, K...>) {
+  (f(K), ...);
+}
+
+// Calls f(k) for k = 0..count − 1 in order. With kCount > 0 (then count == kCount) the calls are
+// written out, k a constant in each: the recursions' loops over j <= k then have constant bounds
+// and unroll, the same operations in the same order without the loops' bookkeeping.
+template <int kCount, class F>
+[[gnu::always_inline]] inline void for_each_k(int count, F& f) {
+  if constexpr (kCount > 0)
+    call_each(f, std::make_integer_sequence<int, kCount>{});
+  else
+    for (int k = 0; k < count; ++k) f(k);
+}
+
 // What one body's jets read: the model's constants, the body's, and where its series go.
 struct BodyJets {
   const Model& model;
@@ -128,10 +146,10 @@ double square(const JetSeries& x, int k) {
 // acceleration (as SlidingLaw::acceleration, its damping C·v last); coefficient k + 1 of each
 // state component is coefficient k of its rate over k + 1. Leaves v², the normal force and v in
 // pairs in x for the work (member_work_jets).
-template <bool kFriction, bool kSquares, bool kAlone>
+template <bool kFriction, bool kSquares, bool kAlone, int kOrder>
 void motion_jets(const BodyJets& in, const JetSeries& x) {
   const Body& body = in.body;
-  const int order = in.order;
+  const int order = kOrder > 0 ? kOrder : in.order;
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
   auto component = [&](int i) { return in.state + static_cast<std::size_t>(i) * n1; };
   const int L = body.leader();
@@ -150,7 +168,8 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
   x.CS[0] = Pair{std::cos(u[0]), std::sin(u[0])};
   double* const phi = component(phi_index(L));
   double* const dphi = component(dphi_index(L));
-  for (int k = 0; k < order; ++k) {
+  // Coefficient k of every series, and k + 1 of the state's (inlined where it is written out).
+  auto coefficient = [&](int k) __attribute__((always_inline)) {
     if (k > 0) sin_cos_pair(x.vv, x.CS, k, in.inverse[k]);
     x.vv[k] = Pair{v[k], v[k]};
     const double Sk = x.CS[k][1], Ck = x.CS[k][0];
@@ -175,14 +194,15 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
         component(dphi_index(i))[k + 1] = acc * r;
       }
     }
-  }
+  };
+  for_each_k<kOrder>(order, coefficient);
 }
 
 // The jets of member i's work: its rate R·v·(F_i − m_i·s·μ·n) − m_i·R²·c_i·v², from the series
 // motion_jets left in x; coefficient k + 1 is coefficient k of the rate over k + 1.
-template <bool kFriction, bool kSquares, bool kAlone>
+template <bool kFriction, bool kSquares, bool kAlone, int kOrder>
 void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
-  const int order = in.order;
+  const int order = kOrder > 0 ? kOrder : in.order;
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
   if constexpr (!kAlone) {
     std::fill(x.Fi, x.Fi + n1, 0.0);
@@ -206,14 +226,17 @@ void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
     else
       return R * product * in.inverse[k + 1];
   };
-  int k = 0;
-  for (; k + 1 < order; k += 2) {
+  // The coefficients in pairs k, k + 1 (k = 0, 2, ... while k + 1 < order), then the last one
+  // where order is odd.
+  auto pair = [&](int half) __attribute__((always_inline)) {
+    const int k = 2 * half;
     const Pair product = product_pair(x.vv, g, k);
     w[k + 1] = rate(k, product[0]);
     w[k + 2] = rate(k + 1, product[1]);
-  }
+  };
+  for_each_k<kOrder / 2>(order / 2, pair);
   const double* const v = in.state + static_cast<std::size_t>(dphi_index(in.body.leader())) * n1;
-  if (k < order) w[k + 1] = rate(k, product_coefficient({v, n1}, {g, n1}, k));
+  if (order % 2 == 1) w[order] = rate(order - 1, product_coefficient({v, n1}, {g, n1}, order - 1));
 }
 
 // The jets of one sliding body (SegmentDynamics::body_jets), specialised by what the model has,
@@ -221,23 +244,46 @@ void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
 // work), kSquares (v² is needed: friction or a damper's power), kAlone (one member, whose force
 // is the body's). Every variant does the general case's operations in its order; a series the
 // general case keeps at zero is read as the literal 0.0, the same value.
-template <bool kFriction, bool kSquares, bool kAlone>
+template <bool kFriction, bool kSquares, bool kAlone, int kOrder>
 void sliding_jets(const BodyJets& in) {
   static_assert(kSquares || !kFriction);
   const JetSeries x = jet_series(in.scratch, static_cast<std::size_t>(in.order) + 1);
-  motion_jets<kFriction, kSquares, kAlone>(in, x);
+  motion_jets<kFriction, kSquares, kAlone, kOrder>(in, x);
   if constexpr (kAlone)
-    member_work_jets<kFriction, kSquares, kAlone>(in, x, in.body.leader());
+    member_work_jets<kFriction, kSquares, kAlone, kOrder>(in, x, in.body.leader());
   else
-    for (int i : in.body.members) member_work_jets<kFriction, kSquares, kAlone>(in, x, i);
+    for (int i : in.body.members) member_work_jets<kFriction, kSquares, kAlone, kOrder>(in, x, i);
+}
+
+// kOrder: the order as a constant (0: read from in.order), for the orders written out.
+template <bool kFriction, bool kSquares, int kOrder>
+void sliding_jets_alone_or_not(const BodyJets& in) {
+  if (in.body.members.size() == 1)
+    sliding_jets<kFriction, kSquares, true, kOrder>(in);
+  else
+    sliding_jets<kFriction, kSquares, false, kOrder>(in);
+}
+
+// The orders whose jets are written out: those of rtol 1e-6 to 1e-14 (Taylor::order_for); the
+// others loop.
+constexpr int kLowestWritten = 8, kHighestWritten = 18;
+
+using Jets = void (*)(const BodyJets&);
+
+// The written-out jets of orders kLowestWritten + K.
+template <bool kFriction, bool kSquares, int... K>
+constexpr std::array<Jets, sizeof...(K)> written_jets(std::integer_sequence<int, K...>) {
+  return {&sliding_jets_alone_or_not<kFriction, kSquares, kLowestWritten + K>...};
 }
 
 template <bool kFriction, bool kSquares>
 void sliding_jets_of(const BodyJets& in) {
-  if (in.body.members.size() == 1)
-    sliding_jets<kFriction, kSquares, true>(in);
+  static constexpr auto written = written_jets<kFriction, kSquares>(
+      std::make_integer_sequence<int, kHighestWritten - kLowestWritten + 1>{});
+  if (in.order >= kLowestWritten && in.order <= kHighestWritten)
+    written[in.order - kLowestWritten](in);
   else
-    sliding_jets<kFriction, kSquares, false>(in);
+    sliding_jets_alone_or_not<kFriction, kSquares, 0>(in);
 }
 
 }  // namespace
