@@ -274,13 +274,15 @@ std::optional<PolynomialBracket> first_polynomial_crossing(std::span<const doubl
   if (minima) minima->count = 0;
   if (c.empty() || static_cast<int>(c.size()) > kMaxPolynomialDegree + 1) return std::nullopt;
   const int d = static_cast<int>(c.size()) - 1;
-  Coefficients derivative{}, second{};
+  // Only the entries the spans below cover are written (a constant p's derivative is 0).
+  Coefficients derivative, second;
+  derivative[0] = 0.0;
   for (int k = 1; k <= d; ++k) derivative[k - 1] = k * c[k];
   const auto dp = std::span<const double>(derivative.data(), std::max(d, 1));
   const auto ddp = std::span<const double>(second.data(), std::max(d - 1, 1));
   std::array<double, kMaxPolynomialDegree> turns;
   const int m = roots_inside(dp, h, turns.data());
-  // The curvature is read at the turning points only.
+  // The curvature is read at the turning points only (there are some only where d >= 2).
   if (m > 0)
     for (int k = 2; k <= d; ++k) second[k - 2] = k * (k - 1) * c[k];
   double a = 0.0, pa = polynomial_value(c, 0.0);
@@ -289,8 +291,10 @@ std::optional<PolynomialBracket> first_polynomial_crossing(std::span<const doubl
     const double b = i < m ? turns[i] : h;
     const double pb = polynomial_value(c, b);
     if (pb <= 0.0) return bisect(c, {a, b, pa, pb}, true);
-    const double curvature = polynomial_value(ddp, b);
-    if (minima && i < m && curvature > 0.0) minima->at[minima->count++] = {b, pb, 0.5 * curvature};
+    if (minima && i < m) {
+      const double curvature = polynomial_value(ddp, b);
+      if (curvature > 0.0) minima->at[minima->count++] = {b, pb, 0.5 * curvature};
+    }
     a = b;
     pa = pb;
   }
