@@ -124,9 +124,11 @@ JetSeries jet_series(double* scratch, std::size_t n1) {
 }
 
 // Adds pellet i's force F0 cos(Ωt + ψ) as a series in τ = t − t0 to into[0..order].
+// kOrder: the order as a constant (0: read from in.order).
+template <int kOrder>
 void add_force(const BodyJets& in, int i, double* into) {
   const Forcing& f = in.model.pellets[i].force;
-  const std::size_t n1 = static_cast<std::size_t>(in.order) + 1;
+  const std::size_t n1 = static_cast<std::size_t>(kOrder > 0 ? kOrder : in.order) + 1;
   if (f.active())
     add_cosine_series(std::span<const double>(in.force + static_cast<std::size_t>(i) * n1, n1),
                       f.Omega * in.t0 + f.psi, std::span<double>(into, n1));
@@ -157,9 +159,9 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
   const double* const v = component(dphi_index(L));
   std::fill(x.F, x.F + n1, 0.0);
   if constexpr (kAlone)
-    add_force(in, L, x.F);
+    add_force<kOrder>(in, L, x.F);
   else
-    for (int i : body.members) add_force(in, i, x.F);
+    for (int i : body.members) add_force<kOrder>(in, i, x.F);
   const SlidingLaw& law = in.law;
   const double R = law.R, gR = law.gR, mu = law.mu, M = in.M, damping = in.damping;
   const int s = body.s, side = in.side;
@@ -206,7 +208,7 @@ void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
   if constexpr (!kAlone) {
     std::fill(x.Fi, x.Fi + n1, 0.0);
-    add_force(in, i, x.Fi);
+    add_force<kOrder>(in, i, x.Fi);
   }
   const double* const Fm = kAlone ? x.F : x.Fi;
   const Pellet& p = in.model.pellets[i];
