@@ -3,6 +3,7 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
 #include <utility>
 
@@ -22,13 +23,16 @@ namespace {
 constexpr std::size_t kStackTerms = 32;
 // The series a body's jets need, in units of n1 doubles: {cos u, sin u} pairs (2), v², the body's
 // force, the normal force, one member's force and that force less friction's, and v in pairs
-// {v[j], v[j]} (2).
+// {v[j], v[j]} (2); and one double more, by which the pairs {v[j], v[j]} may be moved to be
+// aligned.
 constexpr std::size_t kJetSeries = 9;
+constexpr std::size_t jet_scratch_size(std::size_t n1) { return kJetSeries * n1 + 1; }
 
 // Two doubles that add and multiply lane by lane, each lane exactly as a double does (IEEE,
 // no contraction): two sums kept side by side are the two sums, bit for bit, at one instruction
-// per step for both. Loaded and stored unaligned.
-typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
+// per step for both. Aligned to 16 bytes (jet_series lays the pairs out so, in a scratch that is
+// aligned): a product of pairs reads one of them from memory as it multiplies.
+typedef double Pair __attribute__((vector_size(16), may_alias));
 
 // Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, where u' = v:
 // S[k] = (1/k) Σ_{i=0..k−1} v[i]·C[k−1−i], C[k] = −(1/k) Σ v[i]·S[k−1−i] (S' = v·C, C' = −v·S;
@@ -99,10 +103,10 @@ struct BodyJets {
   const double* inverse;  // 1/k for k = 1..order + 1 (integrators::kReciprocal)
   const double* force;    // every pellet's forcing factors F0·Ωᵏ/k!, (order + 1) each
   double* state;          // the components' series, (order + 1) each
-  double* scratch;        // kJetSeries·(order + 1) doubles
+  double* scratch;        // jet_scratch_size(order + 1) doubles, aligned to 16 bytes
 };
 
-// The series one body's jets work in, laid out in BodyJets::scratch (kJetSeries·n1 doubles).
+// The series one body's jets work in, laid out in BodyJets::scratch: the pairs at even offsets.
 struct JetSeries {
   Pair* CS;    // {cos u, sin u}, n1 pairs
   double* Q;   // v²
@@ -120,7 +124,7 @@ JetSeries jet_series(double* scratch, std::size_t n1) {
           scratch + 4 * n1,
           scratch + 5 * n1,
           scratch + 6 * n1,
-          reinterpret_cast<Pair*>(scratch + 7 * n1)};
+          reinterpret_cast<Pair*>(scratch + 7 * n1 + n1 % 2)};
 }
 
 // Adds pellet i's force F0 cos(Ωt + ψ) as a series in τ = t − t0 to into[0..order].
@@ -330,14 +334,16 @@ bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
 void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<double> out) const {
   const Body& body = bodies_[b];
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
-  std::array<double, kJetSeries * kStackTerms> stack;
+  alignas(16) std::array<double, jet_scratch_size(kStackTerms)> stack;
   double* scratch = stack.data();
   const double* inverse = integrators::kReciprocal.data();
   static_assert(kStackTerms < integrators::kReciprocals);
   if (n1 > kStackTerms) {  // the series and the reciprocals 1/k, k <= n1, in the heap
-    jet_scratch_.resize(kJetSeries * n1 + n1 + 1);
+    // One double more than they take, so that the series may start 16-byte aligned.
+    jet_scratch_.resize(jet_scratch_size(n1) + n1 + 2);
     scratch = jet_scratch_.data();
-    double* const tail = scratch + kJetSeries * n1;
+    if (reinterpret_cast<std::uintptr_t>(scratch) % 16 != 0) ++scratch;
+    double* const tail = scratch + jet_scratch_size(n1);
     for (std::size_t k = 1; k <= n1; ++k) tail[k] = integrators::reciprocal(static_cast<int>(k));
     inverse = tail;
   }
