@@ -13,6 +13,13 @@ namespace {
 
 using Coefficients = std::array<double, kMaxPolynomialDegree + 1>;
 
+// k as a double, k = 0..kMaxPolynomialDegree: read from memory where a loop would convert it.
+constexpr Coefficients kIndex = [] {
+  Coefficients k{};
+  for (int i = 0; i <= kMaxPolynomialDegree; ++i) k[i] = i;
+  return k;
+}();
+
 // Round-off of a time τ in [0, h].
 double time_round_off(double h) { return 4.0 * std::numeric_limits<double>::epsilon() * h; }
 
@@ -234,12 +241,26 @@ bool stays_above(std::span<const double> c, double h, double level, ValueAndRate
     return false;
   }
   // Σ_{k≥1} |c[k]|·h^k beside polynomial_value_and_rate's steps, the same operations: three
-  // chains in one pass.
-  double spread = 0.0, p = 0.0, r = 0.0, kd = d;  // kd: k as a double, exact
-  for (int k = d; k >= 1; --k, kd -= 1.0) {
-    spread = (spread + std::abs(c[k])) * h;
-    p = p * h + c[k];
-    r = r * h + kd * c[k];
+  // chains in one pass, two coefficients per pass (the same steps, half the loop's overhead).
+  double spread = 0.0, p = 0.0, r = 0.0;
+  auto term = [&](int k, double kd) {  // kd: k as a double
+    const double ck = c[k];
+    spread = (spread + std::abs(ck)) * h;
+    p = p * h + ck;
+    r = r * h + kd * ck;
+  };
+  if (d > kMaxPolynomialDegree) {
+    for (int k = d; k >= 1; --k) term(k, static_cast<double>(k));
+  } else {
+    int k = d;
+    if (k % 2 == 1) {
+      term(k, kIndex[k]);
+      --k;
+    }
+    for (; k >= 2; k -= 2) {
+      term(k, kIndex[k]);
+      term(k - 1, kIndex[k - 1]);
+    }
   }
   end = {p * h + c[0], r};
   if (d > kMaxPolynomialDegree) return false;
@@ -253,13 +274,15 @@ std::optional<PolynomialBracket> first_polynomial_crossing(std::span<const doubl
   if (minima) minima->count = 0;
   if (c.empty() || static_cast<int>(c.size()) > kMaxPolynomialDegree + 1) return std::nullopt;
   const int d = static_cast<int>(c.size()) - 1;
-  Coefficients derivative{}, second{};
+  // Only the entries the spans below cover are written (a constant p's derivative is 0).
+  Coefficients derivative, second;
+  derivative[0] = 0.0;
   for (int k = 1; k <= d; ++k) derivative[k - 1] = k * c[k];
   const auto dp = std::span<const double>(derivative.data(), std::max(d, 1));
   const auto ddp = std::span<const double>(second.data(), std::max(d - 1, 1));
   std::array<double, kMaxPolynomialDegree> turns;
   const int m = roots_inside(dp, h, turns.data());
-  // The curvature is read at the turning points only.
+  // The curvature is read at the turning points only (there are some only where d >= 2).
   if (m > 0)
     for (int k = 2; k <= d; ++k) second[k - 2] = k * (k - 1) * c[k];
   double a = 0.0, pa = polynomial_value(c, 0.0);
@@ -268,8 +291,10 @@ std::optional<PolynomialBracket> first_polynomial_crossing(std::span<const doubl
     const double b = i < m ? turns[i] : h;
     const double pb = polynomial_value(c, b);
     if (pb <= 0.0) return bisect(c, {a, b, pa, pb}, true);
-    const double curvature = polynomial_value(ddp, b);
-    if (minima && i < m && curvature > 0.0) minima->at[minima->count++] = {b, pb, 0.5 * curvature};
+    if (minima && i < m) {
+      const double curvature = polynomial_value(ddp, b);
+      if (curvature > 0.0) minima->at[minima->count++] = {b, pb, 0.5 * curvature};
+    }
     a = b;
     pa = pb;
   }

@@ -41,10 +41,11 @@ struct PolynomialBracket {
   double lo = 0.0, hi = 0.0, p_lo = 0.0, p_hi = 0.0;
 };
 struct PolynomialMinimum {
-  double tau = 0.0, value = 0.0, half_curvature = 0.0;
+  double tau, value, half_curvature;  // no initializers: PolynomialMinima's array stays unwritten
 };
 // The local minima of p inside (0, h) with p > 0 before the first crossing, at most
-// kMaxPolynomialDegree of them.
+// kMaxPolynomialDegree of them: at[0..count − 1] (the entries past count are not initialized,
+// so that a search that finds few minima does not clear the whole array first).
 struct PolynomialMinima {
   int count = 0;
   PolynomialMinimum at[kMaxPolynomialDegree];

@@ -3,7 +3,9 @@
 #include <algorithm>
 #include <array>
 #include <cmath>
+#include <cstdint>
 #include <cstring>
+#include <utility>
 
 #include "core/integrators/series.h"
 #include "core/model/dynamics.h"
@@ -21,13 +23,16 @@ namespace {
 constexpr std::size_t kStackTerms = 32;
 // The series a body's jets need, in units of n1 doubles: {cos u, sin u} pairs (2), v², the body's
 // force, the normal force, one member's force and that force less friction's, and v in pairs
-// {v[j], v[j]} (2).
+// {v[j], v[j]} (2); and one double more, by which the pairs {v[j], v[j]} may be moved to be
+// aligned.
 constexpr std::size_t kJetSeries = 9;
+constexpr std::size_t jet_scratch_size(std::size_t n1) { return kJetSeries * n1 + 1; }
 
 // Two doubles that add and multiply lane by lane, each lane exactly as a double does (IEEE,
 // no contraction): two sums kept side by side are the two sums, bit for bit, at one instruction
-// per step for both. Loaded and stored unaligned.
-typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
+// per step for both. Aligned to 16 bytes (jet_series lays the pairs out so, in a scratch that is
+// aligned): a product of pairs reads one of them from memory as it multiplies.
+typedef double Pair __attribute__((vector_size(16), may_alias));
 
 // Coefficient k >= 1 of S = sin u and C = cos u into CS[k] = {C[k], S[k]}, where u' = v:
 // S[k] = (1/k) Σ_{i=0..k−1} v[i]·C[k−1−i], C[k] = −(1/k) Σ v[i]·S[k−1−i] (S' = v·C, C' = −v·S;
@@ -69,6 +74,23 @@ typedef double Pair __attribute__((vector_size(16), aligned(8), may_alias));
   return sum;
 }
 
+// f(K) for each K of the sequence, in order, written out.
+template <class F, int... K>
+[[gnu::always_inline]] inline void call_each(F& f, std::integer_sequence<int, K...>) {
+  (f(K), ...);
+}
+
+// Calls f(k) for k = 0..count − 1 in order. With kCount > 0 (then count == kCount) the calls are
+// written out, k a constant in each: the recursions' loops over j <= k then have constant bounds
+// and unroll, the same operations in the same order without the loops' bookkeeping.
+template <int kCount, class F>
+[[gnu::always_inline]] inline void for_each_k(int count, F& f) {
+  if constexpr (kCount > 0)
+    call_each(f, std::make_integer_sequence<int, kCount>{});
+  else
+    for (int k = 0; k < count; ++k) f(k);
+}
+
 // What one body's jets read: the model's constants, the body's, and where its series go.
 struct BodyJets {
   const Model& model;
@@ -81,10 +103,10 @@ struct BodyJets {
   const double* inverse;  // 1/k for k = 1..order + 1 (integrators::kReciprocal)
   const double* force;    // every pellet's forcing factors F0·Ωᵏ/k!, (order + 1) each
   double* state;          // the components' series, (order + 1) each
-  double* scratch;        // kJetSeries·(order + 1) doubles
+  double* scratch;        // jet_scratch_size(order + 1) doubles, aligned to 16 bytes
 };
 
-// The series one body's jets work in, laid out in BodyJets::scratch (kJetSeries·n1 doubles).
+// The series one body's jets work in, laid out in BodyJets::scratch: the pairs at even offsets.
 struct JetSeries {
   Pair* CS;    // {cos u, sin u}, n1 pairs
   double* Q;   // v²
@@ -102,13 +124,15 @@ JetSeries jet_series(double* scratch, std::size_t n1) {
           scratch + 4 * n1,
           scratch + 5 * n1,
           scratch + 6 * n1,
-          reinterpret_cast<Pair*>(scratch + 7 * n1)};
+          reinterpret_cast<Pair*>(scratch + 7 * n1 + n1 % 2)};
 }
 
 // Adds pellet i's force F0 cos(Ωt + ψ) as a series in τ = t − t0 to into[0..order].
+// kOrder: the order as a constant (0: read from in.order).
+template <int kOrder>
 void add_force(const BodyJets& in, int i, double* into) {
   const Forcing& f = in.model.pellets[i].force;
-  const std::size_t n1 = static_cast<std::size_t>(in.order) + 1;
+  const std::size_t n1 = static_cast<std::size_t>(kOrder > 0 ? kOrder : in.order) + 1;
   if (f.active())
     add_cosine_series(std::span<const double>(in.force + static_cast<std::size_t>(i) * n1, n1),
                       f.Omega * in.t0 + f.psi, std::span<double>(into, n1));
@@ -128,10 +152,10 @@ double square(const JetSeries& x, int k) {
 // acceleration (as SlidingLaw::acceleration, its damping C·v last); coefficient k + 1 of each
 // state component is coefficient k of its rate over k + 1. Leaves v², the normal force and v in
 // pairs in x for the work (member_work_jets).
-template <bool kFriction, bool kSquares, bool kAlone>
+template <bool kFriction, bool kSquares, bool kAlone, int kOrder>
 void motion_jets(const BodyJets& in, const JetSeries& x) {
   const Body& body = in.body;
-  const int order = in.order;
+  const int order = kOrder > 0 ? kOrder : in.order;
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
   auto component = [&](int i) { return in.state + static_cast<std::size_t>(i) * n1; };
   const int L = body.leader();
@@ -139,9 +163,9 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
   const double* const v = component(dphi_index(L));
   std::fill(x.F, x.F + n1, 0.0);
   if constexpr (kAlone)
-    add_force(in, L, x.F);
+    add_force<kOrder>(in, L, x.F);
   else
-    for (int i : body.members) add_force(in, i, x.F);
+    for (int i : body.members) add_force<kOrder>(in, i, x.F);
   const SlidingLaw& law = in.law;
   const double R = law.R, gR = law.gR, mu = law.mu, M = in.M, damping = in.damping;
   const int s = body.s, side = in.side;
@@ -150,7 +174,8 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
   x.CS[0] = Pair{std::cos(u[0]), std::sin(u[0])};
   double* const phi = component(phi_index(L));
   double* const dphi = component(dphi_index(L));
-  for (int k = 0; k < order; ++k) {
+  // Coefficient k of every series, and k + 1 of the state's (inlined where it is written out).
+  auto coefficient = [&](int k) __attribute__((always_inline)) {
     if (k > 0) sin_cos_pair(x.vv, x.CS, k, in.inverse[k]);
     x.vv[k] = Pair{v[k], v[k]};
     const double Sk = x.CS[k][1], Ck = x.CS[k][0];
@@ -175,18 +200,19 @@ void motion_jets(const BodyJets& in, const JetSeries& x) {
         component(dphi_index(i))[k + 1] = acc * r;
       }
     }
-  }
+  };
+  for_each_k<kOrder>(order, coefficient);
 }
 
 // The jets of member i's work: its rate R·v·(F_i − m_i·s·μ·n) − m_i·R²·c_i·v², from the series
 // motion_jets left in x; coefficient k + 1 is coefficient k of the rate over k + 1.
-template <bool kFriction, bool kSquares, bool kAlone>
+template <bool kFriction, bool kSquares, bool kAlone, int kOrder>
 void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
-  const int order = in.order;
+  const int order = kOrder > 0 ? kOrder : in.order;
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
   if constexpr (!kAlone) {
     std::fill(x.Fi, x.Fi + n1, 0.0);
-    add_force(in, i, x.Fi);
+    add_force<kOrder>(in, i, x.Fi);
   }
   const double* const Fm = kAlone ? x.F : x.Fi;
   const Pellet& p = in.model.pellets[i];
@@ -206,14 +232,17 @@ void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
     else
       return R * product * in.inverse[k + 1];
   };
-  int k = 0;
-  for (; k + 1 < order; k += 2) {
+  // The coefficients in pairs k, k + 1 (k = 0, 2, ... while k + 1 < order), then the last one
+  // where order is odd.
+  auto pair = [&](int half) __attribute__((always_inline)) {
+    const int k = 2 * half;
     const Pair product = product_pair(x.vv, g, k);
     w[k + 1] = rate(k, product[0]);
     w[k + 2] = rate(k + 1, product[1]);
-  }
+  };
+  for_each_k<kOrder / 2>(order / 2, pair);
   const double* const v = in.state + static_cast<std::size_t>(dphi_index(in.body.leader())) * n1;
-  if (k < order) w[k + 1] = rate(k, product_coefficient({v, n1}, {g, n1}, k));
+  if (order % 2 == 1) w[order] = rate(order - 1, product_coefficient({v, n1}, {g, n1}, order - 1));
 }
 
 // The jets of one sliding body (SegmentDynamics::body_jets), specialised by what the model has,
@@ -221,23 +250,46 @@ void member_work_jets(const BodyJets& in, const JetSeries& x, int i) {
 // work), kSquares (v² is needed: friction or a damper's power), kAlone (one member, whose force
 // is the body's). Every variant does the general case's operations in its order; a series the
 // general case keeps at zero is read as the literal 0.0, the same value.
-template <bool kFriction, bool kSquares, bool kAlone>
+template <bool kFriction, bool kSquares, bool kAlone, int kOrder>
 void sliding_jets(const BodyJets& in) {
   static_assert(kSquares || !kFriction);
   const JetSeries x = jet_series(in.scratch, static_cast<std::size_t>(in.order) + 1);
-  motion_jets<kFriction, kSquares, kAlone>(in, x);
+  motion_jets<kFriction, kSquares, kAlone, kOrder>(in, x);
   if constexpr (kAlone)
-    member_work_jets<kFriction, kSquares, kAlone>(in, x, in.body.leader());
+    member_work_jets<kFriction, kSquares, kAlone, kOrder>(in, x, in.body.leader());
   else
-    for (int i : in.body.members) member_work_jets<kFriction, kSquares, kAlone>(in, x, i);
+    for (int i : in.body.members) member_work_jets<kFriction, kSquares, kAlone, kOrder>(in, x, i);
+}
+
+// kOrder: the order as a constant (0: read from in.order), for the orders written out.
+template <bool kFriction, bool kSquares, int kOrder>
+void sliding_jets_alone_or_not(const BodyJets& in) {
+  if (in.body.members.size() == 1)
+    sliding_jets<kFriction, kSquares, true, kOrder>(in);
+  else
+    sliding_jets<kFriction, kSquares, false, kOrder>(in);
+}
+
+// The orders whose jets are written out: those of rtol 1e-6 to 1e-14 (Taylor::order_for); the
+// others loop.
+constexpr int kLowestWritten = 8, kHighestWritten = 18;
+
+using Jets = void (*)(const BodyJets&);
+
+// The written-out jets of orders kLowestWritten + K.
+template <bool kFriction, bool kSquares, int... K>
+constexpr std::array<Jets, sizeof...(K)> written_jets(std::integer_sequence<int, K...>) {
+  return {&sliding_jets_alone_or_not<kFriction, kSquares, kLowestWritten + K>...};
 }
 
 template <bool kFriction, bool kSquares>
 void sliding_jets_of(const BodyJets& in) {
-  if (in.body.members.size() == 1)
-    sliding_jets<kFriction, kSquares, true>(in);
+  static constexpr auto written = written_jets<kFriction, kSquares>(
+      std::make_integer_sequence<int, kHighestWritten - kLowestWritten + 1>{});
+  if (in.order >= kLowestWritten && in.order <= kHighestWritten)
+    written[in.order - kLowestWritten](in);
   else
-    sliding_jets<kFriction, kSquares, false>(in);
+    sliding_jets_alone_or_not<kFriction, kSquares, 0>(in);
 }
 
 }  // namespace
@@ -282,14 +334,16 @@ bool SegmentDynamics::taylor_coefficients(double t0, const Vec& y0, int order,
 void SegmentDynamics::body_jets(std::size_t b, double t0, int order, std::span<double> out) const {
   const Body& body = bodies_[b];
   const std::size_t n1 = static_cast<std::size_t>(order) + 1;
-  std::array<double, kJetSeries * kStackTerms> stack;
+  alignas(16) std::array<double, jet_scratch_size(kStackTerms)> stack;
   double* scratch = stack.data();
   const double* inverse = integrators::kReciprocal.data();
   static_assert(kStackTerms < integrators::kReciprocals);
   if (n1 > kStackTerms) {  // the series and the reciprocals 1/k, k <= n1, in the heap
-    jet_scratch_.resize(kJetSeries * n1 + n1 + 1);
+    // One double more than they take, so that the series may start 16-byte aligned.
+    jet_scratch_.resize(jet_scratch_size(n1) + n1 + 2);
     scratch = jet_scratch_.data();
-    double* const tail = scratch + kJetSeries * n1;
+    if (reinterpret_cast<std::uintptr_t>(scratch) % 16 != 0) ++scratch;
+    double* const tail = scratch + jet_scratch_size(n1);
     for (std::size_t k = 1; k <= n1; ++k) tail[k] = integrators::reciprocal(static_cast<int>(k));
     inverse = tail;
   }

@@ -225,21 +225,37 @@ TEST(TaylorJets, TheTruncationErrorHasTheSeriesOrder) {
 }
 
 // Coefficient k depends on the series up to k alone: a long series (past the orders the jets keep
-// on the stack, so in their heap scratch) begins with the short one, bit for bit.
+// on the stack, so in their heap scratch) begins with the short one, bit for bit. Every short
+// order from 2 to 20 (those whose jets are written out and those that loop), with and without
+// friction and damping, for a body of two members and one alone.
 TEST(TaylorJets, ALongSeriesBeginsWithTheShortOne) {
-  for (FrictionLaw law : {FrictionLaw::paper, FrictionLaw::bilateral}) {
-    const Model model = forced_model(law);
-    const std::vector<Body> bodies = forced_bodies();
+  struct Case {
+    FrictionLaw law;
+    double alpha0;  // 0: frictionless
+    bool damped;
+  };
+  for (const Case& c :
+       {Case{FrictionLaw::paper, 0.2, true}, Case{FrictionLaw::bilateral, 0.2, true},
+        Case{FrictionLaw::paper, 0.0, true}, Case{FrictionLaw::paper, 0.0, false}}) {
+    Model model = forced_model(c.law);
+    model.alpha0 = c.alpha0;
+    if (!c.damped)
+      for (Pellet& p : model.pellets) p.c = 0.0;
+    const std::vector<Body> bodies = {Body{.members = {0, 1}, .mode = Mode::sliding, .s = 1},
+                                      Body{.members = {2}, .mode = Mode::sliding, .s = -1}};
     const Vec y0 = forced_state();
     const SegmentDynamics sys(model, bodies, y0);
-    const int short_order = 12, long_order = 40;
-    const std::vector<double> a = jets(sys, 0.7, y0, short_order);
+    const int long_order = 40;
     const std::vector<double> b = jets(sys, 0.7, y0, long_order);
-    for (int i = 0; i < sys.dimension(); ++i)
-      for (int k = 0; k <= short_order; ++k)
-        EXPECT_EQ(a[static_cast<std::size_t>(i) * (short_order + 1) + k],
-                  b[static_cast<std::size_t>(i) * (long_order + 1) + k])
-            << "component " << i << ", k = " << k;
+    for (int short_order = 2; short_order <= 20; ++short_order) {
+      const std::vector<double> a = jets(sys, 0.7, y0, short_order);
+      for (int i = 0; i < sys.dimension(); ++i)
+        for (int k = 0; k <= short_order; ++k)
+          EXPECT_EQ(a[static_cast<std::size_t>(i) * (short_order + 1) + k],
+                    b[static_cast<std::size_t>(i) * (long_order + 1) + k])
+              << "alpha0 " << c.alpha0 << ", damped " << c.damped << ", order " << short_order
+              << ", component " << i << ", k = " << k;
+    }
   }
 }
 
