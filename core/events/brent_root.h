@@ -8,15 +8,17 @@
 namespace vibro {
 
 // Brent's root finder on [a, b] with f(a) > 0 >= f(b); returns the smallest bracketing point
-// found with f <= 0, to round-off of t.
+// found with f <= 0, to round-off of t, or within `tolerance` (s) of the root where that is
+// larger: its last steps, of the round-off's size, each cost an evaluation.
 template <class F>
-double brent_root(F&& f, double a, double b, double fa, double fb) {
+double brent_root(F&& f, double a, double b, double fa, double fb, double tolerance = 0.0) {
   // Keeps [lo, hi] with f(lo) > 0 >= f(hi) and returns hi: the event is then certainly
   // reached, never reported a hair before it.
   double lo = a, hi = b, flo = fa, fhi = fb;
   double c = lo, fc = flo, d = hi - lo, e = d;
   for (int iter = 0; iter < 200; ++iter) {
-    const double tol = 4.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(hi));
+    const double tol = std::max(
+        tolerance, 4.0 * std::numeric_limits<double>::epsilon() * std::max(1.0, std::abs(hi)));
     if (hi - lo <= tol || fhi == 0.0) break;
     // Brent's step from the current best point hi, with the other end lo.
     double m = 0.5 * (lo - hi);

@@ -161,7 +161,9 @@ double Recorder::sign_change(const StepView& step, int leader, double lo, double
   // polished state by more): where it does not bracket the change, the change is at that end.
   if (!(f_lo > 0.0)) return lo;
   if (!(f_hi <= 0.0)) return hi;
-  return brent_root(f, lo, hi, f_lo, f_hi);
+  // To a nanosecond in a second's span: the window is a warning's, read at a few digits, and
+  // Brent's steps toward round-off would take two thirds of the evaluations.
+  return brent_root(f, lo, hi, f_lo, f_hi, 1e-9 * std::max(1.0, std::abs(hi)));
 }
 
 void Recorder::close_warning(int pellet, double t) {
