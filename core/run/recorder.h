@@ -34,8 +34,8 @@ class Recorder {
   // interval's start (no step: a window opens or closes there, at its instant) and each step's
   // end, or its event (`step`: the step just taken, whose start is the last checked point). Where
   // N changed sign since the last checked point, the window opens or closes at N's root on the
-  // step's dense output, to round-off of t; a cos per body at each checked point is all the
-  // check costs until then (not one at every sample). Locating a change builds the step's dense
+  // step's dense output, to 1e-9 s (relative past 1 s); a cos per body at each checked point is all
+  // the check costs until then (not one at every sample). Locating a change builds the step's dense
   // output where the event search did not: DOP853's three extra stages, counted in rhs_evals.
   void check_normal_force(double t, const Vec& y, const std::vector<Body>& bodies,
                           const StepView* step = nullptr);
