@@ -111,7 +111,7 @@ std::optional<std::string> result_text(const SweepJob& job, const SweepResult& r
     return sweep_image(job.scene, job.plot, result, *image);
   if (out.ends_with(".csv")) return sweep_result_csv(spec, result);
   // With its scene, so that `vibro plot` redraws it from this file alone.
-  return sweep_result_json(spec, result, scene_to_json(job.scene)).dump() + "\n";
+  return sweep_result_text(spec, result, scene_to_json(job.scene)) + "\n";
 }
 
 // Draws or writes the result to every output (stdout without one).

@@ -366,9 +366,14 @@ bool write_sweep_summary_json(const SweepSpec& spec, const SweepResult& result,
   return write_tail(out, spec, result, nullptr);
 }
 
+std::string sweep_result_text(const SweepSpec& spec, const SweepResult& result,
+                              const json& scene) {
+  return whole_text(
+      [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink, scene); });
+}
+
 json sweep_result_json(const SweepSpec& spec, const SweepResult& result, const json& scene) {
-  return json::parse(whole_text(
-      [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink, scene); }));
+  return json::parse(sweep_result_text(spec, result, scene));
 }
 
 std::optional<SweepView> sweep_plot_kind(const std::string& name, const SweepSpec& spec) {

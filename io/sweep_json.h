@@ -33,6 +33,10 @@ bool write_sweep_result_json(const SweepSpec& spec, const SweepResult& result, c
                              const nlohmann::json& scene = nullptr);
 nlohmann::json sweep_result_json(const SweepSpec& spec, const SweepResult& result,
                                  const nlohmann::json& scene = nullptr);
+// The same document as one string, as write_sweep_result_json writes it: the text of
+// sweep_result_json(...).dump(), without building the tree.
+std::string sweep_result_text(const SweepSpec& spec, const SweepResult& result,
+                              const nlohmann::json& scene = nullptr);
 // The result without its "points" and "runs" columns, whose size grows with the runs: the
 // attractors (a sweep that classifies them), the parameters, the section and the stats, as
 // write_sweep_result_json writes them.

@@ -132,7 +132,7 @@ class Sweep {
 
   // With its scene, as `vibro sweep` writes it (so that `vibro plot` can redraw it).
   std::string to_json() const {
-    return sweep_result_json(spec(), result_, scene_to_json(scene_)).dump() + "\n";
+    return sweep_result_text(spec(), result_, scene_to_json(scene_)) + "\n";
   }
   std::string to_csv() const { return sweep_result_csv(spec(), result_); }
 
