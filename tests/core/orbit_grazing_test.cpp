@@ -379,8 +379,8 @@ TEST(OrbitGrazing, AMotionStrikingOneStopGrazesTheOtherAndTurnsBack) {
 
 // The same scene scaled down 60 times (stops at 0.001 and −0.0015 rad, the force and guess alike:
 // the small-angle motion is the same up to the pendulum's nonlinearity), followed as the full-size
-// one is: the grazing, approached from the free side, the two folds, and the end at the grazing
-// of the −0.0015 stop at 3.0197, the values within 3e-3 of the full-size ones. Measured in rad,
+// one is: the grazing, approached from the free side, the two folds, and the two grazings near
+// 3.0198 where it ends, the values within 3e-3 of the full-size ones. Measured in rad,
 // this motion's angles weighed nothing in the arclength against the parameter: a step crossed the
 // first fold's turn unnoticed, onto the motions past the second, whose impacts it took for two
 // grazings before coming back round to the first grazing, its folds never reported. Its motions
