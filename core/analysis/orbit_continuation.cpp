@@ -23,15 +23,45 @@ double parameter_unit(double p0, double span) {
   return std::copysign(std::min(std::abs(span), std::max(std::abs(p0), 1.0)), span);
 }
 
-// The continuation works in scaled unknowns v = (x with speeds times sqrt(R/g), (p − p0)/unit),
-// so that a step of arclength weighs angles, speeds and the parameter alike (parameter_unit). The
-// section lies at time `phase` of the forcing: the stroboscopic map jumps where an impact crosses
-// the section (the state before it becomes the state after it), so the phase is kept away from the
-// impacts.
+// The largest half-range of a pellet's angle over a return of the motion: its state x on the
+// section and its events (rad).
+double half_swing(const std::vector<Event>& events, const Vec& x) {
+  double swing = 0.0;
+  for (Eigen::Index i = 0; 2 * i < x.size(); ++i) {
+    double lo = x[2 * i], hi = x[2 * i];
+    for (const Event& e : events)
+      if (!e.pellets.empty() && e.pellets[0] == i)
+        lo = std::min(lo, e.phi), hi = std::max(hi, e.phi);
+    swing = std::max(swing, 0.5 * (hi - lo));
+  }
+  return swing;
+}
+
+// The state's unit in the continuation's scaled unknowns and its thresholds (rad; speeds times
+// sqrt(R/g)): twenty times the start motion's half-swing, fixed for the whole branch, 1 rad at most
+// (motions of a half-swing of 0.05 rad or more are measured in rad) and 1e-3 rad at least (a motion
+// at or near rest gives no size to go by). Measured so, a smaller motion is followed as one of a
+// half-swing of 0.05 rad, its scaled problem the same up to the pendulum's nonlinearity: in rad,
+// the angles of a milliradian's swing weigh nothing in the arclength against the parameter, and a
+// step crosses a fold's turn (a third of the swing at a nearly fixed parameter) unnoticed. Near a
+// grazing (kNearGrazing of the unit) is then a gap below 2 % of the half-swing, as 1e-3 rad is at
+// 0.05 rad: a larger share counts the moderately slow impacts of a motion at a fold as a grazing's.
+double state_unit(const PeriodicOrbit& start) {
+  Vec x(2 * start.state.size());
+  for (std::size_t i = 0; i < start.state.size(); ++i)
+    x.segment(2 * i, 2) << start.state[i].phi, start.state[i].dphi;
+  return std::clamp(20.0 * half_swing(start.events, x), 1e-3, 1.0);
+}
+
+// The continuation works in scaled unknowns v = (x with speeds times sqrt(R/g), over the state's
+// unit (state_unit), (p − p0)/unit), so that a step of arclength weighs angles, speeds and the
+// parameter alike (parameter_unit), whatever the motion's size. The section lies at time `phase` of
+// the forcing: the stroboscopic map jumps where an impact crosses the section (the state before it
+// becomes the state after it), so the phase is kept away from the impacts.
 class ScaledMap {
  public:
   ScaledMap(const Model& model, const SimOptions& options, int periods,
-            const std::string& parameter, double p0, double unit,
+            const std::string& parameter, double p0, double unit, double state_unit,
             const std::atomic<bool>* cancel = nullptr)
       : model_(model),
         options_(options),
@@ -40,6 +70,7 @@ class ScaledMap {
         p0_(p0),
         unit_(unit),
         time_(time_scale(model)),
+        size_(state_unit),
         cancel_(cancel) {}
 
   // A point on or near the branch: the map there, its residual and Jacobian in scaled unknowns.
@@ -57,15 +88,16 @@ class ScaledMap {
   int periods() const { return periods_; }
   double phase() const { return phase_; }
   double value(const Vec& v) const { return p0_ + unit_ * v[size()]; }
+  double state_unit() const { return size_; }
   Vec scaled(const Vec& x, double p) const {
     Vec v(size() + 1);
-    for (int k = 0; k < size(); ++k) v[k] = x[k] * (k % 2 ? time_ : 1.0);
+    for (int k = 0; k < size(); ++k) v[k] = x[k] * (k % 2 ? time_ : 1.0) / size_;
     v[size()] = (p - p0_) / unit_;
     return v;
   }
   Vec state(const Vec& v) const {
     Vec x(size());
-    for (int k = 0; k < size(); ++k) x[k] = v[k] / (k % 2 ? time_ : 1.0);
+    for (int k = 0; k < size(); ++k) x[k] = v[k] * size_ / (k % 2 ? time_ : 1.0);
     return x;
   }
   // The model at parameter value p.
@@ -92,8 +124,8 @@ class ScaledMap {
     if (!pt.map.ok) return pt;
     const int n = size();
     const Vec r = orbit_residual(pt.map);
-    Mat D = Mat::Identity(n, n);
-    for (int k = 1; k < n; k += 2) D(k, k) = time_;
+    Mat D = Mat::Identity(n, n) / size_;
+    for (int k = 1; k < n; k += 2) D(k, k) = time_ / size_;
     pt.residual = D * r;
     pt.J.resize(n, n + 1);
     pt.J.leftCols(n) = D * (pt.map.jacobian - Mat::Identity(n, n)) * D.inverse();
@@ -144,7 +176,7 @@ class ScaledMap {
   const SimOptions& options_;
   int periods_;
   std::string parameter_;
-  double p0_, unit_, time_;
+  double p0_, unit_, time_, size_;   // size_: the state's unit (state_unit)
   const std::atomic<bool>* cancel_;  // once set, every point is not ok: the walk ends soon
   double phase_ = 0.0;
   std::vector<bool> armed_ = armed_at_start(model_);  // the mobile limiters' at the phase
@@ -246,25 +278,10 @@ bool crossed(BifurcationKind k, const Signature& a, const Signature& b) {
 }
 
 // Where a motion is near a grazing: an impact's speed (times the time scale) or a turn's distance
-// to a limiter below this, rad, at most (near_grazing).
+// to a limiter below this, of the state's unit (state_unit): 1e-3 rad for motions of a half-swing
+// of 0.05 rad or more. A gap is small only against the motion's own size: at a swing of 1e-3 rad
+// every impact would be slow and every turn near a limiter by an absolute 1e-3 rad.
 constexpr double kNearGrazing = 1e-3;
-
-// How near zero a gap must come to count as near a grazing (rad; impact speeds times the time
-// scale): kNearGrazing, or a tenth of the motion's half-swing (the largest half-range of a
-// pellet's angles over the return: the state x and its events) where that is smaller. A gap is
-// small only against the motion's own scale: at a swing of 1e-3 rad every impact would be slow
-// and every turn near a limiter by an absolute 1e-3 rad.
-double near_grazing(const RunResult& run, const Vec& x) {
-  double swing = 0.0;
-  for (Eigen::Index i = 0; 2 * i < x.size(); ++i) {
-    double lo = x[2 * i], hi = x[2 * i];
-    for (const Event& e : run.events)
-      if (!e.pellets.empty() && e.pellets[0] == i)
-        lo = std::min(lo, e.phi), hi = std::max(hi, e.phi);
-    swing = std::max(swing, 0.5 * (hi - lo));
-  }
-  return std::min(kNearGrazing, 0.1 * swing);
-}
 
 // The turn of the motion that comes nearest to a limiter acting on its pellet, as the impact it
 // becomes where it reaches the limiter, its distance to it (rad) and its time (s from the
@@ -290,21 +307,20 @@ Turn nearest_turn(const Model& model, const RunResult& run) {
   return g;
 }
 
-// The nearest an impact, or a turn near a grazing (near_grazing), comes to the section, and the
-// middle of the longest stretch without them, as times from the section (s). Such a turn is where
-// an impact appears at the grazing: on the section, the grazing motion's state would lie on the
-// limiter, and the impacting motions past it would start at their impact.
+// The nearest an impact, or a turn nearer a limiter than `near` (rad), comes to the section, and
+// the middle of the longest stretch without them, as times from the section (s). Such a turn is
+// where an impact appears at the grazing: on the section, the grazing motion's state would lie on
+// the limiter, and the impacting motions past it would start at their impact.
 struct Clearance {
   double nearest = INFINITY;
   double middle = 0.0;
 };
 
-Clearance clearance(const Model& model, const RunResult& run, const Vec& x, double span) {
+Clearance clearance(const Model& model, const RunResult& run, double near, double span) {
   std::vector<double> times = {0.0};
   for (const Event& e : run.events)
     if (is_impact(e)) times.push_back(e.t);
-  if (const Turn turn = nearest_turn(model, run); turn.gap < near_grazing(run, x))
-    times.push_back(turn.t);
+  if (const Turn turn = nearest_turn(model, run); turn.gap < near) times.push_back(turn.t);
   std::sort(times.begin(), times.end());
   times.push_back(span);
   Clearance c;
@@ -394,7 +410,8 @@ Point locate(const ScaledMap& map, BifurcationKind kind, const Point& here, cons
 
 // Past a period doubling (on the side where the branch is unstable, `past` = ±1), the period-2
 // motion it sheds: sought from the doubling's state moved along the eigenvector of the multiplier
-// −1, farther and farther until Newton's method finds a motion that one period does not return.
+// −1 (by 1e-2 to 0.3 of the state's unit), farther and farther until Newton's method finds a
+// motion that one period does not return.
 void find_doubled(const ScaledMap& map, const Point& at, double past, double unit, Bifurcation& b) {
   const Eigen::EigenSolver<Mat> eig(at.map.jacobian, true);
   Eigen::Index nearest = 0;
@@ -410,7 +427,8 @@ void find_doubled(const ScaledMap& map, const Point& at, double past, double uni
       if (map.cancelled()) return;
       Vec moved = at.v;
       moved.head(map.size()) +=
-          side * a * map.scaled(v / v.lpNorm<Eigen::Infinity>(), 0.0).head(map.size());
+          side * a *
+          map.scaled(map.state_unit() * v / v.lpNorm<Eigen::Infinity>(), 0.0).head(map.size());
       OrbitSpec spec;
       spec.periods = 2 * map.periods();
       spec.guess = map.section_state(moved);
@@ -485,7 +503,8 @@ class Continuation {
         p0_(*get_parameter(model, spec.parameter)),
         unit_(parameter_unit(p0_, spec.to - p0_)),
         end_((spec.to - p0_) / unit_),
-        map_(section_, options, start.periods, spec.parameter, p0_, unit_, cancel),
+        map_(section_, options, start.periods, spec.parameter, p0_, unit_, state_unit(start),
+             cancel),
         tol_(std::max(1e-10, 100.0 * options.rtol)),
         n_(map_.size()) {
     Vec x(n_);
@@ -525,6 +544,8 @@ class Continuation {
   void restart_at(Point next, bool turned = false);
   // The way the branch goes in the parameter's own units (+1: to larger values).
   double heading() const { return t_[n_] * unit_ > 0.0 ? 1.0 : -1.0; }
+  // How near zero a gap must come to count as near a grazing, rad (kNearGrazing).
+  double near_grazing() const { return kNearGrazing * map_.state_unit(); }
   // How far the parameter may go from `from` the way `way` (±1): to `to` where that lies ahead,
   // unbounded where the branch heads away from it (turned back at a fold or a grazing).
   double room(double from, double way) const {
@@ -658,7 +679,7 @@ Continuation::Step Continuation::step_to(const Vec& predicted) const {
 void Continuation::keep_clear() {
   const Model m = map_.at(map_.value(here_.v));
   const double T = forcing_period(m);
-  const Clearance c = clearance(m, here_.map.run, here_.map.x, map_.periods() * T);
+  const Clearance c = clearance(m, here_.map.run, near_grazing(), map_.periods() * T);
   if (c.nearest >= 0.05 * T) return;
   const Vec moved = map_.shift_phase(here_, c.middle);
   here_ = map_.evaluate(map_.scaled(moved, map_.value(here_.v)));
@@ -678,16 +699,14 @@ bool Continuation::cross_grazing() {
   why << "the branch could not be followed past " << spec_.parameter << " = "
       << map_.value(here_.v);
   const Model here = map_.at(map_.value(here_.v));
-  if (grazing_distance(here, here_.map.run, here_.map.x) >
-      near_grazing(here_.map.run, here_.map.x)) {
+  if (grazing_distance(here, here_.map.run, here_.map.x) > near_grazing()) {
     branch_.message = why.str() + ": no nearby motion continues it";
     return false;
   }
   // Approached from the impacting side where the slowest limiter impact is near a grazing and
   // nearer zero than the turn nearest a limiter (the one grazed, as in jump_grazing).
   const double slow = slowest_impact(here_.map.run).speed * time_scale(here);
-  const bool impacting = slow <= near_grazing(here_.map.run, here_.map.x) &&
-                         slow <= nearest_turn(here, here_.map.run).gap;
+  const bool impacting = slow <= near_grazing() && slow <= nearest_turn(here, here_.map.run).gap;
   branch_.bifurcations.push_back({BifurcationKind::grazing,
                                   map_.value(here_.v),
                                   map_.section_state(here_.v),
@@ -932,8 +951,7 @@ bool Continuation::walk_on_impact() {
   for (const Limiter& l : here.limiters)
     if (l.mobile) return false;
   const SlowImpact slow = slowest_impact(here_.map.run);
-  if (slow.pellet < 0 || slow.speed * time_scale(here) > near_grazing(here_.map.run, here_.map.x))
-    return false;
+  if (slow.pellet < 0 || slow.speed * time_scale(here) > near_grazing()) return false;
   const double from = map_.value(here_.v);
   const double p = from + heading() * std::min(walk_ * std::abs(unit_), room(from, heading()));
   std::optional<Step> next = step_on_impact(slow, p);

@@ -312,14 +312,15 @@ TEST(OrbitGrazing, APelletStartedOnItsStopStaysOnItsOwnSideAlongTheBranch) {
 // that none confirms are now shortened until they cross it or fold. Its motions striking both
 // stops are those a periodic-orbit search finds from their states, and at the second fold two
 // such motions found by the search meet and vanish.
-Model two_stop_scene() {
-  Model m = stop_scene(0.05139459, 3.06, 0.0, 0.0, 0.0, 0.06, 0.8);
-  m.limiters.push_back({-0.09, 0.8, false, -1, {}});
+// The scene scaled down by `s` (stops and force alike).
+Model two_stop_scene(double s = 1.0) {
+  Model m = stop_scene(0.05139459 * s, 3.06, 0.0, 0.0, 0.0, 0.06 * s, 0.8);
+  m.limiters.push_back({-0.09 * s, 0.8, false, -1, {}});
   return m;
 }
 
-std::optional<PeriodicOrbit> two_stop_motion(double Omega, PhasePoint guess) {
-  Model at = two_stop_scene();
+std::optional<PeriodicOrbit> two_stop_motion(double Omega, PhasePoint guess, double s = 1.0) {
+  Model at = two_stop_scene(s);
   at.pellets[0].force.Omega = Omega;
   OrbitSpec spec;
   spec.transient = 0;
@@ -377,26 +378,67 @@ TEST(OrbitGrazing, AMotionStrikingOneStopGrazesTheOtherAndTurnsBack) {
 }
 
 // The same scene scaled down 60 times (stops at 0.001 and −0.0015 rad, the force and guess alike:
-// the small-angle motion is the same up to the pendulum's nonlinearity). Against a swing of 1e-3
-// rad an absolute 1e-3 rad made every impact slow, and the grazing was reported as approached from
-// the impacting side; the threshold is now a tenth of the swing at most. Once the branch had
-// turned back (heading away from `to`), the search for the next grazing ahead clamped every trial
-// value to `to` and found the first grazing again, far away, closing the branch where it was not:
-// it now ends where it has come back round.
-TEST(OrbitGrazing, AtASwingOfAMilliradianTheGrazingIsToldFromTheFreeSide) {
+// the small-angle motion is the same up to the pendulum's nonlinearity), followed as the full-size
+// one is: the grazing, approached from the free side, the two folds, and the two grazings near
+// 3.0198 where it ends, the values within 3e-3 of the full-size ones. Measured in rad,
+// this motion's angles weighed nothing in the arclength against the parameter: a step crossed the
+// first fold's turn unnoticed, onto the motions past the second, whose impacts it took for two
+// grazings before coming back round to the first grazing, its folds never reported. Its motions
+// striking both stops are those a periodic-orbit search finds from their states, and at each fold
+// two such motions found by the search meet and vanish.
+TEST(OrbitGrazing, AtASwingOfAMilliradianTheBranchIsFollowedAsAtFullSize) {
   constexpr double s = 1.0 / 60.0;
-  Model m = stop_scene(0.05139459 * s, 3.06, 0.0, 0.0, 0.0, 0.06 * s, 0.8);
-  m.limiters.push_back({-0.09 * s, 0.8, false, -1, {}});
-  const Reproducer r{m, {0.04114439270724999 * s, 0.03604975156863822 * s}, 3.5};
+  const Reproducer r{two_stop_scene(s), {0.04114439270724999 * s, 0.03604975156863822 * s}, 3.5};
   const OrbitBranch b = follow(r);
-  ASSERT_GE(b.bifurcations.size(), 2u) << b.message;
-  EXPECT_EQ(b.bifurcations[0].kind, BifurcationKind::grazing);
-  EXPECT_NEAR(b.bifurcations[0].value, 3.254913, 1e-5);
+  ASSERT_EQ(b.bifurcations.size(), 5u) << b.message;
+  const BifurcationKind kinds[] = {BifurcationKind::grazing, BifurcationKind::fold,
+                                   BifurcationKind::fold, BifurcationKind::grazing,
+                                   BifurcationKind::grazing};
+  const double values[] = {3.254913, 3.024641, 3.052836, 3.019841, 3.019658};
+  for (std::size_t k = 0; k < 5; ++k) {
+    EXPECT_EQ(b.bifurcations[k].kind, kinds[k]) << k;
+    EXPECT_NEAR(b.bifurcations[k].value, values[k], 1e-5) << k;
+  }
   EXPECT_EQ(b.bifurcations[0].approached_impacting, false);
+  EXPECT_EQ(b.bifurcations[3].approached_impacting, true);
+  EXPECT_EQ(b.bifurcations[4].approached_impacting, false);
   EXPECT_FALSE(b.reached);
-  EXPECT_NE(b.message.find("closes on itself"), std::string::npos) << b.message;
-  ASSERT_FALSE(b.points.empty());
-  EXPECT_NEAR(b.points.back().value, b.bifurcations[0].value, 0.01);
+  EXPECT_NE(b.message.find("could not be followed"), std::string::npos) << b.message;
+  int compared = 0;
+  for (const BranchPoint& p : b.points) {
+    if (p.impacts_per_period != 2.0 || std::abs(p.value - b.bifurcations[0].value) < 1e-6) continue;
+    const std::optional<PeriodicOrbit> o = two_stop_motion(p.value, p.state[0], s);
+    ASSERT_TRUE(o) << "at Ω = " << p.value;
+    EXPECT_NEAR(o->state[0].phi, p.state[0].phi, 1e-9 * s) << "at Ω = " << p.value;
+    EXPECT_NEAR(o->state[0].dphi, p.state[0].dphi, 1e-8 * s) << "at Ω = " << p.value;
+    ++compared;
+  }
+  EXPECT_GE(compared, 20);
+  // The first fold, a least Ω: the unstable and the stable motion beside it, searched from their
+  // branch points 2e-4 above it, are two; 2e-4 below it the search from the fold's state finds
+  // none near it (only the motion past the second fold, 3.5e-4 rad away).
+  const Bifurcation& first = b.bifurcations[1];
+  const std::optional<PeriodicOrbit> unstable1 =
+      two_stop_motion(first.value + 2e-4, {8.54e-4, 8.54e-4}, s);
+  const std::optional<PeriodicOrbit> stable1 =
+      two_stop_motion(first.value + 2e-4, {8.40e-4, 8.81e-4}, s);
+  ASSERT_TRUE(unstable1 && stable1);
+  EXPECT_FALSE(unstable1->stable);
+  EXPECT_TRUE(stable1->stable);
+  EXPECT_GT(std::abs(stable1->state[0].phi - unstable1->state[0].phi), 5e-4 * s);
+  const std::optional<PeriodicOrbit> below = two_stop_motion(first.value - 2e-4, first.state[0], s);
+  if (below) EXPECT_GT(std::abs(below->state[0].phi - first.state[0].phi), 1e-4);
+  // The second fold, a greatest Ω, as the full-size test checks it (its guesses scaled down).
+  const double fold = b.bifurcations[2].value;
+  const std::optional<PeriodicOrbit> stable =
+      two_stop_motion(fold - 2e-4, {0.0393 * s, 0.0605 * s}, s);
+  const std::optional<PeriodicOrbit> unstable =
+      two_stop_motion(fold - 2e-4, {0.0380 * s, 0.0601 * s}, s);
+  ASSERT_TRUE(stable && unstable);
+  EXPECT_TRUE(stable->stable);
+  EXPECT_FALSE(unstable->stable);
+  EXPECT_GT(std::abs(stable->state[0].phi - unstable->state[0].phi), 5e-4 * s);
+  EXPECT_FALSE(two_stop_motion(fold + 2e-4, b.bifurcations[2].state[0], s));
 }
 
 }  // namespace
