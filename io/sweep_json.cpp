@@ -366,8 +366,7 @@ bool write_sweep_summary_json(const SweepSpec& spec, const SweepResult& result,
   return write_tail(out, spec, result, nullptr);
 }
 
-std::string sweep_result_text(const SweepSpec& spec, const SweepResult& result,
-                              const json& scene) {
+std::string sweep_result_text(const SweepSpec& spec, const SweepResult& result, const json& scene) {
   return whole_text(
       [&](const TextSink& sink) { return write_sweep_result_json(spec, result, sink, scene); });
 }
