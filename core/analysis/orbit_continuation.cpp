@@ -23,14 +23,14 @@ double parameter_unit(double p0, double span) {
   return std::copysign(std::min(std::abs(span), std::max(std::abs(p0), 1.0)), span);
 }
 
-// The largest half-range of a pellet's angle over a return of the motion: its state x on the
+// The largest half-range of a pellet's angle over a return of the motion: its state on the
 // section and its events (rad).
-double half_swing(const std::vector<Event>& events, const Vec& x) {
+double half_swing(const PeriodicOrbit& motion) {
   double swing = 0.0;
-  for (Eigen::Index i = 0; 2 * i < x.size(); ++i) {
-    double lo = x[2 * i], hi = x[2 * i];
-    for (const Event& e : events)
-      if (!e.pellets.empty() && e.pellets[0] == i)
+  for (std::size_t i = 0; i < motion.state.size(); ++i) {
+    double lo = motion.state[i].phi, hi = lo;
+    for (const Event& e : motion.events)
+      if (!e.pellets.empty() && e.pellets[0] == static_cast<int>(i))
         lo = std::min(lo, e.phi), hi = std::max(hi, e.phi);
     swing = std::max(swing, 0.5 * (hi - lo));
   }
@@ -47,10 +47,7 @@ double half_swing(const std::vector<Event>& events, const Vec& x) {
 // grazing (kNearGrazing of the unit) is then a gap below 2 % of the half-swing, as 1e-3 rad is at
 // 0.05 rad: a larger share counts the moderately slow impacts of a motion at a fold as a grazing's.
 double state_unit(const PeriodicOrbit& start) {
-  Vec x(2 * start.state.size());
-  for (std::size_t i = 0; i < start.state.size(); ++i)
-    x.segment(2 * i, 2) << start.state[i].phi, start.state[i].dphi;
-  return std::clamp(20.0 * half_swing(start.events, x), 1e-3, 1.0);
+  return std::clamp(20.0 * half_swing(start), 1e-3, 1.0);
 }
 
 // The continuation works in scaled unknowns v = (x with speeds times sqrt(R/g), over the state's
@@ -70,7 +67,7 @@ class ScaledMap {
         p0_(p0),
         unit_(unit),
         time_(time_scale(model)),
-        size_(state_unit),
+        state_unit_(state_unit),
         cancel_(cancel) {}
 
   // A point on or near the branch: the map there, its residual and Jacobian in scaled unknowns.
@@ -88,16 +85,16 @@ class ScaledMap {
   int periods() const { return periods_; }
   double phase() const { return phase_; }
   double value(const Vec& v) const { return p0_ + unit_ * v[size()]; }
-  double state_unit() const { return size_; }
+  double state_unit() const { return state_unit_; }
   Vec scaled(const Vec& x, double p) const {
     Vec v(size() + 1);
-    for (int k = 0; k < size(); ++k) v[k] = x[k] * (k % 2 ? time_ : 1.0) / size_;
+    for (int k = 0; k < size(); ++k) v[k] = x[k] * (k % 2 ? time_ : 1.0) / state_unit_;
     v[size()] = (p - p0_) / unit_;
     return v;
   }
   Vec state(const Vec& v) const {
     Vec x(size());
-    for (int k = 0; k < size(); ++k) x[k] = v[k] * size_ / (k % 2 ? time_ : 1.0);
+    for (int k = 0; k < size(); ++k) x[k] = v[k] * state_unit_ / (k % 2 ? time_ : 1.0);
     return x;
   }
   // The model at parameter value p.
@@ -124,8 +121,8 @@ class ScaledMap {
     if (!pt.map.ok) return pt;
     const int n = size();
     const Vec r = orbit_residual(pt.map);
-    Mat D = Mat::Identity(n, n) / size_;
-    for (int k = 1; k < n; k += 2) D(k, k) = time_ / size_;
+    Mat D = Mat::Identity(n, n) / state_unit_;
+    for (int k = 1; k < n; k += 2) D(k, k) = time_ / state_unit_;
     pt.residual = D * r;
     pt.J.resize(n, n + 1);
     pt.J.leftCols(n) = D * (pt.map.jacobian - Mat::Identity(n, n)) * D.inverse();
@@ -176,7 +173,7 @@ class ScaledMap {
   const SimOptions& options_;
   int periods_;
   std::string parameter_;
-  double p0_, unit_, time_, size_;   // size_: the state's unit (state_unit)
+  double p0_, unit_, time_, state_unit_;
   const std::atomic<bool>* cancel_;  // once set, every point is not ok: the walk ends soon
   double phase_ = 0.0;
   std::vector<bool> armed_ = armed_at_start(model_);  // the mobile limiters' at the phase
