@@ -27,12 +27,11 @@ std::string_view method_name(Method m) {
 
 AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice) {
   if (choice != AutoExplicit::by_tolerance) return choice;
-  if (rtol > 5e-7) return AutoExplicit::dopri5;
-  return rtol > kAutoTaylorRtol ? AutoExplicit::dop853 : AutoExplicit::taylor;
+  return rtol > kAutoTaylorRtol ? AutoExplicit::dopri5 : AutoExplicit::taylor;
 }
 
 bool auto_weighs_explicit(double rtol, AutoExplicit choice) {
-  return choice == AutoExplicit::by_tolerance && rtol > 5e-7 && rtol <= 5e-6;
+  return choice == AutoExplicit::by_tolerance && rtol > kAutoTaylorRtol && rtol <= 5e-6;
 }
 
 std::unique_ptr<Stepper> make_stepper(Method method, const StepperOptions& options) {

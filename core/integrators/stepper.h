@@ -23,28 +23,31 @@ std::string_view method_name(Method m);
 // jets (OdeSystem::has_taylor_coefficients).
 enum class AutoExplicit { by_tolerance, dopri5, dop853, taylor };
 
-// The explicit method `auto` starts with: the one `choice` names; by tolerance, DOPRI5 at rtol
-// 1e-6 and looser, DOP853 from 5e-7 down to above kAutoTaylorRtol, Taylor from there down.
+// The explicit method `auto` starts with: the one `choice` names; by tolerance, DOPRI5 above
+// kAutoTaylorRtol (weighed against DOP853 from 5e-6 down: auto_weighs_explicit), Taylor from there
+// down.
 AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice = AutoExplicit::by_tolerance);
 
 // From this rtol down `auto` runs the Taylor method where the system has jets (DOP853 probing
-// for stiffness, core/integrators/auto_switch.h): the tightest tolerance at which Taylor costs
-// more than DOP853 on some preset is above it. Measured by the instructions of whole runs
+// for stiffness, core/integrators/auto_switch.h): at and below it Taylor costs less than DOP853
+// and DOPRI5 on every non-stiff preset. Measured by the instructions of whole runs
 // (deterministic, unlike times on the shared machine; `bench/auto_cost.sh`, atol = rtol/100, the
-// check off) on the eleven non-stiff presets, Taylor against DOP853: at rtol 1e-8 0.52
-// (rest-in-cone) to 0.99 (loop), at 1e-10 0.52 to 0.87 (grazing), at 1e-12 0.40 to 0.80
-// (mass-ratio); at 1e-7 up to 1.11 (loop, its steps held by its events). (Grazing at 1e-7 and
-// 1e-9 is left out: DOP853 lists 2 of its 7 events there.) A weighing by cost over stretches, as
-// between DOPRI5 and DOP853, chose DOP853 on the paper scene at 1e-9, where Taylor is the cheaper
-// over the whole run: its cost per unit of time over its first, event-dense 0.53 s was 1.6 times
-// DOP853's over the next 0.63 s.
-inline constexpr double kAutoTaylorRtol = 1e-8;
+// check off) on the eleven non-stiff presets, Taylor against the cheaper of DOP853 and DOPRI5:
+// at rtol 1e-7 0.35 (rest-in-cone) to 0.67 (loop), at 1e-8 0.34 to 0.59 (the same), at 1e-10
+// 0.30 (impact-oscillator) to 0.52 (mass-ratio), at 1e-12 0.23 to 0.47 (the same). (Grazing at
+// 1e-7 and 1e-9 is left out: DOP853 lists 2 of its 7 events there.) Above it `auto` weighs DOPRI5
+// against DOP853 over stretches of the run, where Taylor measured 0.38 (rest-in-cone) to 0.78
+// (loop) of the cheaper at 1e-6 and up to 1.29 (loop) at 1e-3; the same kind of weighing chose
+// DOP853 on the paper scene at 1e-9, where Taylor is the cheaper over the whole run (its cost per
+// unit of time over its first, event-dense 0.53 s was 1.6 times DOP853's over the next 0.63 s).
+inline constexpr double kAutoTaylorRtol = 5e-7;
 
 // True where `auto` weighs DOPRI5 against DOP853 by their cost on the problem
-// (core/integrators/auto_switch.h): rtol from 5e-6 to 5e-7 with the method left to it, where
-// each is the cheaper on some preset (at 1e-6 DOPRI5 by 1.27× on high-frequency, DOP853 by
-// 1.18× on plastic-limiter). From 5e-7 down DOP853 is the cheaper on every preset (at 1e-9 the
-// faster everywhere but mass-ratio, by 1.13×; docs/PERFORMANCE.md); above 5e-6 DOPRI5 is
+// (core/integrators/auto_switch.h): rtol from 5e-6 down to above kAutoTaylorRtol with the method
+// left to it, where each is the cheaper on some preset (at 1e-6 DOPRI5 by 1.27× on
+// high-frequency, DOP853 by 1.18× on plastic-limiter). Below, DOP853 is the cheaper on every
+// preset (at 1e-9 the faster everywhere but mass-ratio, by 1.13×; docs/PERFORMANCE.md), and
+// Taylor cheaper still (kAutoTaylorRtol); above 5e-6 DOPRI5 is
 // (Hairer's advice; the paper scene at rtol 1e-4: 0.32 ms against DOP853's 0.39 ms), and a
 // trial of DOP853 there, measured over a stretch of another phase of the motion, chose it.
 bool auto_weighs_explicit(double rtol, AutoExplicit choice);

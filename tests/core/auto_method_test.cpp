@@ -50,9 +50,9 @@ double explicit_work(const RunResult& run) {
              static_cast<double>(run.stats.steps + run.stats.rejected);
 }
 
-// No trial of RADAU5 on the non-stiff presets. From rtol 5e-7 down to above kAutoTaylorRtol
-// `auto` is DOP853 step for step, from there down Taylor step for step (no probe for stiffness);
-// above, it weighs DOPRI5 against DOP853 and is about as cheap as the cheaper of the two.
+// No trial of RADAU5 on the non-stiff presets. From kAutoTaylorRtol down `auto` is Taylor step
+// for step (no probe for stiffness); above, it weighs DOPRI5 against DOP853 and is about as cheap
+// as the cheaper of the two.
 TEST(AutoMethod, StaysExplicitOnTheNonStiffPresets) {
   for (const char* name : {"paper", "chatter", "frictionless-elastic", "grazing", "high-frequency",
                            "impact-oscillator", "loop", "mass-ratio", "plastic-limiter",
