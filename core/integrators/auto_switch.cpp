@@ -235,16 +235,20 @@ void AutoSwitch::after_implicit_step() {
 }
 
 StepStatus AutoSwitch::step(double t_limit) {
+  return step_landing(t_limit, std::numeric_limits<double>::infinity());
+}
+
+StepStatus AutoSwitch::step_landing(double t_limit, double t_land) {
   if (weighs_explicit_ && !pending_ && active_ != Kind::radau5) weigh_explicit();
   if (taylor_home_ && !pending_ && active_ != Kind::radau5) probe_stiffness();
   if (pending_) switch_method();
-  StepStatus status = active().step(t_limit);
+  StepStatus status = active().step_landing(t_limit, t_land);
   if (status != StepStatus::ok && probing_ && active_ == Kind::dop853) {
     // A probe that DOP853 cannot step is no verdict on stiffness: Taylor, which may follow
     // where DOP853's step underflows, takes the step from the last one accepted.
     end_probe();
     switch_method();
-    status = active().step(t_limit);
+    status = active().step_landing(t_limit, t_land);
   }
   if (status != StepStatus::ok) return status;
   ++steps_;

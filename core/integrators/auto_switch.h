@@ -84,6 +84,7 @@ class AutoSwitch final : public Stepper {
   void start(const OdeSystem& sys, double t0, const Vec& y0) override;
   void continue_smoothly(const OdeSystem& sys, double t0, const Vec& y0) override;
   StepStatus step(double t_limit) override;
+  StepStatus step_landing(double t_limit, double t_land) override;
   double t_prev() const override { return active().t_prev(); }
   double t() const override { return active().t(); }
   const Vec& y() const override { return active().y(); }

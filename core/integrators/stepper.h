@@ -3,6 +3,7 @@
 // dense output for events and restarts the stepper after each event.
 #pragma once
 
+#include <algorithm>
 #include <limits>
 #include <memory>
 #include <string_view>
@@ -102,6 +103,12 @@ class Stepper : public StepView {
   // Takes one accepted step, never beyond t_limit (> t()). Rejected attempts are retried inside.
   // On anything but ok, t() and y() are left at the last accepted point.
   virtual StepStatus step(double t_limit) = 0;
+  // Takes one step as step(t_limit) does, landing on t_land (> t()) too unless the step is a
+  // polynomial (StepView::polynomials), whose dense output at t_land is as exact as its end: a
+  // caller then reads the state there from dense() (a stroboscopic section's stops).
+  virtual StepStatus step_landing(double t_limit, double t_land) {
+    return step(std::min(t_limit, t_land));
+  }
 
   // y() is the state at t(), the end of the last accepted step [t_prev(), t()] (StepView).
   virtual const Vec& y() const = 0;

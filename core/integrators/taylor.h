@@ -34,6 +34,8 @@ class Taylor final : public Stepper {
     start(sys, t0, y0);
   }
   StepStatus step(double t_limit) override;
+  // A Taylor step is its polynomial: it passes t_land.
+  StepStatus step_landing(double t_limit, double /*t_land*/) override { return step(t_limit); }
   const Vec& y() const override { return y_; }
   double t_prev() const override { return t_prev_; }
   double t() const override { return t_; }

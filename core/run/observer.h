@@ -70,15 +70,18 @@ class RunObserver {
   virtual void on_instant(const InstantView& /*instant*/) {}
   // A motion interval opens at t from y.
   virtual void on_interval(double /*t*/, const Vec& /*y*/, const MotionInterval& /*interval*/) {}
-  // A time steps must land on (> the current time), or infinity.
+  // A time steps must land on (> the current time), or infinity. A polynomial step
+  // (StepView::polynomials) passes it instead, its state there as exact as at its end: the
+  // driver then settles that state (on_settled) before the step's end.
   virtual double landing() const { return std::numeric_limits<double>::infinity(); }
   // Each accepted step, before its end (see StepSamples): cheap unless it asks for dense output.
   virtual void on_step(const StepSamples& /*step*/) {}
   // The state y at a step's end t, or at its first event (`at_event`), in the interval.
   virtual void on_step_end(double /*t*/, const Vec& /*y*/, const MotionInterval& /*interval*/,
                            bool /*at_event*/) {}
-  // The state at t is settled with these bodies: the start, a step's end without an event, after
-  // an instant, and a rest to the end.
+  // The state at t is settled with these bodies: the start, a step's end without an event, a
+  // landing a polynomial step passed before its first event, after an instant, and a rest to
+  // the end.
   virtual void on_settled(double /*t*/, const Vec& /*y*/, const std::vector<Body>& /*bodies*/) {}
   // Whether the observer has what the run is for, so that the run ends at the state it has just
   // been told of (on_settled), before t_end: asked after each settled state.

@@ -36,7 +36,8 @@ class Recording : public RunObserver {
   Vec scratch_;
 };
 
-// The state at given times (RunResult::stops): a stroboscopic section whose times steps land on.
+// The state at given times (RunResult::stops): a stroboscopic section whose times steps land on,
+// or a polynomial step passes with the state there from its dense output (RunObserver::landing).
 // With a settle window (SimOptions::settle_window) it ends the run at the first stop where the
 // last `window` stops have settled (section_settled, core/run/section_period.h).
 class SectionStops : public RunObserver {

@@ -6,6 +6,7 @@
 #include <sstream>
 
 #include "core/events/brent_root.h"
+#include "core/integrators/series.h"
 #include "core/model/dynamics.h"
 
 namespace vibro {
@@ -150,10 +151,20 @@ void Recorder::check_normal_force(double t, const Vec& y, const std::vector<Body
 
 double Recorder::sign_change(const StepView& step, int leader, double lo, double hi,
                              bool to_negative) {
-  // Positive before the change, at or below zero after it.
+  // Positive before the change, at or below zero after it. A polynomial step's dense output is
+  // its polynomials: the leader's two are evaluated alone, by the same sums as dense().
+  const StepPolynomials* p = step.polynomials();
   auto f = [&](double s) {
-    step.dense(s, dense_);
-    const double n = normal_per_mass(model_, dense_[phi_index(leader)], dense_[dphi_index(leader)]);
+    double phi, dphi;
+    if (p) {
+      phi = integrators::horner(p->component(phi_index(leader)), s - p->t0);
+      dphi = integrators::horner(p->component(dphi_index(leader)), s - p->t0);
+    } else {
+      step.dense(s, dense_);
+      phi = dense_[phi_index(leader)];
+      dphi = dense_[dphi_index(leader)];
+    }
+    const double n = normal_per_mass(model_, phi, dphi);
     return to_negative ? n : -n;
   };
   const double f_lo = f(lo), f_hi = f(hi);

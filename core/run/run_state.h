@@ -5,6 +5,7 @@
 
 #include <algorithm>
 #include <chrono>
+#include <limits>
 #include <optional>
 #include <span>
 #include <string>
@@ -33,10 +34,15 @@ class RunState {
   // stepper failed, with t at its last accepted point.
   // Inline, as settled(): the driver calls both at every step.
   bool take_step(double& t) {
-    double limit = opt_.t_end;
-    for (const RunObserver* o : landing_) limit = std::min(limit, o->landing());
-    const StepStatus status = stepper_.step(limit);
+    land_ = next_landing();
+    const StepStatus status = stepper_.step_landing(opt_.t_end, land_);
     return status == StepStatus::ok || step_failed(t, status);
+  }
+  // The earliest time an observer asks steps to land on, or infinity.
+  double next_landing() const {
+    double land = std::numeric_limits<double>::infinity();
+    for (const RunObserver* o : landing_) land = std::min(land, o->landing());
+    return land;
   }
   // The state y_ at t is settled with these bodies (tells the observers).
   void settled(double t, const std::vector<Body>& bodies) {
@@ -75,6 +81,7 @@ class RunState {
   bool stopped_ = false;
   bool ended_ = false;   // an observer ended the run at its last settled state (ends_run)
   bool smooth_ = false;  // the last instant was one of reversals alone
+  double land_ = 0.0;    // the landing asked of the last step (next_landing)
 
  private:
   Stats stats_;

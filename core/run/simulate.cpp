@@ -33,6 +33,10 @@ class Simulation : RunState {
   void open_interval(double t);
   // Integrates the open interval until its first event (true) or t_end or a stop (false).
   bool integrate_to_event(double& t, std::vector<Crossing>& found);
+  // Settles the landings the last step passed before t (a polynomial step's,
+  // Stepper::step_landing), each from its dense output; true, with t the landing, where an
+  // observer ended the run at one.
+  bool settle_passed_landings(double& t);
   // The step's first crossings, searched on its dense output (first: its first sample searched).
   std::vector<Crossing> search_step(double a, double b, int& first);
 
@@ -89,6 +93,20 @@ std::vector<Crossing> Simulation::search_step(double a, double b, int& first) {
                       std::span<const Vec>(states_).subspan(first), tol_.simultaneous(b));
 }
 
+bool Simulation::settle_passed_landings(double& t) {
+  for (double land = land_; land < t; land = next_landing()) {
+    stepper_.dense(land, y_);
+    settled(land, interval_->bodies());
+    if (ended_) {  // the step ends here
+      t = land;
+      for (RunObserver* o : on_step_end_) o->on_step_end(t, y_, *interval_, false);
+      return true;
+    }
+    if (!(next_landing() > land)) break;  // an observer that does not move on
+  }
+  return false;
+}
+
 bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
   const MotionInterval& in = *interval_;
   while (!stopped_ && !ended_ && t < opt_.t_end) {
@@ -101,6 +119,7 @@ bool Simulation::integrate_to_event(double& t, std::vector<Crossing>& found) {
     const StepSamples step{a, b, y_, times_, states_, first, first_event, stepper_};
     for (RunObserver* o : on_step_) o->on_step(step);
     t = event ? found.front().t : b;
+    if (land_ < t && settle_passed_landings(t)) return false;
     if (event) {
       stepper_.dense(t, y_);
       polisher_.polish(in, found.front(), stepper_, a, b, t, y_);

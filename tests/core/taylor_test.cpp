@@ -14,6 +14,8 @@
 #include "core/analysis/periodic_orbit.h"
 #include "core/integrators/stepper.h"
 #include "core/model/dynamics.h"
+#include "core/run/observers.h"
+#include "core/run/simulate.h"
 #include "impact_oscillator.h"
 #include "scenes.h"
 
@@ -166,6 +168,58 @@ TEST(Taylor, TakesAtMostHalfDop853sStepsOnTheImpactOscillatorAtTightTolerance) {
     EXPECT_EQ(taylor.events[k].kind, dop853.events[k].kind) << "event " << k;
     EXPECT_NEAR(taylor.events[k].t, dop853.events[k].t, 1e-8) << "event " << k;
   }
+}
+
+// A Taylor stepper that lands on the stops as the Runge–Kutta methods do (Stepper's own
+// step_landing): the reference for stops read from the polynomial inside a step.
+class LandingTaylor final : public Stepper {
+ public:
+  explicit LandingTaylor(const StepperOptions& options) : taylor_(options) {}
+  std::string_view name() const override { return taylor_.name(); }
+  void start(const OdeSystem& sys, double t0, const Vec& y0) override {
+    taylor_.start(sys, t0, y0);
+  }
+  StepStatus step(double t_limit) override { return taylor_.step(t_limit); }
+  const Vec& y() const override { return taylor_.y(); }
+  double t_prev() const override { return taylor_.t_prev(); }
+  double t() const override { return taylor_.t(); }
+  void dense(double t, Vec& out) const override { taylor_.dense(t, out); }
+  const StepPolynomials* polynomials() const override { return taylor_.polynomials(); }
+  const StepperStats& stats() const override { return taylor_.stats(); }
+
+ private:
+  integrators::Taylor taylor_;
+};
+
+// A stroboscopic section's stops fall inside Taylor steps, whose polynomial gives the state there
+// as exactly as a step's end: the steps pass them. The stops agree with a run that lands on each
+// (whose steps before a stop are split to reach it evenly), with about a step fewer per stop.
+TEST(Taylor, StopsInsideAStepAreReadFromItsPolynomialInsteadOfLandedOn) {
+  const Model model = testing::impact_oscillator(7.0);
+  const double T = kTwoPi / 7.0;
+  SimOptions o;
+  o.t_end = 70.0 * T;
+  for (int k = 1; k <= 70; ++k) o.stops.push_back(k * T);
+  o.rtol = 1e-10;
+  o.atol = 1e-12;
+  o.check = false;
+  o.method = Method::taylor;
+  const RunResult passed = simulate(model, o);
+  LandingTaylor landing({o.rtol, o.atol});
+  StandardOutputs outputs(model, o);
+  const RunResult landed =
+      simulate(model, static_cast<const SolverOptions&>(o), landing, outputs.list());
+  ASSERT_EQ(passed.stops.size(), 70u);
+  ASSERT_EQ(landed.stops.size(), 70u);
+  for (std::size_t k = 0; k < passed.stops.size(); ++k) {
+    EXPECT_EQ(passed.stops[k].t, landed.stops[k].t);
+    EXPECT_NEAR(passed.stops[k].pellets[0].phi, landed.stops[k].pellets[0].phi, 1e-9) << k;
+    EXPECT_NEAR(passed.stops[k].pellets[0].dphi, landed.stops[k].pellets[0].dphi, 1e-8) << k;
+  }
+  EXPECT_EQ(passed.events.size(), landed.events.size());
+  // The last stop is t_end, where both land.
+  EXPECT_LE(passed.stats.steps + 60, landed.stats.steps)
+      << passed.stats.steps << " steps against " << landed.stats.steps;
 }
 
 // A pendulum that turns 1e-7 rad past a stop: the way to the stop falls through zero and rises
