@@ -222,6 +222,31 @@ TEST(Taylor, StopsInsideAStepAreReadFromItsPolynomialInsteadOfLandedOn) {
       << passed.stats.steps << " steps against " << landed.stats.steps;
 }
 
+// A free swing sampled every 5 ms: each Taylor step passes several stops, each settled in turn
+// from the step's polynomial; they agree with DOP853's, which lands on each.
+TEST(Taylor, ManyStopsInsideOneStepAreEachReadFromItsPolynomial) {
+  const Model model = testing::one_pellet(0.0, 1.0, 3.0);
+  SimOptions o;
+  o.t_end = 2.0;
+  for (int k = 1; k <= 400; ++k) o.stops.push_back(k * 0.005);
+  o.rtol = 1e-12;
+  o.atol = 1e-14;
+  o.check = false;
+  o.method = Method::taylor;
+  const RunResult taylor = simulate(model, o);
+  o.method = Method::dop853;
+  const RunResult dop853 = simulate(model, o);
+  ASSERT_EQ(taylor.stops.size(), 400u);
+  ASSERT_EQ(dop853.stops.size(), 400u);
+  for (std::size_t k = 0; k < taylor.stops.size(); ++k) {
+    EXPECT_EQ(taylor.stops[k].t, dop853.stops[k].t);
+    EXPECT_NEAR(taylor.stops[k].pellets[0].phi, dop853.stops[k].pellets[0].phi, 1e-10) << k;
+    EXPECT_NEAR(taylor.stops[k].pellets[0].dphi, dop853.stops[k].pellets[0].dphi, 1e-9) << k;
+  }
+  EXPECT_EQ(taylor.events.size(), dop853.events.size());
+  EXPECT_LT(4 * taylor.stats.steps, 400) << taylor.stats.steps << " steps";
+}
+
 // A pendulum that turns 1e-7 rad past a stop: the way to the stop falls through zero and rises
 // again within 3e-4 s, inside one Taylor step of about 0.05 s. The strike is found, at the time
 // the energy gives.
