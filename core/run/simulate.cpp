@@ -94,7 +94,7 @@ std::vector<Crossing> Simulation::search_step(double a, double b, int& first) {
 }
 
 bool Simulation::settle_passed_landings(double& t) {
-  for (double land = land_; land < t; land = next_landing()) {
+  for (double land = land_; land < t;) {
     stepper_.dense(land, y_);
     settled(land, interval_->bodies());
     if (ended_) {  // the step ends here
@@ -102,7 +102,9 @@ bool Simulation::settle_passed_landings(double& t) {
       for (RunObserver* o : on_step_end_) o->on_step_end(t, y_, *interval_, false);
       return true;
     }
-    if (!(next_landing() > land)) break;  // an observer that does not move on
+    const double next = next_landing();
+    if (!(next > land)) break;  // an observer that does not move on
+    land = next;
   }
   return false;
 }
