@@ -149,6 +149,9 @@ SimOptions sweep_run_options(const SimOptions& options, const SweepSpec& spec, d
   const int first = first_stop(spec);
   o.keep_events_from = first * T;
   o.lyapunov = spec.lyapunov;
+  // The sweep reads impacts, sticks and section points, never a reversal; the exponents replay
+  // the path, which is kept as the run listed it.
+  o.frictionless_reversals = spec.lyapunov;
   if (spec.section == SectionKind::stroboscopic)
     for (int k = first; k <= spec.transient + spec.record; ++k) o.stops.push_back(k * T);
   if (first < spec.transient) o.settle_window = spec.record + 1;

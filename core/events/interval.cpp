@@ -16,8 +16,11 @@ bool any_forced(const Model& model, const Body& body) {
 MotionInterval::MotionInterval(const Model& model, std::vector<Body> bodies,
                                const std::vector<bool>& armed,
                                const std::vector<Neighbours>& neighbours, double t, const Vec& y,
-                               const EventTolerances& tol)
-    : model_(model), bodies_(std::move(bodies)), dynamics_(model, bodies_, y) {
+                               const EventTolerances& tol, bool pass_reversals)
+    : model_(model),
+      bodies_(std::move(bodies)),
+      dynamics_(model, bodies_, y),
+      pass_reversals_(pass_reversals) {
   open(armed, neighbours, t, y, tol);
 }
 
@@ -40,6 +43,7 @@ void MotionInterval::open(const std::vector<bool>& armed, const std::vector<Neig
   dydt_.resize(y.size());
   dynamics_.rhs(t, y, dydt_);
   deflate_reversals_from_rest(t, y, dydt_);
+  if (pass_reversals_) deflate_limiters_left(t, y, dydt_, radii.on_limiter);
   if (model_.friction != FrictionLaw::paper) add_normal_watches(t, y, dydt_);
   add_gap_watches(neighbours, t, y, dydt_, radii.contact, tol.v_eps);
 }
@@ -52,11 +56,10 @@ void MotionInterval::add_body_watches(int b, const std::vector<bool>& armed, con
   std::optional<FirstIntegral> fi;
   if (body.mode == Mode::sliding) {
     anything_moves_ = true;
-    watches_.push_back({WatchKind::reversal, b, L});
-    int lim;
-    double target;
-    if (next_limiter(model_, armed, body, y[phi_index(L)], body.s, radii.on_limiter, lim, target))
-      watches_.push_back({WatchKind::limiter, b, L, -1, lim, target});
+    const bool passes = passes_reversals(body);
+    if (!passes) watches_.push_back({WatchKind::reversal, b, L});
+    add_limiter_watch(b, armed, y, body.s, radii.on_limiter);
+    if (passes) add_limiter_watch(b, armed, y, -body.s, -radii.on_limiter);
     if (model_.friction == FrictionLaw::paper && !forced && body.members.size() == 1 &&
         model_.pellets[L].c == 0.0)
       fi.emplace(model_, body.s, y[phi_index(L)], y[dphi_index(L)]);
@@ -69,6 +72,39 @@ void MotionInterval::add_body_watches(int b, const std::vector<bool>& armed, con
     Watch w{WatchKind::separation, b, L};
     w.split = k;
     watches_.push_back(w);
+  }
+}
+
+void MotionInterval::add_limiter_watch(int b, const std::vector<bool>& armed, const Vec& y,
+                                       int side, double from) {
+  const int L = bodies_[b].leader();
+  int lim;
+  double target;
+  if (next_limiter(model_, armed, bodies_[b], y[phi_index(L)], side, from, lim, target))
+    watches_.push_back({WatchKind::limiter, b, L, -1, lim, target, side});
+}
+
+bool MotionInterval::passes_reversals(const Body& body) const {
+  return pass_reversals_ && body.mode == Mode::sliding && body.members.size() == 1 &&
+         model_.mu() == 0.0 && model_.mu_static() == 0.0;
+}
+
+void MotionInterval::align_directions(const Vec& y) {
+  for (Body& body : bodies_) {
+    if (!passes_reversals(body)) continue;
+    const double v = y[dphi_index(body.leader())];
+    if (v != 0.0) body.s = v > 0.0 ? 1 : -1;
+  }
+}
+
+void MotionInterval::deflate_limiters_left(double t, const Vec& y, const Vec& dydt,
+                                           double on_limiter) {
+  for (Watch& w : watches_) {
+    if (w.kind != WatchKind::limiter || w.side == bodies_[w.body].s ||
+        !(std::abs(w.target - y[phi_index(w.pellet)]) <= on_limiter))
+      continue;
+    deflate(w, model_, bodies_, t, y, -w.side * y[dphi_index(w.pellet)],
+            -w.side * dydt[dphi_index(w.pellet)]);
   }
 }
 

@@ -129,8 +129,8 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const PlaceR
   // Arriving at the angle it watched, it arrives at every limiter there (two at one angle).
   bool arriving = false;
   for (const Watch& w : interval.watches())
-    arriving = arriving ||
-               (w.kind == WatchKind::limiter && w.body == b && std::abs(w.target - phi) <= near);
+    arriving = arriving || (w.kind == WatchKind::limiter && w.body == b && w.side == body.s &&
+                            std::abs(w.target - phi) <= near);
   for (int l = 0; l < limiter_count(model); ++l) {
     if (!on_limiter_angle(model.limiters[l].angle, phi, near)) continue;
     int side = arriving ? -body.s : body.s;
@@ -148,7 +148,7 @@ void touch_on_angle(const Model& model, const EventTolerances& tol, const PlaceR
 
 // A body arriving at a limiter: all its members shift by the leader's distance to the limiter's
 // angle (they move as one), the leader lands on the angle exactly, and the member nearest the
-// limiter touches it from the side the body came from (−s).
+// limiter touches it from the side the body came from (the watch's −side).
 void snap_onto_limiter(const Model& model, const Watch& w, const Body& body, Vec& y,
                        std::vector<bool>& at_limiter, InstantContacts& c) {
   const double shift = w.target - y[phi_index(w.pellet)];
@@ -157,8 +157,8 @@ void snap_onto_limiter(const Model& model, const Watch& w, const Body& body, Vec
     at_limiter[i] = true;
   }
   y[phi_index(w.pellet)] = w.target;
-  const int held = held_member(model, body, w.limiter, -body.s);
-  if (held >= 0) c.limiters.push_back({held, w.limiter, -body.s});
+  const int held = held_member(model, body, w.limiter, -w.side);
+  if (held >= 0) c.limiters.push_back({held, w.limiter, -w.side});
 }
 
 // Two neighbours meeting: onto one place, `target` (their winding offset) apart in unwrapped

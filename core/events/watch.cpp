@@ -66,7 +66,7 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
     case WatchKind::reversal:
       return bodies[w.body].s * y[dphi_index(w.pellet)];
     case WatchKind::limiter:
-      return bodies[w.body].s * (w.target - y[phi_index(w.pellet)]);
+      return w.side * (w.target - y[phi_index(w.pellet)]);
     case WatchKind::gap:
       return y[phi_index(w.other)] - y[phi_index(w.pellet)] + w.target;
     case WatchKind::release: {
@@ -133,9 +133,8 @@ Closing closing(const Watch& w, const Model& model, const SlidingLaw& law,
                       acceleration_of(model, law, body_of(bodies, w.pellet), t, y);
       break;
     case WatchKind::limiter:
-      c.rate = -bodies[w.body].s * y[dphi_index(w.pellet)];
-      if (with_curvature)
-        c.curvature = -bodies[w.body].s * acceleration_of(model, law, bodies[w.body], t, y);
+      c.rate = -w.side * y[dphi_index(w.pellet)];
+      if (with_curvature) c.curvature = -w.side * acceleration_of(model, law, bodies[w.body], t, y);
       break;
     case WatchKind::reversal:
       c.rate = bodies[w.body].s * acceleration_of(model, law, bodies[w.body], t, y);
@@ -235,9 +234,9 @@ bool on_limiter_angle(double theta, double phi, double near) {
 }
 
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body, double phi,
-                  int s, double near, int& limiter, double& target) {
-  // A limiter the body sits on, within round-off, is behind it: any impact on it was resolved at
-  // the instant the body got there.
+                  int s, double from, int& limiter, double& target) {
+  // A limiter the body sits on, within round-off (from = near), is behind it: any impact on it
+  // was resolved at the instant the body got there.
   bool found = false;
   for (int l = 0; l < static_cast<int>(model.limiters.size()); ++l) {
     if (!armed[l]) continue;
@@ -247,8 +246,7 @@ bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body
     double x =
         s > 0 ? std::numeric_limits<double>::infinity() : -std::numeric_limits<double>::infinity();
     for_each_limiter_angle(model.limiters[l].angle, phi, [&](double c) {
-      const bool ahead = s > 0 ? c > phi : c < phi;
-      if (ahead && !(std::abs(c - phi) <= near) && (s > 0 ? c < x : c > x)) x = c;
+      if (s * (c - phi) > from && (s > 0 ? c < x : c > x)) x = c;
     });
     if (!found || (s > 0 ? x < target : x > target)) {
       found = true;
@@ -264,7 +262,7 @@ std::optional<LinearForm> linear_form(const Watch& w, const std::vector<Body>& b
     case WatchKind::reversal:
       return LinearForm{1, {dphi_index(w.pellet), 0}, {double(bodies[w.body].s), 0.0}, 0.0};
     case WatchKind::limiter: {
-      const double s = bodies[w.body].s;
+      const double s = w.side;
       return LinearForm{1, {phi_index(w.pellet), 0}, {-s, 0.0}, s * w.target};
     }
     case WatchKind::gap:

@@ -16,7 +16,9 @@ namespace vibro {
 
 enum class WatchKind {
   reversal,    // s·dphi of a sliding body
-  limiter,     // s·(target − phi): the next armed limiter angle ahead of a sliding body
+  limiter,     // side·(target − phi): the next armed limiter angle on one side of a sliding
+               // body (side = s: ahead of it; a body that passes its reversals also watches the
+               // one behind it, side = −s)
   gap,         // distance from one body's leading pellet to the next body's trailing pellet
   release,     // static capacity − |free acceleration| of a stuck body (or, resting: pull away)
   separation,  // sliding: compression between two parts; held: the margin before a part is
@@ -32,6 +34,7 @@ struct Watch {
   int other = -1;       // gap: the pellet ahead
   int limiter = -1;     // limiter: the limiter hit
   double target = 0.0;  // limiter: angle to reach; gap: the constant winding offset; normal: ±1
+  int side = 0;         // limiter: +1 for an angle above phi, −1 below it
   int split = 0;        // separation: members [0, split) behind, [split, n) ahead
   // A watch that starts on its own root (two pellets that just collided touch) is watched
   // deflated: order 1, (g(t) − g(t0)) / (t − t0), which starts at g'(t0) > 0 when they part;
@@ -107,9 +110,10 @@ void deflate(Watch& w, const Model& model, const std::vector<Body>& bodies, doub
 bool on_limiter_angle(double theta, double phi, double near);
 
 // The next armed limiter angle ahead of phi in direction s that acts on any of the body's
-// members, farther than near (rad); returns false if there is none.
+// members, farther than `from` (rad) that way: s·(angle − phi) > from; returns false if there
+// is none. With from = near it skips a limiter the body touches; with from = −near it finds it.
 bool next_limiter(const Model& model, const std::vector<bool>& armed, const Body& body, double phi,
-                  int s, double near, int& limiter, double& target);
+                  int s, double from, int& limiter, double& target);
 
 // A root of one watch inside a step.
 struct Crossing {

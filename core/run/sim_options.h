@@ -39,6 +39,12 @@ struct SolverOptions {
   // Events before this time are a transient (a sweep's): they count in no limit, and the event
   // log, the path and the Lyapunov exponents start after it.
   double keep_events_from = -std::numeric_limits<double>::infinity();
+  // Whether a frictionless sliding body of one pellet (no kinetic nor static friction) has its
+  // reversals as events. Its speed's zero changes no equation, so a run that reads no reversal
+  // (a sweep's) passes them: the body watches the limiters on both sides of it instead of its
+  // reversal and the limiter ahead, its steps are not cut there, and the run's events, path
+  // and step counts have none of them (core/events/interval.h).
+  bool frictionless_reversals = true;
 };
 
 // A scene's run: how to solve it, and what the convenience entry (core/analysis/checked_run.h)

@@ -65,7 +65,8 @@ void Simulation::open_interval(double t) {
   if (interval_)
     interval_->reopen(instant_.outcome.bodies, armed_, neighbours_, t, y_, tol_);
   else
-    interval_.emplace(model_, std::move(instant_.outcome.bodies), armed_, neighbours_, t, y_, tol_);
+    interval_.emplace(model_, std::move(instant_.outcome.bodies), armed_, neighbours_, t, y_, tol_,
+                      !opt_.frictionless_reversals);
   if (smooth_)
     stepper_.continue_smoothly(interval_->dynamics(), t, y_);
   else
@@ -159,6 +160,7 @@ RunResult Simulation::run() {
       break;
     }
     if (!integrate_to_event(t, found) || !advances(t)) break;
+    interval_->align_directions(y_);
     unsnapped_ = y_;
     snap(model_, tol_, *interval_, found, neighbours_, armed_, y_, instant_);
     instant(t, interval_->bodies(), instant_.contacts, &unsnapped_);

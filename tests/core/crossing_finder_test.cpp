@@ -81,8 +81,8 @@ struct Finder {
     return m;
   }();
   std::vector<Body> bodies = {Body{.members = {0}, .s = 1}};
-  std::vector<Watch> watches = {
-      Watch{.kind = WatchKind::limiter, .body = 0, .pellet = 0, .limiter = 0, .target = 0.0}};
+  std::vector<Watch> watches = {Watch{
+      .kind = WatchKind::limiter, .body = 0, .pellet = 0, .limiter = 0, .target = 0.0, .side = 1}};
   CrossingFinder finder;
 
   // Starts at the step's start and searches it at `inside` evenly spaced samples and its end.

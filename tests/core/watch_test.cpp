@@ -29,7 +29,12 @@ TEST(Watch, TheLinearFormOfAWatchOfTheMotionIsItsValue) {
   const std::vector<Body> bodies = {Body{.members = {0}, .s = -1}, Body{.members = {1}, .s = 1}};
   const std::vector<Watch> watches = {
       Watch{.kind = WatchKind::reversal, .body = 0, .pellet = 0},
-      Watch{.kind = WatchKind::limiter, .body = 0, .pellet = 0, .limiter = 1, .target = -2.0},
+      Watch{.kind = WatchKind::limiter,
+            .body = 0,
+            .pellet = 0,
+            .limiter = 1,
+            .target = -2.0,
+            .side = -1},
       Watch{.kind = WatchKind::gap, .pellet = 0, .other = 1, .target = 0.25}};
   const Vec y = state(0.3, -1.5, 0.9, 2.5);
   for (const Watch& w : watches) {
@@ -47,7 +52,7 @@ TEST(Watch, TheRatesOfAWatchOfTheMotionComeFromTheState) {
   const SlidingLaw law(model);
   const std::vector<Body> bodies = {Body{.members = {0}, .s = 1}, Body{.members = {1}, .s = 1}};
   const Vec y = state(0.3, 1.5, 0.9, 2.5);
-  const Watch limiter{.kind = WatchKind::limiter, .body = 0, .pellet = 0, .target = 1.0};
+  const Watch limiter{.kind = WatchKind::limiter, .body = 0, .pellet = 0, .target = 1.0, .side = 1};
   const Closing c = closing(limiter, model, law, bodies, 0.0, y);
   EXPECT_DOUBLE_EQ(c.value, 0.7);
   EXPECT_EQ(c.rate, -1.5);
