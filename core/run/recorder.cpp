@@ -8,6 +8,7 @@
 #include "core/events/brent_root.h"
 #include "core/integrators/series.h"
 #include "core/model/dynamics.h"
+#include "core/run/negative_normal.h"
 
 namespace vibro {
 namespace {
@@ -23,6 +24,7 @@ Recorder::Recorder(const Model& model, const std::vector<bool>& record, double r
       record_until_(record_until),
       max_samples_(max_samples),
       negative_since_(model.size(), kNone),
+      near_top_(model.size(), false),
       stretch_length_(model.size(), 0.0),
       warning_of_(model.size(), -1),
       stretches_(model.size(), 0) {
@@ -127,8 +129,15 @@ void Recorder::check_normal_force(double t, const Vec& y, const std::vector<Body
   for (const Body& b : bodies) {
     const int leader = b.leader();
     const bool sliding = b.mode == Mode::sliding;
-    const bool negative =
-        sliding && normal_per_mass(model_, y[phi_index(leader)], y[dphi_index(leader)]) < 0.0;
+    const double cos_phi = std::cos(y[phi_index(leader)]);
+    const double dphi = y[dphi_index(leader)];
+    const bool near_top_now = cos_phi < 0.0 && model_.R * dphi * dphi < 2.0 * model_.g;
+    const bool near_top = near_top_now || near_top_[leader];
+    near_top_[leader] = near_top_now;
+    const bool negative = sliding && model_.g * cos_phi + model_.R * dphi * dphi < 0.0;
+    // Positive at both ends, it may still have dipped below zero between them.
+    if (step && sliding && !negative && std::isnan(negative_since_[leader]))
+      find_negative_inside(*step, b, t, cos_phi, near_top);
     // After each checked point a member's window is open just where its body's N is negative.
     // A body keeps its mode and members through an interval, whose start is checked: at a step's
     // end a member that differs saw N change sign since the step's start, the last checked point.
@@ -146,6 +155,21 @@ void Recorder::check_normal_force(double t, const Vec& y, const std::vector<Body
       else
         close_warning(i, at);
     }
+  }
+}
+
+void Recorder::find_negative_inside(const StepView& step, const Body& body, double t,
+                                    double cos_at_t, bool near_top) {
+  const int leader = body.leader();
+  const std::optional<NegativeStretch> in =
+      negative_normal_inside(model_, step, leader, t, cos_at_t, near_top);
+  if (!in) return;
+  dense_.resize(static_cast<std::size_t>(3 * model_.size()));
+  const double begin = sign_change(step, leader, in->begin_lo, in->begin_hi, true);
+  const double end = sign_change(step, leader, in->end_lo, in->end_hi, false);
+  for (int i : body.members) {
+    negative_since_[i] = begin;
+    close_warning(i, end);
   }
 }
 

@@ -49,6 +49,11 @@ class Recorder {
   // Where the normal force of the body led by `leader` changes sign in [lo, hi] on the step's
   // dense output: becomes negative (`to_negative`) or stops being so.
   double sign_change(const StepView& step, int leader, double lo, double hi, bool to_negative);
+  // A negative stretch of the body's N inside the step just taken to t, where N is positive at
+  // both its ends (core/run/negative_normal.h), opened and closed as one; cos_at_t: cos φ of its
+  // leader at t; near_top: the leader was near the circle's top at either end.
+  void find_negative_inside(const StepView& step, const Body& body, double t, double cos_at_t,
+                            bool near_top);
   void keep(PelletTrack& track, const Sample& s);
   void flush_pending(int track);
   // Drops every other sample of every branch, keeping its ends; doubles the stride.
@@ -74,6 +79,9 @@ class Recorder {
   // A stretch that starts sooner after the last one than that one lasted is the same approach
   // (chatter toward a stop repeats them ever faster): it extends the warning, not a new one.
   std::vector<double> negative_since_;
+  // Per pellet: near the circle's top at the last checked point, in its upper half (cos φ < 0)
+  // slower than sqrt(2g/R).
+  std::vector<bool> near_top_;
   std::vector<double> stretch_length_;
   std::vector<int> warning_of_;
   std::vector<int> stretches_;
