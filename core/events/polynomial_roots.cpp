@@ -5,6 +5,7 @@
 #include <cmath>
 #include <limits>
 
+#include "core/events/narrow_bracket.h"
 #include "core/integrators/series.h"
 
 namespace vibro {
@@ -23,54 +24,13 @@ constexpr Coefficients kIndex = [] {
 // Round-off of a time τ in [0, h].
 double time_round_off(double h) { return 4.0 * std::numeric_limits<double>::epsilon() * h; }
 
-// The factor by which the Anderson–Björck method scales the value kept at one end of a bracket
-// when the other end moves twice in a row, from that end's value before (f_old) and after (f_new)
-// the move: 1 − f_new/f_old, or the Illinois method's ½ where that is not positive.
-double anderson_bjorck(double f_new, double f_old) {
-  const double m = 1.0 - f_new / f_old;
-  return m > 0.0 ? m : 0.5;
-}
-
-// Narrows [lo, hi], p(lo) > 0 >= p(hi) (or the reverse when `falling` is false), to round-off:
-// p is monotone there, so each cut keeps the one sign change. The cut is the secant of the
-// Anderson–Björck method (the kept end's value scaled down when the same end is kept twice), and
-// every fourth cut a bisection unless the bracket has narrowed to an eighth of its width since
-// the fourth cut before (or the start): some six cuts instead of bisection's fifty, and never
-// fewer halvings than a quarter of bisection's. A secant that falls within half the round-off of an
-// end says that end is within round-off of the root: the cut goes half the round-off past it, which
-// brackets the root to round-off at once where it is right (a bisection there would leave the far
-// end to be halved down to round-off, some forty cuts).
+// Narrows [lo, hi], p(lo) > 0 >= p(hi) (or the reverse when `falling` is false), to round-off
+// (narrow_bracket): some six cuts instead of bisection's fifty.
 PolynomialBracket bisect(std::span<const double> c, PolynomialBracket b, bool falling) {
-  double f_lo = b.p_lo, f_hi = b.p_hi;  // the secant's values, scaled by anderson_bjorck
-  int kept = 0;                         // the end kept by the last cut: −1 lo, +1 hi
-  double width = b.hi - b.lo;           // the bracket's width at the last fourth cut
-  for (int k = 0; k < 200 && b.hi - b.lo > time_round_off(b.hi); ++k) {
-    const double least = 0.5 * time_round_off(b.hi);  // a cut's least distance from an end
-    double x = b.lo - f_lo * (b.hi - b.lo) / (f_hi - f_lo);
-    if (k % 4 == 3) {
-      if (b.hi - b.lo > 0.125 * width) x = 0.5 * (b.lo + b.hi);
-      width = b.hi - b.lo;
-    }
-    if (!(x > b.lo + least))
-      x = b.lo + least;
-    else if (!(x < b.hi - least))
-      x = b.hi - least;
-    if (!(x > b.lo && x < b.hi)) x = 0.5 * (b.lo + b.hi);
-    if (!(x > b.lo && x < b.hi)) break;
-    const double p = polynomial_value(c, x);
-    if ((p > 0.0) == falling) {
-      if (kept == 1) f_hi *= anderson_bjorck(p, f_lo);
-      b.lo = x;
-      b.p_lo = f_lo = p;
-      kept = 1;
-    } else {
-      if (kept == -1) f_lo *= anderson_bjorck(p, f_hi);
-      b.hi = x;
-      b.p_hi = f_hi = p;
-      kept = -1;
-    }
-  }
-  return b;
+  const SignBracket n = narrow_bracket([&](double x) { return polynomial_value(c, x); },
+                                       SignBracket{b.lo, b.hi, b.p_lo, b.p_hi}, falling,
+                                       [](double hi) { return time_round_off(hi); });
+  return {n.lo, n.hi, n.f_lo, n.f_hi};
 }
 
 // The Bernstein coefficients b[0..d] of p (c[0..d]) on [0, h]: those of p(h·x) on [0, 1],

@@ -5,7 +5,7 @@
 #include <limits>
 #include <sstream>
 
-#include "core/events/brent_root.h"
+#include "core/events/narrow_bracket.h"
 #include "core/integrators/series.h"
 #include "core/model/dynamics.h"
 #include "core/run/negative_normal.h"
@@ -197,8 +197,9 @@ double Recorder::sign_change(const StepView& step, int leader, double lo, double
   if (!(f_lo > 0.0)) return lo;
   if (!(f_hi <= 0.0)) return hi;
   // To a nanosecond in a second's span: the window is a warning's, read at a few digits, and
-  // Brent's steps toward round-off would take two thirds of the evaluations.
-  return brent_root(f, lo, hi, f_lo, f_hi, 1e-9 * std::max(1.0, std::abs(hi)));
+  // the steps toward round-off would take two thirds of the evaluations.
+  const auto tolerance = [](double t) { return 1e-9 * std::max(1.0, std::abs(t)); };
+  return narrow_bracket(f, {lo, hi, f_lo, f_hi}, true, tolerance).hi;
 }
 
 void Recorder::close_warning(int pellet, double t) {
