@@ -39,7 +39,8 @@ void MotionInterval::reopen(std::vector<Body>& bodies, const std::vector<bool>& 
 void MotionInterval::open(const std::vector<bool>& armed, const std::vector<Neighbours>& neighbours,
                           double t, const Vec& y, const EventTolerances& tol) {
   const PlaceRadii radii = place_radii(tol, y);
-  for (int b = 0; b < static_cast<int>(bodies_.size()); ++b) add_body_watches(b, armed, y, radii);
+  for (int b = 0; b < static_cast<int>(bodies_.size()); ++b)
+    add_body_watches(b, armed, y, radii, tol.accel_round_off);
   dydt_.resize(y.size());
   dynamics_.rhs(t, y, dydt_);
   deflate_reversals_from_rest(t, y, dydt_);
@@ -49,7 +50,7 @@ void MotionInterval::open(const std::vector<bool>& armed, const std::vector<Neig
 }
 
 void MotionInterval::add_body_watches(int b, const std::vector<bool>& armed, const Vec& y,
-                                      const PlaceRadii& radii) {
+                                      const PlaceRadii& radii, double accel_round_off) {
   const Body& body = bodies_[b];
   const int L = body.leader();
   const bool forced = any_forced(model_, body);
@@ -65,7 +66,9 @@ void MotionInterval::add_body_watches(int b, const std::vector<bool>& armed, con
       fi.emplace(model_, body.s, y[phi_index(L)], y[dphi_index(L)]);
   } else if (forced) {
     forced_rest_ = true;
-    watches_.push_back({WatchKind::release, b, L});
+    Watch w{WatchKind::release, b, L};
+    w.target = accel_round_off * (1.0 + std::abs(y[phi_index(L)]));
+    watches_.push_back(w);
   }
   first_integrals_.push_back(fi);
   for (int k = 1; k < static_cast<int>(body.members.size()); ++k) {

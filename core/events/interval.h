@@ -60,7 +60,7 @@ class MotionInterval {
   // the limiters on both sides: passes_reversals) and its first integral, where one applies; a
   // held one's release if a force can pull it; each cut's separation.
   void add_body_watches(int b, const std::vector<bool>& armed, const Vec& y,
-                        const PlaceRadii& radii);
+                        const PlaceRadii& radii, double accel_round_off);
   // The watch of the next limiter on `side` of body b (side·(angle − phi) > from), if any.
   void add_limiter_watch(int b, const std::vector<bool>& armed, const Vec& y, int side,
                          double from);

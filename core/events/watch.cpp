@@ -74,7 +74,7 @@ double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bo
       const double phi = y[phi_index(w.pellet)];
       const double a = body_free_acceleration(model, b, t, phi);
       const double pull = b.mode == Mode::resting ? b.side * a : std::abs(a);
-      return stick_capacity(model, phi) - pull;
+      return stick_capacity(model, phi) + w.target - pull;
     }
     case WatchKind::normal:
       return w.target * normal_per_mass(model, y[phi_index(w.pellet)], y[dphi_index(w.pellet)]);

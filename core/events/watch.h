@@ -29,13 +29,16 @@ enum class WatchKind {
 
 struct Watch {
   WatchKind kind;
-  int body = -1;        // reversal, limiter, release, separation: the body
-  int pellet = -1;      // the pellet whose state is read (a body's leader; gap: the one behind)
-  int other = -1;       // gap: the pellet ahead
-  int limiter = -1;     // limiter: the limiter hit
-  double target = 0.0;  // limiter: angle to reach; gap: the constant winding offset; normal: ±1
-  int side = 0;         // limiter: +1 for an angle above phi, −1 below it
-  int split = 0;        // separation: members [0, split) behind, [split, n) ahead
+  int body = -1;     // reversal, limiter, release, separation: the body
+  int pellet = -1;   // the pellet whose state is read (a body's leader; gap: the one behind)
+  int other = -1;    // gap: the pellet ahead
+  int limiter = -1;  // limiter: the limiter hit
+  // limiter: angle to reach; gap: the constant winding offset; normal: ±1; release: the
+  // round-off the stick test allows the capacity (EventTolerances::accel_round_off·(1 + |φ|)),
+  // so that a body held exactly at its threshold starts positive and is let go as it leaves it.
+  double target = 0.0;
+  int side = 0;   // limiter: +1 for an angle above phi, −1 below it
+  int split = 0;  // separation: members [0, split) behind, [split, n) ahead
   // A watch that starts on its own root (two pellets that just collided touch) is watched
   // deflated: order 1, (g(t) − g(t0)) / (t − t0), which starts at g'(t0) > 0 when they part;
   // order 2, where it also starts flat (a plastic collision leaves them at one speed),

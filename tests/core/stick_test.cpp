@@ -77,6 +77,29 @@ TEST(Stick, AForceThatBarelyBeatsFrictionForAnInstantReleases) {
   }
 }
 
+// A frictionless pellet whose force balances gravity exactly at the start (a random scene's
+// "at rest on the cone's edge", tests/differential): the stick test holds it there, within
+// round-off, and the force's turn lets it go at once. Its release watch starts within the same
+// round-off of the threshold, so it is released then; measured from the bare capacity, 0, the
+// watch started on its root, never armed, and the pellet stayed put until another body's event.
+TEST(Stick, APelletHeldExactlyAtItsThresholdIsLetGoAsTheForceTurns) {
+  Model model;
+  model.R = 0.001;
+  model.pellets = {Pellet{.m = 0.01,
+                          .phi0 = 1.463431595396416e-05,
+                          .dphi0 = 0.0,
+                          .force = {4.77132797241211e-06, 13.425004152725975, 1.2651746232584933}}};
+  SimOptions o;
+  o.t_end = 0.03;
+  o.check = false;
+  const RunResult run = simulate(model, o);
+  const auto releases = testing::events_of(run, EventKind::release);
+  ASSERT_EQ(releases.size(), 1u);
+  EXPECT_LT(releases[0]->t, 1e-9);
+  EXPECT_EQ(run.summary.final[0].state, PelletState::sliding);
+  EXPECT_GT(std::abs(run.summary.final[0].phi - model.pellets[0].phi0), 1e-6);
+}
+
 TEST(Stick, AStaticCoefficientAboveMuHoldsWhereMuAloneWouldNot) {
   Model m = testing::one_pellet(0.05, 0.07, 0.0);  // outside the kinetic cone
   m.mu_s = 0.08;                                   // tan(0.07) ≈ 0.0701 < 0.08

@@ -76,6 +76,11 @@ bool incomplete(SceneRuns& runs, double rtol);
 std::optional<Finding> methods_disagree(SceneRuns& runs, double rtol);
 // (b) `method` at rtol and rtol/10 lists the same events at close times.
 std::optional<Finding> rtol_disagrees(SceneRuns& runs, Method method, double rtol);
+// A frictionless scene's run of `method` at `rtol` that passes its reversals
+// (SolverOptions::frictionless_reversals false, as a sweep's) lists the same events other than
+// reversals, at close times, as the run that lists them. For a scene with no friction (alpha0 =
+// 0, no mu_s).
+std::optional<Finding> passed_reversals_disagree(SceneRuns& runs, Method method, double rtol);
 // (c) The run of `method` at `rtol` keeps the physics.
 std::optional<Finding> physics_fails(SceneRuns& runs, Method method, double rtol);
 
