@@ -85,6 +85,20 @@ double stated(const RunResult& a, const RunResult& b) {
   return 10.0 * (a.stats.event_time_error + b.stats.event_time_error);
 }
 
+// Two runs of the scene at rtol compared over the events both vouch for, where the runs take the
+// trust horizon: the events from the earlier trusted_until on are dropped from both.
+Comparison compare_trusted(const SceneRuns& runs, RunResult& a, RunResult& b, double rtol) {
+  double t_end = runs.scene().t_end;
+  if (runs.trust_horizon()) {
+    t_end = std::min({t_end, a.stats.trusted_until, b.stats.trusted_until});
+    for (RunResult* r : {&a, &b})
+      std::erase_if(r->events, [&](const Event& e) { return e.t >= t_end; });
+  }
+  TimeTolerance tol{rtol, time_scale(runs.scene().model)};
+  if (runs.trust_horizon()) tol.stated = stated(a, b);
+  return compare_runs(a, b, tol, t_end);
+}
+
 }  // namespace
 
 const RunResult& SceneRuns::run(Method method, double rtol) {
@@ -196,15 +210,7 @@ std::optional<Finding> rtol_disagrees(SceneRuns& runs, Method method, double rto
   const Model& model = runs.scene().model;
   RunResult a = runs.run(method, rtol);
   RunResult b = runs.run(method, rtol / 10.0);
-  double t_end = runs.scene().t_end;
-  if (runs.trust_horizon()) {
-    t_end = std::min({t_end, a.stats.trusted_until, b.stats.trusted_until});
-    for (RunResult* r : {&a, &b})
-      std::erase_if(r->events, [&](const Event& e) { return e.t >= t_end; });
-  }
-  TimeTolerance tol{rtol, time_scale(model)};
-  if (runs.trust_horizon()) tol.stated = stated(a, b);
-  const Comparison c = compare_runs(a, b, tol, t_end);
+  const Comparison c = compare_trusted(runs, a, b, rtol);
   if (c.verdict == Verdict::agree) return std::nullopt;
   Finding f =
       mismatch(model, a, b, c, run_name(method, rtol), run_name(method, rtol / 10.0), false);
@@ -227,15 +233,7 @@ std::optional<Finding> passed_reversals_disagree(SceneRuns& runs, Method method,
   // reversals are left out of both.
   for (RunResult* r : {&listed, &passed})
     std::erase_if(r->events, [](const Event& e) { return e.kind == EventKind::reversal; });
-  double t_end = runs.scene().t_end;
-  if (runs.trust_horizon()) {
-    t_end = std::min({t_end, listed.stats.trusted_until, passed.stats.trusted_until});
-    for (RunResult* r : {&listed, &passed})
-      std::erase_if(r->events, [&](const Event& e) { return e.t >= t_end; });
-  }
-  TimeTolerance tol{rtol, time_scale(model)};
-  if (runs.trust_horizon()) tol.stated = stated(listed, passed);
-  const Comparison c = compare_runs(listed, passed, tol, t_end);
+  const Comparison c = compare_trusted(runs, listed, passed, rtol);
   if (c.verdict == Verdict::agree) return std::nullopt;
   const std::string name = run_name(method, rtol);
   Finding f = mismatch(model, listed, passed, c, name, name + " passing reversals", false);
