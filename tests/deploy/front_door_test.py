@@ -7,6 +7,7 @@ nginx and two `vibro serve` replicas, and through nginx
 - two pipelined requests are both answered; two Content-Length headers are refused with 400;
 - a replica killed with SIGKILL under load loses no request, and is restarted;
 - a soak (64 connections, mixed requests, SOAK seconds) gives no 5xx and flat memory;
+- with no replica listening, the API answers 503 with Retry-After, as a busy replica does;
 - SIGTERM stops nginx and every replica, leaving no process behind.
 
 Usage: front_door_test.py path/to/vibro [--soak SECONDS]   (stdlib only; needs nginx)
@@ -62,7 +63,7 @@ def rss_mb(pid):
 
 
 class FrontDoor:
-    def __init__(self, vibro, replicas=2):
+    def __init__(self, vibro, replicas=2, replicas_answer=True):
         self.port = free_port_block(replicas)
         self.replicas = replicas
         self.run = tempfile.mkdtemp(prefix="vibro-front-door-")
@@ -77,7 +78,10 @@ class FrontDoor:
         deadline = time.time() + 60
         while time.time() < deadline:
             try:
-                if self.get("/api/health")[0] == 200 and all(
+                if not replicas_answer:
+                    if self.get("/")[0] == 200:  # nginx is up
+                        return
+                elif self.get("/api/health")[0] == 200 and all(
                         self.replica_up(k) for k in range(1, replicas + 1)):
                     return
             except OSError:
@@ -377,6 +381,30 @@ def test_soak(door, seconds):
           f"{', '.join(f'{w:.0f}→{e:.0f} MB' for w, e in zip(warm, end))}")
 
 
+def test_no_replica(vibro):
+    """Replicas that never listen (a stand-in for `vibro` that only sleeps): nginx finds no
+    replica to answer, and says so as a busy replica does, 503 with Retry-After and the API's
+    JSON, instead of its 502."""
+    stand_in = os.path.join(tempfile.mkdtemp(prefix="vibro-stand-in-"), "vibro")
+    with open(stand_in, "w") as f:
+        f.write("#!/bin/sh\nexec sleep 600\n")
+    os.chmod(stand_in, 0o755)
+    door = FrontDoor(stand_in, replicas_answer=False)
+    try:
+        for method, path, body in [("GET", "/api/health", None),
+                                   ("POST", "/api/simulate", json.dumps({"preset": "paper"}))]:
+            status, got, r = (door.get(path) if method == "GET" else door.post(path, body))
+            try:
+                fields = json.loads(got)
+            except ValueError:
+                fields = {}
+            check(f"no replica: {method} {path} is 503 with Retry-After, naming the server",
+                  status == 503 and r.getheader("Retry-After") == "1"
+                  and fields.get("field") == "server", f"{status} {r.getheaders()} {got[:120]!r}")
+    finally:
+        door.stop()
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("vibro")
@@ -392,6 +420,7 @@ def main():
         test_slowloris(door)
         test_replica_killed(door)
         test_soak(door, args.soak)
+        test_no_replica(os.path.abspath(args.vibro))
     finally:
         pids = []
         for k in range(1, door.replicas + 1):
