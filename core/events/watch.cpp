@@ -113,13 +113,13 @@ double acceleration_of(const Model& model, const SlidingLaw& law, const Body& b,
                           y[dphi_index(b.leader())], b.s);
 }
 
-const Body& body_of(const std::vector<Body>& bodies, int i) {
+}  // namespace
+
+const Body& body_of(const std::vector<Body>& bodies, int pellet) {
   for (const Body& b : bodies)
-    if (std::find(b.members.begin(), b.members.end(), i) != b.members.end()) return b;
+    if (std::find(b.members.begin(), b.members.end(), pellet) != b.members.end()) return b;
   return bodies.front();  // every pellet is in a body
 }
-
-}  // namespace
 
 Closing closing(const Watch& w, const Model& model, const SlidingLaw& law,
                 const std::vector<Body>& bodies, double t, const Vec& y, bool with_curvature) {

@@ -79,6 +79,8 @@ struct Closing {
 Closing closing(const Watch& w, const Model& model, const SlidingLaw& law,
                 const std::vector<Body>& bodies, double t, const Vec& y,
                 bool with_curvature = false);
+// The body pellet `pellet` belongs to (every pellet is in one).
+const Body& body_of(const std::vector<Body>& bodies, int pellet);
 // The watch's own value, not deflated.
 double raw_value(const Watch& w, const Model& model, const std::vector<Body>& bodies, double t,
                  const Vec& y);
