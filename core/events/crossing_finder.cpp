@@ -227,6 +227,23 @@ void CrossingFinder::keep_near_misses(double earliest) {
     if (g.t < earliest) keep(g);
 }
 
+namespace {
+
+// Whether watch w's minimum lies at a turn of `body`: the way to a limiter it watches, or the
+// gap to a held pellet it moves toward.
+bool turns_at(const Watch& w, int body, const std::vector<Body>& bodies) {
+  if (w.kind == WatchKind::limiter) return w.body == body;
+  if (w.kind != WatchKind::gap) return false;
+  // The gap between the turning body, moving toward it, and a held one, which does not move.
+  const Body& turning = bodies[body];
+  const bool behind_turns = &body_of(bodies, w.pellet) == &turning;
+  const bool ahead_turns = &body_of(bodies, w.other) == &turning;
+  if (behind_turns == ahead_turns || turning.s != (behind_turns ? 1 : -1)) return false;
+  return body_of(bodies, behind_turns ? w.other : w.pellet).mode != Mode::sliding;
+}
+
+}  // namespace
+
 void CrossingFinder::keep_grazes(const std::vector<Watch>& watches, const Model& model,
                                  const std::vector<Body>& bodies, const StepView& step,
                                  const std::vector<Crossing>& found, double earliest) {
@@ -256,17 +273,6 @@ void CrossingFinder::keep_grazes(const std::vector<Watch>& watches, const Model&
                 near_miss(w, earliest, raw_value(w, model, bodies, earliest, y), curvature, 0.0, y))
           keep(*graze);
   }
-}
-
-bool CrossingFinder::turns_at(const Watch& w, int body, const std::vector<Body>& bodies) {
-  if (w.kind == WatchKind::limiter) return w.body == body;
-  if (w.kind != WatchKind::gap) return false;
-  // The gap between the turning body, moving toward it, and a held one, which does not move.
-  const Body& turning = bodies[body];
-  const bool behind_turns = &body_of(bodies, w.pellet) == &turning;
-  const bool ahead_turns = &body_of(bodies, w.other) == &turning;
-  if (behind_turns == ahead_turns || turning.s != (behind_turns ? 1 : -1)) return false;
-  return body_of(bodies, behind_turns ? w.other : w.pellet).mode != Mode::sliding;
 }
 
 namespace {

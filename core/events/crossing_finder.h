@@ -178,9 +178,6 @@ class CrossingFinder {
   void keep_grazes(const std::vector<Watch>& watches, const Model& model,
                    const std::vector<Body>& bodies, const StepView& step,
                    const std::vector<Crossing>& found, double earliest);
-  // Whether watch w's minimum lies at a turn of `body`: the way to a limiter it watches, or the
-  // gap to a held pellet it moves toward (keep_grazes).
-  static bool turns_at(const Watch& w, int body, const std::vector<Body>& bodies);
   // The step's near misses before `earliest`.
   void keep_near_misses(double earliest);
   void keep(const Graze& g);
