@@ -34,11 +34,11 @@ AutoExplicit auto_explicit_for(double rtol, AutoExplicit choice = AutoExplicit::
 // and DOPRI5 on every non-stiff preset. Measured by the instructions of whole runs
 // (deterministic, unlike times on the shared machine; `bench/auto_cost.sh`, atol = rtol/100, the
 // check off) on the eleven non-stiff presets, Taylor against the cheaper of DOP853 and DOPRI5:
-// at rtol 1e-7 0.35 (rest-in-cone) to 0.67 (loop), at 1e-8 0.34 to 0.59 (the same), at 1e-10
-// 0.30 (impact-oscillator) to 0.52 (mass-ratio), at 1e-12 0.23 to 0.47 (the same). (Grazing at
-// 1e-7 and 1e-9 is left out: DOP853 lists 2 of its 7 events there.) Above it `auto` weighs DOPRI5
-// against DOP853 over stretches of the run, where Taylor measured 0.38 (rest-in-cone) to 0.78
-// (loop) of the cheaper at 1e-6 and up to 1.29 (loop) at 1e-3; the same kind of weighing chose
+// at rtol 1e-7 0.35 (impact-oscillator) to 0.58 (mass-ratio), at 1e-8 0.33 to 0.58 (the same),
+// at 1e-10 0.27 to 0.56 (the same), at 1e-12 0.21 to 0.51 (the same). (Grazing at 1e-7 and 1e-9
+// is left out: DOP853 lists 2 of its 7 events there.) Above it `auto` weighs DOPRI5 against
+// DOP853 over stretches of the run, where Taylor measured 0.30 (rest-in-cone) to 0.59 (loop) of
+// the cheaper at 1e-6 and up to 0.75 (loop) at 1e-3; the same kind of weighing chose
 // DOP853 on the paper scene at 1e-9, where Taylor is the cheaper over the whole run (its cost per
 // unit of time over its first, event-dense 0.53 s was 1.6 times DOP853's over the next 0.63 s).
 inline constexpr double kAutoTaylorRtol = 5e-7;

@@ -5,23 +5,30 @@
 #include <cmath>
 #include <cstdint>
 #include <limits>
-#include <numbers>
 
 #include "core/integrators/series.h"
 #include "core/integrators/step_fit.h"
 
 namespace vibro::integrators {
 
+int Taylor::jorba_zou_order(double rtol) {
+  return static_cast<int>(std::ceil(-0.5 * std::log(rtol) + 1.0));
+}
+
 int Taylor::order_for(double rtol) {
-  const int p = static_cast<int>(std::ceil(-0.5 * std::log(rtol) + 1.0));
-  return std::clamp(p, 2, kMaxOrder);
+  return std::clamp(jorba_zou_order(rtol) + kOrderAboveJorbaZou, 2, kMaxOrder);
+}
+
+double Taylor::safety_for(double rtol, int order) {
+  const int p_jz = std::max(jorba_zou_order(rtol), 2);
+  return std::exp(-0.7 / (order - 1)) * std::exp(-2.0 * p_jz / order);
 }
 
 Taylor::Taylor(const StepperOptions& options)
     : options_(options),
       tol_{options.atol, options.rtol, {}},
       order_(order_for(options.rtol)),
-      safety_(std::exp(-0.7 / (order_ - 1)) / (std::numbers::e * std::numbers::e)),
+      safety_(safety_for(options.rtol, order_)),
       exponents_{1.0 / (order_ - 1), 1.0 / order_} {}
 
 void Taylor::start(const OdeSystem& sys, double t0, const Vec& y0) {

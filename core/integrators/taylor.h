@@ -1,9 +1,9 @@
 // A Taylor-series method: each step is the solution's own series at the step's start, of an
 // order set by the tolerance, computed by the system's jets (OdeSystem::taylor_coefficients).
-// Order and step size follow Jorba & Zou (Exp. Math. 14(1), 2005), as heyoka does: no error
-// estimate and no rejected steps. The step is its polynomials (StepView::polynomials), so the
-// dense output is the polynomial itself, as accurate as the step's end. Its stats count the
-// jets as one right-hand-side evaluation per step.
+// Order and step size follow Jorba & Zou (Exp. Math. 14(1), 2005), as heyoka does, with the
+// order raised by kOrderAboveJorbaZou: no error estimate and no rejected steps. The step is its
+// polynomials (StepView::polynomials), so the dense output is the polynomial itself, as accurate as
+// the step's end. Its stats count the jets as one right-hand-side evaluation per step.
 #pragma once
 
 #include <string_view>
@@ -17,14 +17,31 @@ namespace vibro::integrators {
 class Taylor final : public Stepper {
  public:
   // Above this order the series is not served to the event search (kMaxPolynomialDegree); the
-  // tolerances allowed (rtol >= 1e-14) ask for 18 at most.
+  // tolerances allowed (rtol >= 1e-14) ask for 21 at most.
   static constexpr int kMaxOrder = 30;
 
   explicit Taylor(const StepperOptions& options);
 
-  // p = ⌈−½ ln ε + 1⌉ for the tolerance ε: the series' terms beyond p fall below ε·e^−2 of the
-  // state over a step of ρ/e², ρ the radius its last coefficients show.
+  // Jorba and Zou's order p_JZ = ⌈−½ ln ε + 1⌉ for the tolerance ε, the cheapest where a step
+  // costs as its jets, ∝ p²: the series' terms beyond p_JZ fall below ε·e^−2 of the state over
+  // a step of ρ/e², ρ the radius its last coefficients show.
+  static int jorba_zou_order(double rtol);
+
+  // Here a step costs more than its jets (the event search, the step's size, the driver: about
+  // four fifths of a step at p_JZ), so fewer, longer steps of a higher order cost less. Measured
+  // by the instructions of whole runs (bench/auto_cost.sh's Taylor rows, the eleven non-stiff
+  // presets at rtol 1e-6 to 1e-14; docs/PERFORMANCE.md "The order"): +3 cuts their geometric
+  // mean by 5 % (1e-14) to 17 % (1e-6) and the steps by a third; +5 cuts no more and costs the
+  // worst case more. Only runs whose steps end at events anyway pay (mass-ratio +4 to 6 %,
+  // chatter +2 to 3 %).
+  static constexpr int kOrderAboveJorbaZou = 3;
+
+  // The order: p_JZ + kOrderAboveJorbaZou.
   static int order_for(double rtol);
+
+  // The step over the radius ρ for the order p: exp(−0.7/(p − 1))·e^(−2·p_JZ/p), the step at
+  // which the last term (h/ρ)^p is Jorba and Zou's e^(−2·p_JZ), with their safety factor.
+  static double safety_for(double rtol, int order);
 
   std::string_view name() const override { return "taylor"; }
   // A system without jets fails its first step (StepStatus::solver_failure).
@@ -46,15 +63,15 @@ class Taylor final : public Stepper {
   int order() const { return order_; }
 
  private:
-  // Jorba and Zou's step: ρ_m/e²·min(ρ_{p−1}, ρ_p), ρ_k = min_i (w_i/|c_i[k]|)^(1/k) with w_i the
-  // component's tolerance scale over rtol (relative to its size, atol/rtol at least), and the
-  // safety factor ρ_m = exp(−0.7/(p − 1)). Infinite where the series stops (a body at rest).
+  // Jorba and Zou's step: safety_for·min(ρ_{p−1}, ρ_p), ρ_k = min_i (w_i/|c_i[k]|)^(1/k) with w_i
+  // the component's tolerance scale over rtol (relative to its size, atol/rtol at least).
+  // Infinite where the series stops (a body at rest).
   double step_size();
 
   StepperOptions options_;
   Tolerance tol_;
   int order_;
-  double safety_;        // ρ_m/e²
+  double safety_;        // safety_for(rtol, order_)
   double exponents_[2];  // 1/(p − 1), 1/p: the radii's powers, once per order
   const OdeSystem* sys_ = nullptr;
   int n_ = 0;

@@ -43,15 +43,33 @@ Vec solve(Stepper& stepper, const OdeSystem& sys, const Vec& y0, double t_end, l
 }
 
 TEST(Taylor, TheOrderFollowsTheTolerance) {
-  EXPECT_EQ(integrators::Taylor::order_for(1e-12), 15);  // ⌈13.8 + 1⌉
-  EXPECT_EQ(integrators::Taylor::order_for(1e-9), 12);
-  EXPECT_EQ(integrators::Taylor::order_for(1e-14), 18);
-  EXPECT_EQ(integrators::Taylor::order_for(0.1), 3);
+  EXPECT_EQ(integrators::Taylor::jorba_zou_order(1e-12), 15);  // ⌈13.8 + 1⌉
+  EXPECT_EQ(integrators::Taylor::jorba_zou_order(1e-9), 12);
+  EXPECT_EQ(integrators::Taylor::jorba_zou_order(1e-14), 18);
+  EXPECT_EQ(integrators::Taylor::jorba_zou_order(0.1), 3);
+  EXPECT_EQ(integrators::Taylor::order_for(1e-12), 18);  // three above
+  EXPECT_EQ(integrators::Taylor::order_for(1e-14), 21);
+  EXPECT_EQ(integrators::Taylor::order_for(0.1), 6);
+}
+
+// At Jorba and Zou's order the step is theirs, ρ_m/e²; above it, the step at which the last term
+// (h/ρ)^p is as small as theirs: ((h/ρ)^p = e^(−2·p_JZ) but for the safety factor ρ_m.
+TEST(Taylor, ItsStepKeepsJorbaAndZousLastTerm) {
+  const double e2 = std::exp(-2.0);
+  for (double rtol : {1e-6, 1e-9, 1e-12, 1e-14}) {
+    const int p_jz = integrators::Taylor::jorba_zou_order(rtol);
+    EXPECT_DOUBLE_EQ(integrators::Taylor::safety_for(rtol, p_jz), std::exp(-0.7 / (p_jz - 1)) * e2);
+    const int p = integrators::Taylor::order_for(rtol);
+    const double x = integrators::Taylor::safety_for(rtol, p) / std::exp(-0.7 / (p - 1));
+    EXPECT_NEAR(std::pow(x, p), std::exp(-2.0 * p_jz), 1e-12 * std::exp(-2.0 * p_jz));
+    EXPECT_GT(x, e2);  // a longer step
+  }
 }
 
 // The state's error after 0.3 s is within ten times the tolerance at every tolerance, and falls
-// as it tightens. (The friction's direction s is fixed, so the equations stay smooth where the
-// speed changes sign: the test is of the integrator alone.)
+// as it tightens down to round-off (1e-14, some twenty units in the last place of the state). (The
+// friction's direction s is fixed, so the equations stay smooth where the speed changes sign: the
+// test is of the integrator alone.)
 TEST(Taylor, ItsErrorFollowsTheTolerance) {
   ForcedPendulum p;
   auto reference = make_stepper(Method::dop853, StepperOptions{1e-14, 1e-16});
@@ -63,7 +81,7 @@ TEST(Taylor, ItsErrorFollowsTheTolerance) {
     const double error = (y - exact).head<2>().cwiseAbs().maxCoeff();
     EXPECT_LT(error, 10.0 * rtol) << "rtol " << rtol;
     EXPECT_LT(error, previous) << "rtol " << rtol;
-    previous = std::max(error, 1e-15);
+    previous = std::max(error, 1e-14);
   }
 }
 

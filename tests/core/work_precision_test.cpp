@@ -28,9 +28,10 @@ void expect_error_falls(const Model& model, const SimOptions& base, ErrorReferen
     ASSERT_EQ(points.size(), 3u);
     EXPECT_LT(points[2]->error, points[0]->error / 100.0) << method_name(method);
     EXPECT_LT(points[2]->error, 1e-6) << method_name(method);
-    // Taylor's order grows as the tolerance shrinks (13 at 1e-10 against 6 at 1e-4), and its
-    // steps may then be fewer (frictionless-elastic: 100 against 128).
-    if (method != Method::taylor) {
+    // Taylor's order grows as the tolerance shrinks (16 at 1e-10 against 9 at 1e-4), so its
+    // steps barely grow and may be fewer; `auto` runs DOPRI5 at 1e-4 and Taylor at 1e-10
+    // (kAutoTaylorRtol; frictionless-elastic: 78 steps against 72).
+    if (method != Method::taylor && method != Method::automatic) {
       EXPECT_GT(points[2]->steps, points[0]->steps) << method_name(method);
     }
   }
