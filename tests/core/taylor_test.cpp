@@ -53,7 +53,7 @@ TEST(Taylor, TheOrderFollowsTheTolerance) {
 }
 
 // At Jorba and Zou's order the step is theirs, ρ_m/e²; above it, the step at which the last term
-// (h/ρ)^p is as small as theirs: ((h/ρ)^p = e^(−2·p_JZ) but for the safety factor ρ_m.
+// (h/ρ)^p is as small as theirs, e^(−2·p_JZ), but for the safety factor ρ_m.
 TEST(Taylor, ItsStepKeepsJorbaAndZousLastTerm) {
   const double e2 = std::exp(-2.0);
   for (double rtol : {1e-6, 1e-9, 1e-12, 1e-14}) {
