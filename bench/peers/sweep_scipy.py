@@ -81,34 +81,35 @@ def section(scene, Omega, transient, record, rtol):
     return points
 
 
+def vibro_sweep(vibro, scene, values, transient, record, rtol, method):
+    """One vibro sweep over evenly spaced values (values[0] … values[-1]), one thread, the check
+    off: its output."""
+    s = dict(scene)
+    s["solver"] = {"method": method, "rtol": rtol, "atol": rtol * 1e-3, "check": False}
+    s["sweep"] = dict(scene["sweep"], **{"from": values[0], "to": values[-1], "count": len(values),
+                                         "transient": transient, "record": record,
+                                         "continuation": "none"})
+    return json.loads(subprocess.run([vibro, "sweep", "-", "--threads", "1"], input=json.dumps(s),
+                                     capture_output=True, text=True, check=True).stdout)
+
+
 def vibro_sections(vibro, scene, omegas, transient, record, rtol, method):
-    """vibro on the same values: one sweep per value on one thread, the check off.
-    Returns (seconds per run, {Omega: [(phi, dphi)]})."""
+    """vibro on the same values: one sweep per value. Returns (seconds per run,
+    {Omega: [(phi, dphi)]})."""
     seconds, points = 0.0, {}
     for Om in omegas:
-        s = dict(scene)
-        s["solver"] = {"method": method, "rtol": rtol, "atol": rtol * 1e-3, "check": False}
-        s["sweep"] = dict(scene["sweep"], **{"from": Om, "to": Om, "count": 1, "transient": transient,
-                                             "record": record, "continuation": "none"})
-        out = json.loads(subprocess.run([vibro, "sweep", "-", "--threads", "1"], input=json.dumps(s),
-                                        capture_output=True, text=True, check=True).stdout)
+        out = vibro_sweep(vibro, scene, [Om], transient, record, rtol, method)
         seconds += out["stats"]["wall_ms"] / 1e3
         points[Om] = list(zip(out["points"]["phi"], out["points"]["dphi"]))
     return seconds / len(omegas), points
 
 
 def vibro_one_sweep(vibro, scene, omegas, transient, record, rtol, method):
-    """vibro on the same values as one sweep (they are evenly spaced), one thread, the check off,
-    as vibro is used: the sweep's fixed cost (some 0.5 ms: a one-value sweep takes 0.9 ms, a
-    run inside a long sweep 0.4) is shared by its runs. Returns (seconds per run,
+    """vibro on the same values as one sweep (they are evenly spaced), as vibro is used: a fresh
+    process's first run is cold (a one-value sweep takes 0.9 ms, a run inside a long sweep 0.4,
+    for the same instructions), and here only one run in ten pays that. Returns (seconds per run,
     {Omega: [(phi, dphi)]})."""
-    s = dict(scene)
-    s["solver"] = {"method": method, "rtol": rtol, "atol": rtol * 1e-3, "check": False}
-    s["sweep"] = dict(scene["sweep"], **{"from": omegas[0], "to": omegas[-1], "count": len(omegas),
-                                         "transient": transient, "record": record,
-                                         "continuation": "none"})
-    out = json.loads(subprocess.run([vibro, "sweep", "-", "--threads", "1"], input=json.dumps(s),
-                                    capture_output=True, text=True, check=True).stdout)
+    out = vibro_sweep(vibro, scene, omegas, transient, record, rtol, method)
     runs = sorted(set(out["points"]["run"]))
     points = {Om: [] for Om in omegas}
     for run, phi, dphi in zip(out["points"]["run"], out["points"]["phi"], out["points"]["dphi"]):
